@@ -1,0 +1,50 @@
+// Camera and depth conventions shared by every pass (mirrors `ViewUniforms` in uniforms.rs).
+// View space is right-handed with the camera looking down -Z; pixel y grows downwards, NDC y up.
+
+struct ViewUniforms {
+    // Working resolution in pixels, and its reciprocal.
+    size: vec2<f32>,
+    inv_size: vec2<f32>,
+    // linear = (c.x * ndc + c.y) / (c.z * ndc + c.w): one form for every projection.
+    linearize: vec4<f32>,
+    // NDC xy to view xy; perspective results are then scaled by linear depth.
+    ndc_to_view: vec2<f32>,
+    // Pixels per world unit at linear depth 1 (perspective) or anywhere (orthographic).
+    pixels_per_unit: f32,
+    // 1 for orthographic, 0 for perspective: used with mix() so one code path serves both.
+    orthographic: f32,
+    // Depth-buffer value of pixels nothing was drawn to.
+    far_ndc_depth: f32,
+    frame_index: u32,
+}
+
+@group(0) @binding(0) var<uniform> view: ViewUniforms;
+
+// Linear depth textures store this where there is no surface (sky, cleared depth).
+const NO_SURFACE: f32 = 0.0;
+
+// Largest finite f32: anything beyond came from an infinite or overflowing depth.
+const MAX_DEPTH: f32 = 3.4e38;
+
+fn linearize_depth(ndc_depth: f32) -> f32 {
+    let c = view.linearize;
+    return (c.x * ndc_depth + c.y) / (c.z * ndc_depth + c.w);
+}
+
+// View-space position of the point at `pixel` (in pixels, centres at +0.5) and linear depth.
+fn view_position(pixel: vec2<f32>, linear_depth: f32) -> vec3<f32> {
+    let uv = pixel * view.inv_size;
+    let ndc = vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0);
+    let scale = mix(linear_depth, 1.0, view.orthographic);
+    return vec3<f32>(ndc * view.ndc_to_view * scale, -linear_depth);
+}
+
+// Unit vector from a view-space point towards the eye.
+fn view_direction(position: vec3<f32>) -> vec3<f32> {
+    return normalize(mix(-position, vec3<f32>(0.0, 0.0, 1.0), view.orthographic));
+}
+
+// Screen-space length in pixels of `world_length` seen at `linear_depth`.
+fn pixels_at_depth(world_length: f32, linear_depth: f32) -> f32 {
+    return world_length * view.pixels_per_unit / mix(linear_depth, 1.0, view.orthographic);
+}

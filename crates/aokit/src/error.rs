@@ -1,0 +1,27 @@
+//! The library's error type.
+
+use crate::inputs::InputError;
+use crate::projection::ProjectionError;
+use crate::settings::SettingsError;
+
+/// Everything [`AoPipeline`](crate::AoPipeline) can refuse.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum AoError {
+    /// A setting is out of range.
+    #[error(transparent)]
+    Settings(#[from] SettingsError),
+    /// The projection is unusable.
+    #[error(transparent)]
+    Projection(#[from] ProjectionError),
+    /// A texture handed in is unusable.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// The resolution exceeds the device's texture limit.
+    #[error("resolution {}x{} exceeds this device's texture limit of {max}", size[0], size[1])]
+    TooLarge {
+        /// The resolution asked for.
+        size: [u32; 2],
+        /// The device's `max_texture_dimension_2d`.
+        max: u32,
+    },
+}

@@ -1,0 +1,284 @@
+//! A headless wgpu device for tools and tests, and texture read-back.
+//!
+//! Engines bring their own device; this module is for the CLI, the scene renderer and tests,
+//! which need one without a window.
+
+use std::fmt;
+
+/// How an adapter was found, for the one-line notice tools print.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AdapterKind {
+    /// A GPU (discrete, integrated or virtual).
+    Hardware,
+    /// A CPU rasteriser such as lavapipe or llvmpipe.
+    Software,
+}
+
+/// Why no device could be created.
+#[derive(Debug, thiserror::Error)]
+pub enum GpuError {
+    /// No adapter exists on any enabled backend.
+    #[error(
+        "no GPU adapter found (backends: {backends}). Install a Vulkan driver, e.g. \
+         `apt-get install mesa-vulkan-drivers` for the lavapipe software rasteriser, \
+         or set WGPU_BACKEND to a backend this machine has"
+    )]
+    NoAdapter {
+        /// The backends that were searched.
+        backends: String,
+    },
+    /// `WGPU_ADAPTER_NAME` matched none of the adapters.
+    #[error("WGPU_ADAPTER_NAME=`{wanted}` matches no adapter; found: {found}")]
+    NoAdapterNamed {
+        /// The requested name.
+        wanted: String,
+        /// Names of the adapters that exist.
+        found: String,
+    },
+    /// The adapter refused to open a device.
+    #[error("could not open a device on adapter `{adapter}`: {source}")]
+    RequestDevice {
+        /// The adapter's name.
+        adapter: String,
+        /// wgpu's reason.
+        source: wgpu::RequestDeviceError,
+    },
+    /// A texture read-back failed.
+    #[error("reading a texture back from the GPU failed: {0}")]
+    Readback(String),
+}
+
+/// A device and queue with the adapter they came from.
+pub struct GpuContext {
+    /// The logical device.
+    pub device: wgpu::Device,
+    /// Its queue.
+    pub queue: wgpu::Queue,
+    /// Adapter name, backend, driver.
+    pub adapter_info: wgpu::AdapterInfo,
+}
+
+impl fmt::Debug for GpuContext {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("GpuContext")
+            .field("adapter", &self.adapter_info.name)
+            .field("backend", &self.adapter_info.backend)
+            .finish()
+    }
+}
+
+impl GpuContext {
+    /// Opens a device on the best adapter: a hardware GPU when there is one, otherwise a
+    /// software rasteriser. `WGPU_BACKEND` (e.g. `vulkan`, `gl`) limits the backends searched
+    /// and `WGPU_ADAPTER_NAME` picks an adapter by a case-insensitive part of its name.
+    ///
+    /// ```no_run
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// println!("running on {}", gpu.describe());
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
+    pub fn headless() -> Result<Self, GpuError> {
+        pollster::block_on(Self::headless_async())
+    }
+
+    /// The async form of [`GpuContext::headless`].
+    pub async fn headless_async() -> Result<Self, GpuError> {
+        let descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+        let backends = descriptor.backends;
+        let instance = wgpu::Instance::new(descriptor);
+        let adapters = instance.enumerate_adapters(backends).await;
+        let adapter = choose_adapter(adapters, std::env::var("WGPU_ADAPTER_NAME").ok()).map_err(
+            |e| match e {
+                Choice::None => GpuError::NoAdapter {
+                    backends: format!("{backends:?}"),
+                },
+                Choice::NoneNamed { wanted, found } => GpuError::NoAdapterNamed { wanted, found },
+            },
+        )?;
+        let adapter_info = adapter.get_info();
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("aokit"),
+                required_features: wgpu::Features::empty(),
+                required_limits: adapter.limits(),
+                ..Default::default()
+            })
+            .await
+            .map_err(|source| GpuError::RequestDevice {
+                adapter: adapter_info.name.clone(),
+                source,
+            })?;
+        Ok(Self {
+            device,
+            queue,
+            adapter_info,
+        })
+    }
+
+    /// Hardware or software.
+    pub fn adapter_kind(&self) -> AdapterKind {
+        adapter_kind(&self.adapter_info)
+    }
+
+    /// `name (backend, driver)`, for logs and reports.
+    pub fn describe(&self) -> String {
+        let info = &self.adapter_info;
+        let driver = [info.driver.as_str(), info.driver_info.as_str()]
+            .into_iter()
+            .filter(|s| !s.is_empty())
+            .collect::<Vec<_>>()
+            .join(" ");
+        format!("{} ({:?}, {})", info.name, info.backend, driver)
+    }
+}
+
+fn adapter_kind(info: &wgpu::AdapterInfo) -> AdapterKind {
+    if info.device_type == wgpu::DeviceType::Cpu {
+        AdapterKind::Software
+    } else {
+        AdapterKind::Hardware
+    }
+}
+
+enum Choice {
+    None,
+    NoneNamed { wanted: String, found: String },
+}
+
+/// Ranks adapters so that real GPUs win and software rasterisers are the last resort.
+fn rank(info: &wgpu::AdapterInfo) -> u32 {
+    match info.device_type {
+        wgpu::DeviceType::DiscreteGpu => 0,
+        wgpu::DeviceType::IntegratedGpu => 1,
+        wgpu::DeviceType::VirtualGpu => 2,
+        wgpu::DeviceType::Other => 3,
+        wgpu::DeviceType::Cpu => 4,
+    }
+}
+
+fn choose_adapter(
+    adapters: Vec<wgpu::Adapter>,
+    wanted_name: Option<String>,
+) -> Result<wgpu::Adapter, Choice> {
+    if let Some(wanted) = wanted_name.filter(|w| !w.is_empty()) {
+        let needle = wanted.to_lowercase();
+        let found = adapters
+            .iter()
+            .map(|a| a.get_info().name)
+            .collect::<Vec<_>>()
+            .join(", ");
+        return adapters
+            .into_iter()
+            .find(|a| a.get_info().name.to_lowercase().contains(&needle))
+            .ok_or(Choice::NoneNamed { wanted, found });
+    }
+    adapters
+        .into_iter()
+        // Vulkan before GL on the same device: compute and storage textures are first-class there.
+        .min_by_key(|a| {
+            let info = a.get_info();
+            (rank(&info), info.backend != wgpu::Backend::Vulkan)
+        })
+        .ok_or(Choice::None)
+}
+
+/// Bytes per texel of the formats aokit reads back.
+fn texel_size(format: wgpu::TextureFormat) -> Result<u32, GpuError> {
+    format
+        .block_copy_size(Some(wgpu::TextureAspect::All))
+        .or_else(|| format.block_copy_size(Some(wgpu::TextureAspect::DepthOnly)))
+        .ok_or_else(|| {
+            GpuError::Readback(format!("format {format:?} cannot be copied to a buffer"))
+        })
+}
+
+/// Copies mip level 0 of a 2D texture to the CPU, tightly packed, row by row.
+///
+/// Blocks until the GPU has finished. Depth textures return their depth aspect.
+pub fn read_texture(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+) -> Result<Vec<u8>, GpuError> {
+    let texel = texel_size(texture.format())?;
+    let (width, height) = (texture.width(), texture.height());
+    let row = width * texel;
+    let padded_row =
+        row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("aokit readback"),
+        size: u64::from(padded_row) * u64::from(height),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let aspect = if texture.format().is_depth_stencil_format() {
+        wgpu::TextureAspect::DepthOnly
+    } else {
+        wgpu::TextureAspect::All
+    };
+    let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+        label: Some("aokit readback"),
+    });
+    encoder.copy_texture_to_buffer(
+        wgpu::TexelCopyTextureInfo {
+            texture,
+            mip_level: 0,
+            origin: wgpu::Origin3d::ZERO,
+            aspect,
+        },
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(padded_row),
+                rows_per_image: Some(height),
+            },
+        },
+        wgpu::Extent3d {
+            width,
+            height,
+            depth_or_array_layers: 1,
+        },
+    );
+    queue.submit([encoder.finish()]);
+    let slice = buffer.slice(..);
+    let (sender, receiver) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |result| {
+        let _ = sender.send(result);
+    });
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    receiver
+        .recv()
+        .map_err(|e| GpuError::Readback(e.to_string()))?
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    let mapped = slice
+        .get_mapped_range()
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    let mut out = Vec::with_capacity((row * height) as usize);
+    for chunk in mapped.chunks(padded_row as usize) {
+        out.extend_from_slice(&chunk[..row as usize]);
+    }
+    drop(mapped);
+    buffer.unmap();
+    Ok(out)
+}
+
+/// Reads back a single-channel `f32` texture (`R32Float` or `Depth32Float`).
+pub fn read_texture_f32(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+) -> Result<Vec<f32>, GpuError> {
+    match texture.format() {
+        wgpu::TextureFormat::R32Float | wgpu::TextureFormat::Depth32Float => {}
+        other => {
+            return Err(GpuError::Readback(format!(
+                "expected an R32Float or Depth32Float texture, got {other:?}"
+            )));
+        }
+    }
+    let bytes = read_texture(device, queue, texture)?;
+    Ok(bytemuck::pod_collect_to_vec(&bytes))
+}

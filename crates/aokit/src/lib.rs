@@ -1,0 +1,29 @@
+//! # aokit
+//!
+//! Screen-space ambient occlusion for wgpu renderers, written as WGSL compute passes.
+//!
+//! Hand [`AoPipeline::encode`] your depth buffer, your normals and the camera [`Projection`] each
+//! frame; it records its passes into your command encoder and returns the AO texture
+//! (1 = unoccluded) for your lighting pass to sample.
+//!
+//! Conventions: view space is right-handed with the camera looking down -Z; depth is wgpu NDC
+//! depth in `[0, 1]`, standard or reverse-Z, finite or infinite far plane; the radius is in world
+//! units. See `docs/` in the repository for the method notes.
+
+pub mod error;
+pub mod gpu;
+pub mod inputs;
+pub mod normals;
+pub mod passes;
+pub mod pipeline;
+pub mod projection;
+pub mod settings;
+pub mod shader;
+mod uniforms;
+
+pub use error::AoError;
+pub use gpu::{AdapterKind, GpuContext, GpuError};
+pub use inputs::{AoInputs, InputError};
+pub use pipeline::{AoOutputs, AoPipeline};
+pub use projection::{Projection, ProjectionError, ProjectionKind};
+pub use settings::{AoSettings, GtaoSettings, Method, Preset, SettingsError};

@@ -1,0 +1,74 @@
+//! The GTAO kernel: linear depth and normals in, AO out.
+
+use super::{ComputeKernel, bind};
+use crate::settings::AoSettings;
+use crate::shader;
+use crate::uniforms::GtaoUniforms;
+
+/// Format of the AO the kernels write: 1 = unoccluded.
+pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+
+/// Ground-truth based AO with its own settings buffer.
+pub struct GtaoPass {
+    kernel: ComputeKernel,
+    uniforms: wgpu::Buffer,
+}
+
+impl GtaoPass {
+    /// Compiles the kernel.
+    pub fn new(device: &wgpu::Device) -> Self {
+        let kernel = ComputeKernel::new(
+            device,
+            &shader::GTAO,
+            &[
+                bind::uniform(0),
+                bind::uniform(1),
+                bind::texture(2, wgpu::TextureSampleType::Float { filterable: false }),
+                bind::texture(3, wgpu::TextureSampleType::Uint),
+                bind::storage_texture(4, AO_FORMAT),
+            ],
+        );
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("gtao settings"),
+            size: std::mem::size_of::<GtaoUniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        Self { kernel, uniforms }
+    }
+
+    /// Uploads validated settings; they apply to every later `encode`.
+    pub fn set_settings(&self, queue: &wgpu::Queue, settings: &AoSettings) {
+        queue.write_buffer(
+            &self.uniforms,
+            0,
+            bytemuck::bytes_of(&GtaoUniforms::new(settings)),
+        );
+    }
+
+    /// Records the kernel over `size` pixels.
+    #[allow(clippy::too_many_arguments)]
+    pub fn encode(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        view_uniforms: &wgpu::Buffer,
+        linear_depth: &wgpu::TextureView,
+        normals: &wgpu::TextureView,
+        output: &wgpu::TextureView,
+        size: [u32; 2],
+    ) {
+        self.kernel.dispatch(
+            device,
+            encoder,
+            &[
+                view_uniforms.as_entire_binding(),
+                self.uniforms.as_entire_binding(),
+                wgpu::BindingResource::TextureView(linear_depth),
+                wgpu::BindingResource::TextureView(normals),
+                wgpu::BindingResource::TextureView(output),
+            ],
+            size,
+        );
+    }
+}

@@ -1,0 +1,129 @@
+//! The compute passes, each a plain struct with `new` and `encode`, and the helpers they share.
+
+pub mod gtao;
+pub mod linear_depth;
+
+use crate::shader::ShaderSource;
+
+/// Threads per workgroup side; every pass uses 8x8 tiles.
+pub(crate) const TILE: u32 = 8;
+
+/// A compute pipeline with its one bind group layout.
+pub(crate) struct ComputeKernel {
+    pub pipeline: wgpu::ComputePipeline,
+    pub layout: wgpu::BindGroupLayout,
+    label: &'static str,
+}
+
+impl ComputeKernel {
+    pub fn new(
+        device: &wgpu::Device,
+        source: &ShaderSource,
+        entries: &[wgpu::BindGroupLayoutEntry],
+    ) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some(source.name),
+            entries,
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(source.name),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let module = source.create_module(device);
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(source.name),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: Some("main"),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        Self {
+            pipeline,
+            layout,
+            label: source.name,
+        }
+    }
+
+    /// Binds `resources` in order (binding 0, 1, ...) and dispatches one thread per pixel.
+    pub fn dispatch(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        resources: &[wgpu::BindingResource<'_>],
+        size: [u32; 2],
+    ) {
+        let entries: Vec<wgpu::BindGroupEntry<'_>> = resources
+            .iter()
+            .enumerate()
+            .map(|(binding, resource)| wgpu::BindGroupEntry {
+                binding: binding as u32,
+                resource: resource.clone(),
+            })
+            .collect();
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(self.label),
+            layout: &self.layout,
+            entries: &entries,
+        });
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some(self.label),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.dispatch_workgroups(size[0].div_ceil(TILE), size[1].div_ceil(TILE), 1);
+    }
+}
+
+/// Layout entries by kind, numbered by position.
+pub(crate) mod bind {
+    pub fn uniform(binding: u32) -> wgpu::BindGroupLayoutEntry {
+        entry(
+            binding,
+            wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+        )
+    }
+
+    pub fn texture(
+        binding: u32,
+        sample_type: wgpu::TextureSampleType,
+    ) -> wgpu::BindGroupLayoutEntry {
+        entry(
+            binding,
+            wgpu::BindingType::Texture {
+                sample_type,
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+        )
+    }
+
+    pub fn storage_texture(
+        binding: u32,
+        format: wgpu::TextureFormat,
+    ) -> wgpu::BindGroupLayoutEntry {
+        entry(
+            binding,
+            wgpu::BindingType::StorageTexture {
+                access: wgpu::StorageTextureAccess::WriteOnly,
+                format,
+                view_dimension: wgpu::TextureViewDimension::D2,
+            },
+        )
+    }
+
+    fn entry(binding: u32, ty: wgpu::BindingType) -> wgpu::BindGroupLayoutEntry {
+        wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty,
+            count: None,
+        }
+    }
+}

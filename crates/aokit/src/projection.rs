@@ -1,0 +1,355 @@
+//! Camera projection and depth conventions.
+//!
+//! View space is right-handed with the camera looking down -Z, as in glam and wgpu. NDC depth is
+//! in `[0, 1]`; *linear depth* is the positive distance along the view axis, `-view.z`.
+//!
+//! One [`Projection`] covers perspective and orthographic cameras, standard and reverse-Z depth,
+//! and finite or infinite far planes. Every depth mapping used here has the shape
+//! `ndc = A * view.z + B` over `w = -view.z` (perspective) or `w = 1` (orthographic), so linear
+//! depth comes back from NDC depth as a ratio of two linear functions, which the shaders evaluate
+//! with four coefficients ([`Projection::linearize_coefficients`]).
+
+use glam::{Mat4, Vec2, Vec3, Vec4};
+use serde::{Deserialize, Serialize};
+
+/// The shape of the view volume.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum ProjectionKind {
+    /// Pinhole camera with a vertical field of view in radians.
+    Perspective {
+        /// Full vertical field of view, radians, in `(0, pi)`.
+        fov_y: f32,
+    },
+    /// Parallel projection showing `height` world units vertically.
+    Orthographic {
+        /// Height of the view volume in world units.
+        height: f32,
+    },
+}
+
+/// A camera projection with its depth convention.
+///
+/// ```
+/// use aokit::Projection;
+/// let p = Projection::perspective(60f32.to_radians(), 16.0 / 9.0, 0.1, None);
+/// assert!(p.reverse_z);
+/// let d = p.ndc_depth(25.0);
+/// assert!((p.linear_depth(d) - 25.0).abs() < 1e-3);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Projection {
+    /// Perspective or orthographic, with its extent.
+    pub kind: ProjectionKind,
+    /// Width over height of the viewport.
+    pub aspect: f32,
+    /// Distance to the near plane (positive).
+    pub near: f32,
+    /// Distance to the far plane, or `None` for an infinite far plane (perspective only).
+    pub far: Option<f32>,
+    /// `true` when the near plane maps to depth 1 and the far plane to depth 0.
+    pub reverse_z: bool,
+}
+
+/// Why a [`Projection`] cannot be used.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ProjectionError {
+    /// The near plane is not a positive finite number.
+    #[error("projection near plane must be positive and finite, got {0}")]
+    Near(f32),
+    /// The far plane is not beyond the near plane.
+    #[error("projection far plane ({far}) must be finite and greater than the near plane ({near})")]
+    Far {
+        /// The near plane asked for.
+        near: f32,
+        /// The far plane asked for.
+        far: f32,
+    },
+    /// The vertical field of view is outside `(0, pi)`.
+    #[error("perspective vertical field of view must be in (0, 180) degrees, got {0} degrees")]
+    FieldOfView(f32),
+    /// The orthographic height is not positive.
+    #[error("orthographic height must be positive and finite, got {0}")]
+    OrthoHeight(f32),
+    /// The aspect ratio is not positive.
+    #[error("aspect ratio must be positive and finite, got {0}")]
+    Aspect(f32),
+    /// Orthographic depth is linear in distance, so it needs a finite far plane.
+    #[error("an orthographic projection needs a finite far plane")]
+    InfiniteOrthographic,
+}
+
+impl Projection {
+    /// A perspective projection, reverse-Z (the precise choice for float depth buffers).
+    pub fn perspective(fov_y: f32, aspect: f32, near: f32, far: Option<f32>) -> Self {
+        Self {
+            kind: ProjectionKind::Perspective { fov_y },
+            aspect,
+            near,
+            far,
+            reverse_z: true,
+        }
+    }
+
+    /// An orthographic projection `height` world units tall, reverse-Z.
+    pub fn orthographic(height: f32, aspect: f32, near: f32, far: f32) -> Self {
+        Self {
+            kind: ProjectionKind::Orthographic { height },
+            aspect,
+            near,
+            far: Some(far),
+            reverse_z: true,
+        }
+    }
+
+    /// The same projection with the given depth direction.
+    pub fn with_reverse_z(self, reverse_z: bool) -> Self {
+        Self { reverse_z, ..self }
+    }
+
+    /// Checks every parameter, naming the first one that is unusable.
+    pub fn validate(&self) -> Result<(), ProjectionError> {
+        if !(self.near.is_finite() && self.near > 0.0) {
+            return Err(ProjectionError::Near(self.near));
+        }
+        if !(self.aspect.is_finite() && self.aspect > 0.0) {
+            return Err(ProjectionError::Aspect(self.aspect));
+        }
+        if let Some(far) = self.far
+            && !(far.is_finite() && far > self.near)
+        {
+            return Err(ProjectionError::Far {
+                near: self.near,
+                far,
+            });
+        }
+        match self.kind {
+            ProjectionKind::Perspective { fov_y } => {
+                if !(fov_y > 0.0 && fov_y < std::f32::consts::PI) {
+                    return Err(ProjectionError::FieldOfView(fov_y.to_degrees()));
+                }
+            }
+            ProjectionKind::Orthographic { height } => {
+                if !(height.is_finite() && height > 0.0) {
+                    return Err(ProjectionError::OrthoHeight(height));
+                }
+                if self.far.is_none() {
+                    return Err(ProjectionError::InfiniteOrthographic);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// `true` for orthographic projections.
+    pub fn is_orthographic(&self) -> bool {
+        matches!(self.kind, ProjectionKind::Orthographic { .. })
+    }
+
+    /// Half extent of the view volume at linear depth 1 (perspective) or anywhere (orthographic).
+    fn half_extent(&self) -> Vec2 {
+        let half_height = match self.kind {
+            ProjectionKind::Perspective { fov_y } => (0.5 * fov_y).tan(),
+            ProjectionKind::Orthographic { height } => 0.5 * height,
+        };
+        Vec2::new(half_height * self.aspect, half_height)
+    }
+
+    /// `(A, B)` of `ndc_z * w = A * view.z + B`.
+    fn depth_terms(&self) -> (f32, f32) {
+        let n = self.near;
+        match (self.kind, self.far, self.reverse_z) {
+            (ProjectionKind::Perspective { .. }, Some(f), false) => (f / (n - f), n * f / (n - f)),
+            (ProjectionKind::Perspective { .. }, Some(f), true) => (n / (f - n), n * f / (f - n)),
+            (ProjectionKind::Perspective { .. }, None, false) => (-1.0, -n),
+            (ProjectionKind::Perspective { .. }, None, true) => (0.0, n),
+            (ProjectionKind::Orthographic { .. }, far, false) => {
+                let f = far.unwrap_or(f32::INFINITY);
+                (-1.0 / (f - n), -n / (f - n))
+            }
+            (ProjectionKind::Orthographic { .. }, far, true) => {
+                let f = far.unwrap_or(f32::INFINITY);
+                (1.0 / (f - n), f / (f - n))
+            }
+        }
+    }
+
+    /// The clip-from-view matrix (wgpu clip space, depth in `[0, 1]`).
+    pub fn clip_from_view(&self) -> Mat4 {
+        let e = self.half_extent();
+        let (a, b) = self.depth_terms();
+        if self.is_orthographic() {
+            Mat4::from_cols(
+                Vec4::new(1.0 / e.x, 0.0, 0.0, 0.0),
+                Vec4::new(0.0, 1.0 / e.y, 0.0, 0.0),
+                Vec4::new(0.0, 0.0, a, 0.0),
+                Vec4::new(0.0, 0.0, b, 1.0),
+            )
+        } else {
+            Mat4::from_cols(
+                Vec4::new(1.0 / e.x, 0.0, 0.0, 0.0),
+                Vec4::new(0.0, 1.0 / e.y, 0.0, 0.0),
+                Vec4::new(0.0, 0.0, a, -1.0),
+                Vec4::new(0.0, 0.0, b, 0.0),
+            )
+        }
+    }
+
+    /// Coefficients `c` with `linear = (c.x * ndc + c.y) / (c.z * ndc + c.w)`.
+    pub fn linearize_coefficients(&self) -> Vec4 {
+        let (a, b) = self.depth_terms();
+        if self.is_orthographic() {
+            // ndc = -a * linear + b
+            Vec4::new(-1.0 / a, b / a, 0.0, 1.0)
+        } else {
+            // ndc = -a + b / linear
+            Vec4::new(0.0, b, 1.0, a)
+        }
+    }
+
+    /// Linear view depth (distance along -Z) of an NDC depth value.
+    pub fn linear_depth(&self, ndc_depth: f32) -> f32 {
+        let c = self.linearize_coefficients();
+        (c.x * ndc_depth + c.y) / (c.z * ndc_depth + c.w)
+    }
+
+    /// NDC depth of a point at the given linear view depth.
+    pub fn ndc_depth(&self, linear_depth: f32) -> f32 {
+        let (a, b) = self.depth_terms();
+        if self.is_orthographic() {
+            -a * linear_depth + b
+        } else {
+            -a + b / linear_depth
+        }
+    }
+
+    /// The depth buffer value of empty pixels: the far plane's NDC depth.
+    pub fn far_ndc_depth(&self) -> f32 {
+        if self.reverse_z { 0.0 } else { 1.0 }
+    }
+
+    /// View-space position of a point with NDC `xy` and the given linear depth.
+    pub fn view_position_from_linear(&self, ndc_xy: Vec2, linear_depth: f32) -> Vec3 {
+        let e = self.half_extent();
+        let scale = if self.is_orthographic() {
+            1.0
+        } else {
+            linear_depth
+        };
+        (ndc_xy * e * scale).extend(-linear_depth)
+    }
+
+    /// View-space position of a point with NDC `xy` and NDC depth.
+    pub fn view_position(&self, ndc_xy: Vec2, ndc_depth: f32) -> Vec3 {
+        self.view_position_from_linear(ndc_xy, self.linear_depth(ndc_depth))
+    }
+
+    /// Multiplier from NDC `xy` to view `xy`; perspective results are then scaled by linear depth.
+    pub fn ndc_to_view_scale(&self) -> Vec2 {
+        self.half_extent()
+    }
+
+    /// Pixels covered by one world unit at linear depth 1 (perspective) or at any depth
+    /// (orthographic), for a viewport `height_px` pixels tall.
+    pub fn pixels_per_unit(&self, height_px: f32) -> f32 {
+        0.5 * height_px / self.half_extent().y
+    }
+}
+
+/// NDC `xy` of the centre of pixel `(x, y)` in a `width x height` image (y down in pixels, up in
+/// NDC).
+pub fn pixel_to_ndc(pixel: Vec2, size: Vec2) -> Vec2 {
+    let uv = (pixel + 0.5) / size;
+    Vec2::new(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn all_projections() -> Vec<Projection> {
+        let mut out = Vec::new();
+        for reverse_z in [false, true] {
+            for far in [Some(500.0), None] {
+                out.push(Projection::perspective(1.1, 1.5, 0.05, far).with_reverse_z(reverse_z));
+            }
+            out.push(Projection::orthographic(20.0, 1.5, 0.05, 500.0).with_reverse_z(reverse_z));
+        }
+        out
+    }
+
+    #[test]
+    fn every_combination_is_valid_except_infinite_orthographic() {
+        for p in all_projections() {
+            p.validate().unwrap();
+        }
+        let mut ortho = Projection::orthographic(20.0, 1.0, 0.1, 100.0);
+        ortho.far = None;
+        assert_eq!(ortho.validate(), Err(ProjectionError::InfiniteOrthographic));
+    }
+
+    #[test]
+    fn view_position_round_trips_through_the_matrix() {
+        let points = [
+            Vec3::new(0.0, 0.0, -1.0),
+            Vec3::new(0.3, -0.2, -0.4),
+            Vec3::new(-4.0, 2.5, -12.0),
+            Vec3::new(30.0, -11.0, -90.0),
+            Vec3::new(-0.01, 0.02, -0.06),
+        ];
+        for p in all_projections() {
+            let m = p.clip_from_view();
+            for v in points {
+                let clip = m * v.extend(1.0);
+                let ndc = clip.truncate() / clip.w;
+                assert!((0.0..=1.0).contains(&ndc.z), "{p:?} {v} -> {ndc}");
+                let back = p.view_position(ndc.truncate(), ndc.z);
+                // Orthographic depth spends its bits evenly over [near, far]: absolute error.
+                let depth_quantum = match p.far {
+                    Some(far) if p.is_orthographic() => 4.0 * f32::EPSILON * (far - p.near),
+                    _ => 0.0,
+                };
+                let err = (back - v).length();
+                let tolerance = 1e-4 * v.length() + depth_quantum;
+                assert!(err < tolerance, "{p:?}: {v} -> {ndc} -> {back} (err {err})");
+                assert!((p.ndc_depth(-v.z) - ndc.z).abs() < 1e-6);
+            }
+        }
+    }
+
+    #[test]
+    fn near_and_far_planes_map_to_the_depth_range_ends() {
+        for p in all_projections() {
+            let (near_ndc, far_ndc) = if p.reverse_z { (1.0, 0.0) } else { (0.0, 1.0) };
+            assert!((p.ndc_depth(p.near) - near_ndc).abs() < 1e-6, "{p:?}");
+            let far = p.far.unwrap_or(f32::INFINITY);
+            assert!((p.ndc_depth(far) - far_ndc).abs() < 1e-6, "{p:?}");
+            assert_eq!(p.far_ndc_depth(), far_ndc);
+        }
+    }
+
+    #[test]
+    fn pixel_centres_map_inside_ndc_with_y_up() {
+        let size = Vec2::new(4.0, 2.0);
+        assert_eq!(pixel_to_ndc(Vec2::ZERO, size), Vec2::new(-0.75, 0.5));
+        assert_eq!(
+            pixel_to_ndc(Vec2::new(3.0, 1.0), size),
+            Vec2::new(0.75, -0.5)
+        );
+    }
+
+    #[test]
+    fn bad_parameters_are_named() {
+        let p = Projection::perspective(0.0, 1.0, 0.1, None);
+        assert!(
+            p.validate()
+                .unwrap_err()
+                .to_string()
+                .contains("field of view")
+        );
+        let p = Projection::perspective(1.0, 1.0, -1.0, None);
+        assert!(p.validate().unwrap_err().to_string().contains("near"));
+        let p = Projection::perspective(1.0, 1.0, 1.0, Some(0.5));
+        assert!(p.validate().unwrap_err().to_string().contains("far"));
+    }
+}
