@@ -42,8 +42,20 @@ fn arc_integral(h: f32, n: f32) -> f32 {
 }
 
 // Highest horizon cosine along one screen direction, starting from the normal hemisphere's edge.
-fn search_horizon(center: vec2<f32>, p: vec3<f32>, v: vec3<f32>, step_px: vec2<f32>,
-                  radius_px: f32, jitter: f32, low_cos: f32) -> f32 {
+//
+// Samples are read at texel centres, which lie up to half a texel off the slice plane. On
+// surfaces seen at grazing angles that sideways step is long in view space and runs towards the
+// eye, so an open plane would occlude itself. Each sample is therefore slid within the pixel's
+// tangent plane until it lies in the slice: its height above the tangent plane, which is what
+// occludes, is kept, and samples on the plane itself land exactly on the tangent line.
+fn search_horizon(center: vec2<f32>, p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, axis: vec3<f32>,
+                  side: vec3<f32>, step_px: vec2<f32>, radius_px: f32, jitter: f32,
+                  low_cos: f32) -> f32 {
+    let n_axis = dot(n, axis);
+    // The tangent-plane direction that leaves the slice; its axis component is 1 - n_axis^2.
+    // Where the slice is nearly tangent the slide would be long, but such slices carry a weight
+    // |n_p| = sqrt(1 - n_axis^2) of at most 0.03.
+    let slide = (axis - n * n_axis) / max(1.0 - n_axis * n_axis, 1e-3);
     var horizon_cos = low_cos;
     let size = vec2<i32>(view.size);
     for (var step = 0u; step < gtao.steps_per_side; step++) {
@@ -59,7 +71,13 @@ fn search_horizon(center: vec2<f32>, p: vec3<f32>, v: vec3<f32>, step_px: vec2<f
         if sample_depth == NO_SURFACE {
             continue;
         }
-        let delta = view_position(vec2<f32>(texel) + 0.5, sample_depth) - p;
+        let off_slice = view_position(vec2<f32>(texel) + 0.5, sample_depth) - p;
+        let delta = off_slice - dot(off_slice, axis) * slide;
+        // A long slide can carry a near sample past the pixel to the other half of the slice,
+        // where it says nothing about this side's horizon.
+        if dot(delta, side) <= 0.0 {
+            continue;
+        }
         let distance = length(delta);
         let weight = saturate(distance * gtao.falloff_mul + gtao.falloff_add);
         let sample_cos = dot(delta, v) / distance;
@@ -105,8 +123,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         // Horizons start at the edge of the normal's hemisphere: cos(n + pi/2) = -sin(n) on the
         // +omega side, cos(n - pi/2) = sin(n) on the other.
         let sin_n = sin(angle_n);
-        let cos_pos = search_horizon(center, p, v, omega, radius_px, noise.y, -sin_n);
-        let cos_neg = search_horizon(center, p, v, -omega, radius_px, noise.y, sin_n);
+        let cos_pos = search_horizon(center, p, v, n, axis, tangent, omega, radius_px, noise.y, -sin_n);
+        let cos_neg = search_horizon(center, p, v, n, axis, -tangent, -omega, radius_px, noise.y, sin_n);
         // Horizon angles, clamped to the normal's hemisphere.
         let h_pos = angle_n + min(fast_acos(cos_pos) - angle_n, HALF_PI);
         let h_neg = angle_n + max(-fast_acos(cos_neg) - angle_n, -HALF_PI);

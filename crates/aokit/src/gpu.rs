@@ -86,7 +86,14 @@ impl GpuContext {
         let descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
         let backends = descriptor.backends;
         let instance = wgpu::Instance::new(descriptor);
-        let adapters = instance.enumerate_adapters(backends).await;
+        // Without WGPU_BACKEND, GL is asked only when no primary backend has an adapter: probing
+        // EGL is slow and noisy on headless machines, and Vulkan covers lavapipe.
+        let mut adapters = instance
+            .enumerate_adapters(backends & wgpu::Backends::PRIMARY)
+            .await;
+        if adapters.is_empty() {
+            adapters = instance.enumerate_adapters(backends).await;
+        }
         let adapter = choose_adapter(adapters, std::env::var("WGPU_ADAPTER_NAME").ok()).map_err(
             |e| match e {
                 Choice::None => GpuError::NoAdapter {

@@ -265,18 +265,32 @@ mod tests {
 
     #[test]
     fn out_of_range_values_name_their_field() {
-        let mut s = AoSettings::default();
-        s.radius = f32::NAN;
-        assert_eq!(s.validate().unwrap_err().field, "radius");
+        let field = |s: AoSettings| s.validate().unwrap_err().field;
+        let base = AoSettings::default();
+        assert_eq!(
+            field(AoSettings {
+                radius: f32::NAN,
+                ..base
+            }),
+            "radius"
+        );
         let mut s = AoSettings::default();
         s.gtao.steps_per_side = 65;
         assert_eq!(s.validate().unwrap_err().field, "gtao.steps_per_side");
-        let mut s = AoSettings::default();
-        s.falloff = 1.5;
-        assert_eq!(s.validate().unwrap_err().field, "falloff");
-        let mut s = AoSettings::default();
-        s.intensity = -1.0;
-        assert_eq!(s.validate().unwrap_err().field, "intensity");
+        assert_eq!(
+            field(AoSettings {
+                falloff: 1.5,
+                ..base
+            }),
+            "falloff"
+        );
+        assert_eq!(
+            field(AoSettings {
+                intensity: -1.0,
+                ..base
+            }),
+            "intensity"
+        );
     }
 
     #[test]

@@ -67,18 +67,63 @@ impl ShaderSource {
     }
 }
 
-/// Byte offsets and size of a WGSL struct as naga lays it out, for checks against the Rust mirror.
-pub fn struct_layout(module: &naga::Module, name: &str) -> Option<(Vec<(String, u32)>, u32)> {
+/// Byte offsets and size of a WGSL struct as naga lays it out.
+fn struct_layout(module: &naga::Module, name: &str) -> Option<(Vec<(String, usize)>, usize)> {
     module.types.iter().find_map(|(_, ty)| match &ty.inner {
         naga::TypeInner::Struct { members, span } if ty.name.as_deref() == Some(name) => Some((
             members
                 .iter()
-                .map(|m| (m.name.clone().unwrap_or_default(), m.offset))
+                .map(|m| (m.name.clone().unwrap_or_default(), m.offset as usize))
                 .collect(),
-            *span,
+            *span as usize,
         )),
         _ => None,
     })
+}
+
+/// Checks that the WGSL struct `name` in `source` has exactly the members, offsets and size of
+/// its Rust mirror, listed with [`field_offsets!`](crate::field_offsets).
+///
+/// ```
+/// #[repr(C)]
+/// struct ViewUniformsMirror { size: [f32; 2] }
+/// let err = aokit::shader::check_layout(
+///     &aokit::shader::LINEAR_DEPTH,
+///     "ViewUniforms",
+///     aokit::field_offsets!(ViewUniformsMirror { size }),
+///     std::mem::size_of::<ViewUniformsMirror>(),
+/// );
+/// assert!(err.is_err()); // the real struct has more members
+/// ```
+pub fn check_layout(
+    source: &ShaderSource,
+    name: &str,
+    rust_members: &[(&str, usize)],
+    rust_size: usize,
+) -> Result<(), String> {
+    let module = source.validate()?;
+    let (members, size) = struct_layout(&module, name)
+        .ok_or_else(|| format!("struct {name} not found in {}", source.name))?;
+    let wgsl: Vec<(&str, usize)> = members.iter().map(|(n, o)| (n.as_str(), *o)).collect();
+    if wgsl != rust_members {
+        return Err(format!(
+            "{name}: members differ between WGSL {wgsl:?} and Rust {rust_members:?}"
+        ));
+    }
+    if size != rust_size {
+        return Err(format!(
+            "{name}: WGSL size {size} but Rust size {rust_size}"
+        ));
+    }
+    Ok(())
+}
+
+/// `[(name, offset)]` of a `#[repr(C)]` struct's fields, for [`check_layout`].
+#[macro_export]
+macro_rules! field_offsets {
+    ($ty:ty { $($field:ident),* $(,)? }) => {
+        &[$((stringify!($field), ::core::mem::offset_of!($ty, $field))),*]
+    };
 }
 
 #[cfg(test)]

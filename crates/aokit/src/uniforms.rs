@@ -81,73 +81,57 @@ impl GtaoUniforms {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shader::{self, ShaderSource};
-    use std::mem::{offset_of, size_of};
-
-    fn assert_layout(source: &ShaderSource, name: &str, rust: &[(&str, usize)], rust_size: usize) {
-        let module = source.validate().unwrap();
-        let (members, span) = shader::struct_layout(&module, name)
-            .unwrap_or_else(|| panic!("struct {name} not found in {}", source.name));
-        let wgsl: Vec<(&str, usize)> = members
-            .iter()
-            .map(|(n, o)| (n.as_str(), *o as usize))
-            .collect();
-        assert_eq!(
-            wgsl, rust,
-            "{name}: member offsets differ between WGSL and Rust"
-        );
-        assert_eq!(
-            span as usize, rust_size,
-            "{name}: size differs between WGSL and Rust"
-        );
-    }
+    use crate::shader;
+    use std::mem::size_of;
 
     #[test]
     fn view_uniforms_match_wgsl() {
-        assert_layout(
+        let fields = crate::field_offsets!(ViewUniforms {
+            size,
+            inv_size,
+            linearize,
+            ndc_to_view,
+            pixels_per_unit,
+            orthographic,
+            far_ndc_depth,
+            frame_index,
+        });
+        shader::check_layout(
             &shader::LINEAR_DEPTH,
             "ViewUniforms",
-            &[
-                ("size", offset_of!(ViewUniforms, size)),
-                ("inv_size", offset_of!(ViewUniforms, inv_size)),
-                ("linearize", offset_of!(ViewUniforms, linearize)),
-                ("ndc_to_view", offset_of!(ViewUniforms, ndc_to_view)),
-                ("pixels_per_unit", offset_of!(ViewUniforms, pixels_per_unit)),
-                ("orthographic", offset_of!(ViewUniforms, orthographic)),
-                ("far_ndc_depth", offset_of!(ViewUniforms, far_ndc_depth)),
-                ("frame_index", offset_of!(ViewUniforms, frame_index)),
-            ],
+            fields,
             size_of::<ViewUniforms>(),
-        );
+        )
+        .unwrap();
     }
 
     #[test]
     fn gtao_uniforms_match_wgsl() {
-        assert_layout(
+        let fields = crate::field_offsets!(GtaoUniforms {
+            radius,
+            falloff_mul,
+            falloff_add,
+            intensity,
+            power,
+            slice_count,
+            steps_per_side,
+            normalize_slices,
+        });
+        shader::check_layout(
             &shader::GTAO,
             "GtaoUniforms",
-            &[
-                ("radius", offset_of!(GtaoUniforms, radius)),
-                ("falloff_mul", offset_of!(GtaoUniforms, falloff_mul)),
-                ("falloff_add", offset_of!(GtaoUniforms, falloff_add)),
-                ("intensity", offset_of!(GtaoUniforms, intensity)),
-                ("power", offset_of!(GtaoUniforms, power)),
-                ("slice_count", offset_of!(GtaoUniforms, slice_count)),
-                ("steps_per_side", offset_of!(GtaoUniforms, steps_per_side)),
-                (
-                    "normalize_slices",
-                    offset_of!(GtaoUniforms, normalize_slices),
-                ),
-            ],
+            fields,
             size_of::<GtaoUniforms>(),
-        );
+        )
+        .unwrap();
     }
-
     #[test]
     fn falloff_weight_is_one_inside_and_zero_at_the_radius() {
-        let mut settings = AoSettings::default();
-        settings.radius = 2.0;
-        settings.falloff = 0.25;
+        let mut settings = AoSettings {
+            radius: 2.0,
+            falloff: 0.25,
+            ..AoSettings::default()
+        };
         let u = GtaoUniforms::new(&settings);
         let weight = |d: f32| (d * u.falloff_mul + u.falloff_add).clamp(0.0, 1.0);
         assert_eq!(weight(1.0), 1.0);

@@ -6,16 +6,19 @@ pub mod linear_depth;
 use crate::shader::ShaderSource;
 
 /// Threads per workgroup side; every pass uses 8x8 tiles.
-pub(crate) const TILE: u32 = 8;
+pub const TILE: u32 = 8;
 
-/// A compute pipeline with its one bind group layout.
-pub(crate) struct ComputeKernel {
-    pub pipeline: wgpu::ComputePipeline,
-    pub layout: wgpu::BindGroupLayout,
+/// A compute pipeline with its one bind group layout, for one-thread-per-pixel passes whose
+/// entry point is `main` with `@workgroup_size(8, 8)`. Public so that companion crates write
+/// their passes the same way.
+pub struct ComputeKernel {
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
     label: &'static str,
 }
 
 impl ComputeKernel {
+    /// Compiles `source` with a bind group layout of `entries` at group 0.
     pub fn new(
         device: &wgpu::Device,
         source: &ShaderSource,
@@ -77,8 +80,9 @@ impl ComputeKernel {
     }
 }
 
-/// Layout entries by kind, numbered by position.
-pub(crate) mod bind {
+/// Bind group layout entries by kind, visible to compute.
+pub mod bind {
+    /// A uniform buffer.
     pub fn uniform(binding: u32) -> wgpu::BindGroupLayoutEntry {
         entry(
             binding,
@@ -104,6 +108,7 @@ pub(crate) mod bind {
         )
     }
 
+    /// A write-only 2D storage texture.
     pub fn storage_texture(
         binding: u32,
         format: wgpu::TextureFormat,
@@ -116,6 +121,11 @@ pub(crate) mod bind {
                 view_dimension: wgpu::TextureViewDimension::D2,
             },
         )
+    }
+
+    /// A sampler.
+    pub fn sampler(binding: u32, ty: wgpu::SamplerBindingType) -> wgpu::BindGroupLayoutEntry {
+        entry(binding, wgpu::BindingType::Sampler(ty))
     }
 
     fn entry(binding: u32, ty: wgpu::BindingType) -> wgpu::BindGroupLayoutEntry {

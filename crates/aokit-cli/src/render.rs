@@ -1,0 +1,112 @@
+//! `aokit render`.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result, bail};
+use aokit::{AdapterKind, GpuContext};
+use aokit_scene::{CameraFile, Renderer, Scene};
+use clap::Args;
+
+use crate::camera_args::CameraArgs;
+use crate::output::{write_exr, write_grey_png, write_rgba_png};
+use crate::settings_args::SettingsArgs;
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// Built-in scene (room, stairs, thin, open) or a .gltf/.glb/.obj file.
+    #[arg(long, default_value = "room")]
+    pub scene: String,
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// Image size.
+    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
+    pub size: [u32; 2],
+    #[command(flatten)]
+    pub settings: SettingsArgs,
+    /// Output directory.
+    #[arg(long, value_name = "DIR", default_value = "aokit-out")]
+    pub out: PathBuf,
+    /// Also write depth.exr, normal.exr and camera.json.
+    #[arg(long)]
+    pub gbuffer: bool,
+}
+
+pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("`{s}` is not WIDTHxHEIGHT"))?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .map_err(|e| format!("`{s}` is not WIDTHxHEIGHT: {e}"))
+    };
+    let size = [parse(w)?, parse(h)?];
+    if size.contains(&0) {
+        return Err(format!("`{s}`: width and height must be at least 1"));
+    }
+    Ok(size)
+}
+
+/// Opens a headless device and says so when it is a software rasteriser.
+pub fn open_gpu() -> Result<GpuContext> {
+    let gpu = GpuContext::headless()?;
+    if gpu.adapter_kind() == AdapterKind::Software {
+        eprintln!(
+            "note: no GPU found, rendering on the software adapter {} (slow)",
+            gpu.describe()
+        );
+    }
+    Ok(gpu)
+}
+
+pub fn run(args: &RenderArgs) -> Result<()> {
+    let scene = Scene::open(&args.scene)?;
+    for note in &scene.notes {
+        eprintln!("note: {}: {note}", scene.name);
+    }
+    let camera = args.camera.resolve(&scene)?;
+    let settings = args.settings.resolve(scene.suggested_radius)?;
+    let gpu = open_gpu()?;
+    let mut renderer = Renderer::new(&gpu, &scene, &settings)?;
+    let frame = renderer.render(&gpu, &camera, args.size, 0)?;
+    if frame.ao.iter().any(|v| !v.is_finite()) {
+        bail!("the AO pass produced non-finite values: please report this with the command line");
+    }
+
+    let out = &args.out;
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    write_grey_png(&out.join("ao.png"), frame.size, &frame.ao)?;
+    write_exr(&out.join("ao.exr"), frame.size, &[("Y", frame.ao.clone())])?;
+    write_rgba_png(&out.join("lit.png"), frame.size, &frame.lit)?;
+    let mut written = vec!["ao.png", "ao.exr", "lit.png"];
+    if args.gbuffer {
+        write_exr(
+            &out.join("depth.exr"),
+            frame.size,
+            &[("Z", frame.linear_depth.clone())],
+        )?;
+        let channel = |i: usize| frame.normals.iter().map(|n| n[i]).collect::<Vec<f32>>();
+        write_exr(
+            &out.join("normal.exr"),
+            frame.size,
+            &[("R", channel(0)), ("G", channel(1)), ("B", channel(2))],
+        )?;
+        let camera_file = CameraFile::new(&frame.projection, frame.view_from_world, frame.size);
+        let path = out.join("camera.json");
+        std::fs::write(&path, serde_json::to_string_pretty(&camera_file)? + "\n")
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        written.extend(["depth.exr", "normal.exr", "camera.json"]);
+    }
+    println!(
+        "rendered `{}` from camera `{}` at {}x{} with {} (radius {}): wrote {} to {}",
+        scene.name,
+        camera.name,
+        frame.size[0],
+        frame.size[1],
+        settings.method.name(),
+        settings.radius,
+        written.join(", "),
+        out.display()
+    );
+    Ok(())
+}

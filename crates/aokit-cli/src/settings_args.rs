@@ -1,0 +1,223 @@
+//! Flags that build an [`AoSettings`]: method, preset, radius, a TOML file and `--set` paths.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result, anyhow, bail};
+use aokit::{AoSettings, Method, Preset};
+use clap::Args;
+use serde::Deserialize;
+
+#[derive(Args, Debug, Clone)]
+pub struct SettingsArgs {
+    /// AO method.
+    #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(Method::ALL.map(Method::name)))]
+    pub method: Option<String>,
+    /// Quality preset.
+    #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(Preset::ALL.map(Preset::name)))]
+    pub preset: Option<String>,
+    /// AO radius in world units (default: the scene's suggested radius, else 1).
+    #[arg(long)]
+    pub radius: Option<f32>,
+    /// TOML file with any subset of the settings; applied after the preset.
+    #[arg(long, value_name = "FILE.toml")]
+    pub settings: Option<PathBuf>,
+    /// Set any setting by its dotted path, e.g. `--set gtao.slice_count=4`; applied last.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+}
+
+impl SettingsArgs {
+    /// Preset, then the scene's radius, then the file, then `--radius`, then each `--set`.
+    pub fn resolve(&self, suggested_radius: Option<f32>) -> Result<AoSettings> {
+        let method: Method = self
+            .method
+            .as_deref()
+            .map(str::parse)
+            .transpose()
+            .map_err(|e: String| anyhow!(e))?
+            .unwrap_or_default();
+        let preset: Preset = self
+            .preset
+            .as_deref()
+            .map(str::parse)
+            .transpose()
+            .map_err(|e: String| anyhow!(e))?
+            .unwrap_or_default();
+        let mut settings = AoSettings::preset(method, preset);
+        if let Some(radius) = suggested_radius {
+            settings.radius = radius;
+        }
+        let mut table = to_table(&settings)?;
+        if let Some(path) = &self.settings {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("cannot read settings file {}", path.display()))?;
+            let patch: toml::Table = toml::from_str(&text)
+                .with_context(|| format!("settings file {} is not valid TOML", path.display()))?;
+            merge(&mut table, patch, "")
+                .with_context(|| format!("in settings file {}", path.display()))?;
+        }
+        if let Some(radius) = self.radius {
+            table.insert("radius".into(), toml::Value::Float(radius.into()));
+        }
+        for assignment in &self.set {
+            set_path(&mut table, assignment)?;
+        }
+        let settings = AoSettings::deserialize(toml::Value::Table(table))
+            .map_err(|e| anyhow!("invalid settings: {}", e.message()))?;
+        settings.validate()?;
+        Ok(settings)
+    }
+}
+
+fn to_table(settings: &AoSettings) -> Result<toml::Table> {
+    match toml::Value::try_from(settings)? {
+        toml::Value::Table(t) => Ok(t),
+        _ => bail!("settings did not serialise to a table"),
+    }
+}
+
+/// Every leaf path of a settings table, for error messages.
+fn leaf_paths(table: &toml::Table, prefix: &str, out: &mut Vec<String>) {
+    for (key, value) in table {
+        let path = if prefix.is_empty() {
+            key.clone()
+        } else {
+            format!("{prefix}.{key}")
+        };
+        match value {
+            toml::Value::Table(inner) => leaf_paths(inner, &path, out),
+            _ => out.push(path),
+        }
+    }
+}
+
+fn known_settings(table: &toml::Table) -> String {
+    let mut paths = Vec::new();
+    leaf_paths(table, "", &mut paths);
+    paths.join(", ")
+}
+
+/// Overlays `patch` on `base`, refusing keys `base` does not have.
+fn merge(base: &mut toml::Table, patch: toml::Table, prefix: &str) -> Result<()> {
+    let known = known_settings(base);
+    for (key, value) in patch {
+        let path = if prefix.is_empty() {
+            key.clone()
+        } else {
+            format!("{prefix}.{key}")
+        };
+        match (base.get_mut(&key), value) {
+            (Some(toml::Value::Table(inner)), toml::Value::Table(patch)) => {
+                merge(inner, patch, &path)?
+            }
+            (Some(slot), value) => *slot = value,
+            (None, _) => bail!("unknown setting `{path}` (known: {known})"),
+        }
+    }
+    Ok(())
+}
+
+/// Applies one `KEY=VALUE`. VALUE is read as TOML (number, boolean, quoted string); anything
+/// else is taken as a bare string, so `--set method=gtao` works without quotes.
+fn set_path(table: &mut toml::Table, assignment: &str) -> Result<()> {
+    let (path, raw) = assignment
+        .split_once('=')
+        .ok_or_else(|| anyhow!("--set `{assignment}` is not KEY=VALUE"))?;
+    let path = path.trim();
+    let raw = raw.trim();
+    let value = toml::from_str::<toml::Table>(&format!("v = {raw}"))
+        .ok()
+        .and_then(|mut t| t.remove("v"))
+        .unwrap_or_else(|| toml::Value::String(raw.to_string()));
+    let known = known_settings(table);
+    let unknown = || anyhow!("unknown setting `{path}` (known: {known})");
+    let mut keys = path.split('.').peekable();
+    let mut current = table;
+    while let Some(key) = keys.next() {
+        let slot = current.get_mut(key).ok_or_else(unknown)?;
+        if keys.peek().is_none() {
+            if slot.is_table() {
+                bail!("`{path}` is a group of settings; set one of its fields (known: {known})");
+            }
+            *slot = value;
+            return Ok(());
+        }
+        current = slot.as_table_mut().ok_or_else(unknown)?;
+    }
+    Err(unknown())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(set: &[&str]) -> SettingsArgs {
+        SettingsArgs {
+            method: None,
+            preset: None,
+            radius: None,
+            settings: None,
+            set: set.iter().map(|s| s.to_string()).collect(),
+        }
+    }
+
+    #[test]
+    fn set_reaches_nested_fields_and_coerces_numbers() {
+        let s = args(&[
+            "gtao.slice_count=5",
+            "radius=2",
+            "gtao.normalize_slices=false",
+            "method=gtao",
+        ])
+        .resolve(None)
+        .unwrap();
+        assert_eq!(s.gtao.slice_count, 5);
+        assert_eq!(s.radius, 2.0);
+        assert!(!s.gtao.normalize_slices);
+    }
+
+    #[test]
+    fn unknown_paths_and_bad_values_name_the_problem() {
+        let err = args(&["gtao.slices=2"])
+            .resolve(None)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("gtao.slices") && err.contains("gtao.slice_count"),
+            "{err}"
+        );
+        let err = args(&["gtao.slice_count=2.5"])
+            .resolve(None)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("invalid"), "{err}");
+        let err = args(&["radius=-1"]).resolve(None).unwrap_err().to_string();
+        assert!(err.contains("radius"), "{err}");
+        let err = args(&["gtao=1"]).resolve(None).unwrap_err().to_string();
+        assert!(err.contains("group"), "{err}");
+    }
+
+    #[test]
+    fn precedence_is_preset_scene_file_flag_set() {
+        let dir = std::env::temp_dir().join(format!("aokit-settings-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("s.toml");
+        std::fs::write(&file, "radius = 3.0\n[gtao]\nsteps_per_side = 7\n").unwrap();
+        let mut a = args(&[]);
+        a.preset = Some("low".into());
+        a.settings = Some(file.clone());
+        let s = a.resolve(Some(0.5)).unwrap();
+        assert_eq!(
+            (s.radius, s.gtao.steps_per_side, s.gtao.slice_count),
+            (3.0, 7, 1)
+        );
+        a.radius = Some(4.0);
+        assert_eq!(a.resolve(Some(0.5)).unwrap().radius, 4.0);
+        a.set = vec!["radius=5".into()];
+        assert_eq!(a.resolve(Some(0.5)).unwrap().radius, 5.0);
+        std::fs::write(&file, "[gtao]\nslicecount = 7\n").unwrap();
+        let err = format!("{:#}", a.resolve(None).unwrap_err());
+        assert!(err.contains("gtao.slicecount"), "{err}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,314 @@
+//! Procedural scenes made in code, in metres with +Y up.
+
+use glam::Vec3;
+
+use crate::camera::Camera;
+use crate::mesh::Mesh;
+use crate::scene::Scene;
+use crate::shapes::{cuboid, quad, sphere};
+
+/// The built-in scenes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Builtin {
+    /// A room without ceiling or front wall, with a sphere and boxes: the classic AO showcase.
+    Room,
+    /// A staircase between walls, with a row of blocks: steps, crevices, concave corners.
+    Stairs,
+    /// Thin pillars, a fence and panels in front of a wall: where screen-space AO over-occludes.
+    Thin,
+    /// One plane: AO must be about 1 everywhere.
+    Open,
+}
+
+impl Builtin {
+    /// Every built-in, the default first.
+    pub const ALL: [Builtin; 4] = [Builtin::Room, Builtin::Stairs, Builtin::Thin, Builtin::Open];
+
+    /// The name `--scene` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Builtin::Room => "room",
+            Builtin::Stairs => "stairs",
+            Builtin::Thin => "thin",
+            Builtin::Open => "open",
+        }
+    }
+
+    /// Looks a built-in up by name.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|b| b.name() == name)
+    }
+
+    /// Builds the scene.
+    pub fn build(self) -> Scene {
+        let (mesh, cameras, radius) = match self {
+            Builtin::Room => room(),
+            Builtin::Stairs => stairs(),
+            Builtin::Thin => thin(),
+            Builtin::Open => open(),
+        };
+        Scene::new(self.name(), mesh, cameras, Some(radius))
+    }
+}
+
+const FLOOR: Vec3 = Vec3::new(0.62, 0.6, 0.56);
+const WALL: Vec3 = Vec3::new(0.75, 0.74, 0.7);
+const RED: Vec3 = Vec3::new(0.62, 0.18, 0.14);
+const GREEN: Vec3 = Vec3::new(0.2, 0.5, 0.22);
+const OBJECT: Vec3 = Vec3::new(0.8, 0.78, 0.74);
+const WOOD: Vec3 = Vec3::new(0.55, 0.38, 0.24);
+
+/// Walls are 0.2 m thick so that the ray-traced reference sees closed solids.
+const WALL_THICKNESS: f32 = 0.2;
+
+fn mesh_of(parts: &[Mesh]) -> Mesh {
+    let mut mesh = Mesh::default();
+    for part in parts {
+        mesh.append(part);
+    }
+    mesh
+}
+
+fn floor_slab(min_x: f32, min_z: f32, size_x: f32, size_z: f32) -> Mesh {
+    cuboid(
+        Vec3::new(min_x, -WALL_THICKNESS, min_z),
+        Vec3::new(size_x, WALL_THICKNESS, size_z),
+        0.0,
+        FLOOR,
+    )
+}
+
+fn room() -> (Mesh, Vec<Camera>, f32) {
+    let t = WALL_THICKNESS;
+    let mesh = mesh_of(&[
+        floor_slab(-4.0, -4.0, 8.0, 8.0),
+        cuboid(
+            Vec3::new(-4.0 - t, -t, -4.0 - t),
+            Vec3::new(8.0 + 2.0 * t, 3.0 + t, t),
+            0.0,
+            WALL,
+        ),
+        cuboid(
+            Vec3::new(-4.0 - t, -t, -4.0),
+            Vec3::new(t, 3.0 + t, 8.0),
+            0.0,
+            RED,
+        ),
+        cuboid(
+            Vec3::new(4.0, -t, -4.0),
+            Vec3::new(t, 3.0 + t, 8.0),
+            0.0,
+            GREEN,
+        ),
+        sphere(Vec3::new(-1.5, 1.0, -1.2), 1.0, OBJECT),
+        cuboid(
+            Vec3::new(0.9, 0.0, -2.4),
+            Vec3::new(1.4, 1.4, 1.4),
+            25.0,
+            OBJECT,
+        ),
+        // A low bench in the back-left corner: a step against two walls.
+        cuboid(
+            Vec3::new(-4.0, 0.0, -4.0),
+            Vec3::new(2.2, 0.45, 0.7),
+            0.0,
+            WOOD,
+        ),
+    ]);
+    let cameras = vec![
+        Camera::perspective(
+            "front",
+            Vec3::new(0.0, 2.4, 6.5),
+            Vec3::new(0.0, 0.9, -1.2),
+            60.0,
+        ),
+        Camera::perspective(
+            "corner",
+            Vec3::new(2.6, 1.7, 1.8),
+            Vec3::new(-3.5, 0.3, -3.6),
+            55.0,
+        ),
+    ];
+    (mesh, cameras, 1.0)
+}
+
+fn stairs() -> (Mesh, Vec<Camera>, f32) {
+    let t = WALL_THICKNESS;
+    let mut parts = vec![
+        floor_slab(-4.0, -5.0, 8.0, 10.0),
+        cuboid(
+            Vec3::new(-4.0, -t, -5.0 - t),
+            Vec3::new(8.0, 4.0 + t, t),
+            0.0,
+            WALL,
+        ),
+        // Side wall along the left of the flight: a concave corner at every step.
+        cuboid(
+            Vec3::new(-1.2 - t, 0.0, -5.0),
+            Vec3::new(t, 2.6, 3.2),
+            0.0,
+            WALL,
+        ),
+    ];
+    // Eight steps climbing towards the back wall, 0.25 m rise, 0.4 m run.
+    for i in 0..8 {
+        let z_front = -1.8 - 0.4 * i as f32;
+        parts.push(cuboid(
+            Vec3::new(-1.2, 0.0, z_front - 0.4),
+            Vec3::new(2.4, 0.25 * (i + 1) as f32, 0.4),
+            0.0,
+            OBJECT,
+        ));
+    }
+    // Blocks 6 cm apart: narrow crevices that stay dark.
+    for i in 0..5 {
+        parts.push(cuboid(
+            Vec3::new(1.6 + 0.56 * i as f32, 0.0, -3.2),
+            Vec3::new(0.5, 0.8, 0.5),
+            0.0,
+            WOOD,
+        ));
+    }
+    // A plinth against the back wall with a smaller step on top.
+    parts.push(cuboid(
+        Vec3::new(1.6, 0.0, -5.0),
+        Vec3::new(2.2, 0.5, 0.9),
+        0.0,
+        WALL,
+    ));
+    parts.push(cuboid(
+        Vec3::new(1.9, 0.5, -5.0),
+        Vec3::new(1.2, 0.35, 0.5),
+        0.0,
+        WALL,
+    ));
+    let cameras = vec![
+        Camera::perspective(
+            "side",
+            Vec3::new(3.4, 2.7, 2.8),
+            Vec3::new(-0.3, 0.8, -3.0),
+            60.0,
+        ),
+        Camera::perspective(
+            "steps",
+            Vec3::new(0.2, 1.4, 0.8),
+            Vec3::new(-0.4, 1.2, -4.0),
+            60.0,
+        ),
+    ];
+    (mesh_of(&parts), cameras, 0.5)
+}
+
+fn thin() -> (Mesh, Vec<Camera>, f32) {
+    let t = WALL_THICKNESS;
+    let mut parts = vec![
+        floor_slab(-4.0, -3.0, 8.0, 6.0),
+        cuboid(
+            Vec3::new(-4.0, -t, -3.0 - t),
+            Vec3::new(8.0, 3.4 + t, t),
+            0.0,
+            WALL,
+        ),
+    ];
+    // Pillars 6 cm square, 40 cm in front of the wall.
+    for i in 0..5 {
+        parts.push(cuboid(
+            Vec3::new(-3.3 + 0.4 * i as f32, 0.0, -2.6),
+            Vec3::new(0.06, 2.4, 0.06),
+            0.0,
+            OBJECT,
+        ));
+    }
+    // A fence: 3 cm slats with 8 cm gaps, on two rails, 80 cm in front of the wall.
+    for i in 0..15 {
+        parts.push(cuboid(
+            Vec3::new(-1.0 + 0.16 * i as f32, 0.0, -2.2),
+            Vec3::new(0.08, 1.2, 0.03),
+            0.0,
+            WOOD,
+        ));
+    }
+    for y in [0.3, 1.0] {
+        parts.push(cuboid(
+            Vec3::new(-1.05, y, -2.17),
+            Vec3::new(2.45, 0.06, 0.04),
+            0.0,
+            WOOD,
+        ));
+    }
+    // Panels 2 cm thick, one standing, one turned, one raised off the floor.
+    parts.push(cuboid(
+        Vec3::new(1.7, 0.0, -2.5),
+        Vec3::new(0.8, 1.6, 0.02),
+        0.0,
+        OBJECT,
+    ));
+    parts.push(cuboid(
+        Vec3::new(2.7, 0.0, -2.4),
+        Vec3::new(0.8, 1.6, 0.02),
+        20.0,
+        OBJECT,
+    ));
+    parts.push(cuboid(
+        Vec3::new(-2.2, 0.3, -1.2),
+        Vec3::new(0.7, 1.2, 0.02),
+        -15.0,
+        OBJECT,
+    ));
+    let cameras = vec![
+        Camera::perspective(
+            "front",
+            Vec3::new(0.0, 1.6, 3.4),
+            Vec3::new(0.0, 0.9, -3.0),
+            60.0,
+        ),
+        Camera::perspective(
+            "oblique",
+            Vec3::new(-3.0, 1.2, 1.0),
+            Vec3::new(0.5, 0.8, -2.8),
+            60.0,
+        ),
+    ];
+    (mesh_of(&parts), cameras, 0.6)
+}
+
+fn open() -> (Mesh, Vec<Camera>, f32) {
+    // A single-sided 40 m square facing up.
+    let mesh = quad(
+        Vec3::new(-20.0, 0.0, 20.0),
+        Vec3::new(40.0, 0.0, 0.0),
+        Vec3::new(0.0, 0.0, -40.0),
+        FLOOR,
+    );
+    let cameras = vec![
+        Camera::perspective(
+            "above",
+            Vec3::new(0.0, 6.0, 10.0),
+            Vec3::new(0.0, 0.0, -2.0),
+            60.0,
+        ),
+        Camera::perspective(
+            "low",
+            Vec3::new(0.0, 1.5, 12.0),
+            Vec3::new(0.0, 0.0, 0.0),
+            60.0,
+        ),
+    ];
+    (mesh, cameras, 1.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_builtin_builds_a_valid_mesh_with_cameras() {
+        for b in Builtin::ALL {
+            let scene = b.build();
+            scene.mesh.validate().unwrap();
+            assert!(scene.mesh.triangle_count() > 0, "{}", b.name());
+            assert!(!scene.cameras.is_empty());
+            assert_eq!(Builtin::from_name(b.name()), Some(b));
+        }
+    }
+}

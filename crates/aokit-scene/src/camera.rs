@@ -1,0 +1,302 @@
+//! Cameras: placement, lens and depth convention, and the `camera.json` file format.
+
+use aokit::{Projection, ProjectionKind};
+use glam::{Mat4, Vec3};
+use serde::{Deserialize, Serialize};
+
+use crate::mesh::Bounds;
+
+/// What the camera sees through.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Lens {
+    /// Pinhole with a vertical field of view in degrees.
+    Perspective {
+        /// Full vertical field of view, degrees.
+        fov_y_deg: f32,
+    },
+    /// Parallel projection `height` world units tall.
+    Orthographic {
+        /// Visible height in world units.
+        height: f32,
+    },
+}
+
+/// A named camera placed by eye, target and up.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    /// Name used by `--camera`.
+    pub name: String,
+    /// Eye position.
+    pub eye: Vec3,
+    /// Point looked at.
+    pub target: Vec3,
+    /// Approximate up direction.
+    pub up: Vec3,
+    /// Lens.
+    pub lens: Lens,
+    /// Near plane; `None` picks one from the scene size.
+    pub near: Option<f32>,
+    /// Far plane; `None` is an infinite far plane (perspective) or one just past the scene
+    /// (orthographic).
+    pub far: Option<f32>,
+    /// Reverse-Z depth (near = 1, far = 0), the precise choice for float depth.
+    pub reverse_z: bool,
+}
+
+impl Camera {
+    /// A perspective camera with +Y up, reverse-Z and an infinite far plane.
+    pub fn perspective(name: &str, eye: Vec3, target: Vec3, fov_y_deg: f32) -> Self {
+        Self {
+            name: name.to_string(),
+            eye,
+            target,
+            up: Vec3::Y,
+            lens: Lens::Perspective { fov_y_deg },
+            near: None,
+            far: None,
+            reverse_z: true,
+        }
+    }
+
+    /// A camera that shows all of `bounds` from above and to the side.
+    pub fn framing(bounds: &Bounds) -> Self {
+        let fov_y_deg = 50.0f32;
+        let direction = Vec3::new(0.6, 0.5, 1.0).normalize();
+        // Distance at which the bounding sphere fits the vertical field of view, with a margin.
+        let distance = 1.1 * bounds.radius() / (0.5 * fov_y_deg.to_radians()).sin();
+        let center = bounds.center();
+        Self::perspective("framing", center + direction * distance, center, fov_y_deg)
+    }
+
+    /// Checks the placement and lens, naming what is wrong.
+    pub fn validate(&self) -> Result<(), String> {
+        let forward = self.target - self.eye;
+        if !(self.eye.is_finite() && self.target.is_finite() && self.up.is_finite()) {
+            return Err(format!(
+                "camera `{}` has a non-finite eye, target or up",
+                self.name
+            ));
+        }
+        if forward.length() < 1e-6 {
+            return Err(format!(
+                "camera `{}`: eye and target are the same point",
+                self.name
+            ));
+        }
+        if forward
+            .normalize()
+            .cross(self.up.normalize_or_zero())
+            .length()
+            < 1e-4
+        {
+            return Err(format!(
+                "camera `{}`: up {} is parallel to the view direction",
+                self.name, self.up
+            ));
+        }
+        match self.lens {
+            Lens::Perspective { fov_y_deg } if !(fov_y_deg > 0.0 && fov_y_deg < 180.0) => {
+                Err(format!(
+                    "camera `{}`: vertical field of view {fov_y_deg} is not in (0, 180) degrees",
+                    self.name
+                ))
+            }
+            Lens::Orthographic { height } if !(height.is_finite() && height > 0.0) => Err(format!(
+                "camera `{}`: orthographic height {height} is not positive",
+                self.name
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// World to view transform (right-handed, looking down -Z).
+    pub fn view_from_world(&self) -> Mat4 {
+        glam::camera::rh::view::look_at_mat4(self.eye, self.target, self.up)
+    }
+
+    /// The projection for a viewport of `aspect` (width / height), with near and far planes
+    /// chosen from `bounds` where the camera leaves them open.
+    pub fn projection(&self, aspect: f32, bounds: &Bounds) -> Projection {
+        let to_center = (bounds.center() - self.eye).length();
+        let radius = bounds.radius().max(1e-3);
+        let (kind, near, far) = match self.lens {
+            Lens::Perspective { fov_y_deg } => (
+                ProjectionKind::Perspective {
+                    fov_y: fov_y_deg.to_radians(),
+                },
+                // Reverse-Z float depth is precise at any near plane; a thousandth of the scene
+                // keeps close-up geometry from being clipped.
+                self.near.unwrap_or(1e-3 * radius),
+                self.far,
+            ),
+            Lens::Orthographic { height } => {
+                let near = self.near.unwrap_or((to_center - radius).max(1e-3 * radius));
+                let far = self.far.unwrap_or((to_center + radius).max(near * 2.0));
+                (ProjectionKind::Orthographic { height }, near, Some(far))
+            }
+        };
+        Projection {
+            kind,
+            aspect,
+            near,
+            far,
+            reverse_z: self.reverse_z,
+        }
+    }
+}
+
+/// The `camera.json` written beside G-buffer exports: everything needed to turn the depth and
+/// normal images back into view-space geometry. See docs/camera-json.md.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CameraFile {
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// `perspective` or `orthographic`.
+    pub projection: String,
+    /// Vertical field of view in degrees (perspective only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fov_y_deg: Option<f32>,
+    /// Visible height in world units (orthographic only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ortho_height: Option<f32>,
+    /// Near plane distance.
+    pub near: f32,
+    /// Far plane distance, `null` for an infinite far plane.
+    pub far: Option<f32>,
+    /// Whether depth is reverse-Z.
+    pub reverse_z: bool,
+    /// World-to-view matrix, row-major (`view_from_world[row][column]`).
+    pub view_from_world: [[f32; 4]; 4],
+}
+
+impl CameraFile {
+    /// Describes a rendered image.
+    pub fn new(projection: &Projection, view_from_world: Mat4, size: [u32; 2]) -> Self {
+        let (name, fov_y_deg, ortho_height) = match projection.kind {
+            ProjectionKind::Perspective { fov_y } => {
+                ("perspective", Some(fov_y.to_degrees()), None)
+            }
+            ProjectionKind::Orthographic { height } => ("orthographic", None, Some(height)),
+        };
+        Self {
+            width: size[0],
+            height: size[1],
+            projection: name.to_string(),
+            fov_y_deg,
+            ortho_height,
+            near: projection.near,
+            far: projection.far,
+            reverse_z: projection.reverse_z,
+            view_from_world: view_from_world.transpose().to_cols_array_2d(),
+        }
+    }
+
+    /// The projection described, checked.
+    pub fn projection(&self) -> Result<Projection, String> {
+        let kind = match (self.projection.as_str(), self.fov_y_deg, self.ortho_height) {
+            ("perspective", Some(fov), _) => ProjectionKind::Perspective {
+                fov_y: fov.to_radians(),
+            },
+            ("orthographic", _, Some(height)) => ProjectionKind::Orthographic { height },
+            ("perspective", None, _) => {
+                return Err("perspective camera.json lacks fov_y_deg".into());
+            }
+            ("orthographic", _, None) => {
+                return Err("orthographic camera.json lacks ortho_height".into());
+            }
+            (other, _, _) => {
+                return Err(format!(
+                    "camera.json projection `{other}` is neither perspective nor orthographic"
+                ));
+            }
+        };
+        if self.width == 0 || self.height == 0 {
+            return Err(format!(
+                "camera.json size {}x{} is empty",
+                self.width, self.height
+            ));
+        }
+        let projection = Projection {
+            kind,
+            aspect: self.width as f32 / self.height as f32,
+            near: self.near,
+            far: self.far,
+            reverse_z: self.reverse_z,
+        };
+        projection.validate().map_err(|e| e.to_string())?;
+        Ok(projection)
+    }
+
+    /// The world-to-view matrix.
+    pub fn view_from_world(&self) -> Mat4 {
+        Mat4::from_cols_array_2d(&self.view_from_world).transpose()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn camera_file_round_trips_through_json() {
+        let camera = Camera::perspective("c", Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO, 60.0);
+        let bounds = Bounds {
+            min: Vec3::splat(-1.0),
+            max: Vec3::splat(1.0),
+        };
+        let projection = camera.projection(1.5, &bounds);
+        let file = CameraFile::new(&projection, camera.view_from_world(), [300, 200]);
+        let json = serde_json::to_string(&file).unwrap();
+        assert!(json.contains("\"far\":null"));
+        let back: CameraFile = serde_json::from_str(&json).unwrap();
+        assert_eq!(back.projection().unwrap(), projection);
+        let view = back.view_from_world();
+        // Row-major: the translation sits in the last column of each row.
+        assert_eq!(file.view_from_world[0][3], view.w_axis.x);
+        assert!((view.transform_point3(camera.eye)).length() < 1e-5);
+    }
+
+    #[test]
+    fn framing_camera_sees_the_whole_box() {
+        let bounds = Bounds {
+            min: Vec3::new(-5.0, 0.0, -2.0),
+            max: Vec3::new(5.0, 3.0, 2.0),
+        };
+        let camera = Camera::framing(&bounds);
+        camera.validate().unwrap();
+        let clip = camera.projection(1.0, &bounds).clip_from_view() * camera.view_from_world();
+        for corner in 0..8 {
+            let p = Vec3::new(
+                if corner & 1 == 0 {
+                    bounds.min.x
+                } else {
+                    bounds.max.x
+                },
+                if corner & 2 == 0 {
+                    bounds.min.y
+                } else {
+                    bounds.max.y
+                },
+                if corner & 4 == 0 {
+                    bounds.min.z
+                } else {
+                    bounds.max.z
+                },
+            );
+            let c = clip * p.extend(1.0);
+            let ndc = c.truncate() / c.w;
+            assert!(ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0, "{p} -> {ndc}");
+        }
+    }
+
+    #[test]
+    fn degenerate_cameras_are_refused() {
+        let mut camera = Camera::perspective("c", Vec3::ONE, Vec3::ONE, 60.0);
+        assert!(camera.validate().unwrap_err().contains("same point"));
+        camera.target = Vec3::new(1.0, 5.0, 1.0);
+        assert!(camera.validate().unwrap_err().contains("parallel"));
+    }
+}

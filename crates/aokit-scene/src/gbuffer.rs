@@ -1,0 +1,285 @@
+//! The G-buffer raster pass: depth (D32F), oct32 view-space normals and albedo. No MSAA.
+
+use aokit::Projection;
+use bytemuck::{Pod, Zeroable};
+use glam::Mat4;
+use wgpu::util::DeviceExt;
+
+use crate::mesh::Mesh;
+use crate::shaders;
+
+/// Depth format of the G-buffer.
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+/// Normals: oct32-encoded view-space unit vectors.
+pub const NORMAL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
+/// Albedo, stored sRGB so 8 bits keep dark tones.
+pub const ALBEDO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct GpuVertex {
+    position: [f32; 3],
+    normal: [f32; 3],
+    albedo: [f32; 3],
+}
+
+/// Mirrors `GBufferUniforms` in `shaders/gbuffer.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct GBufferUniforms {
+    clip_from_world: [[f32; 4]; 4],
+    view_from_world: [[f32; 4]; 4],
+    orthographic: f32,
+    _pad: [f32; 3],
+}
+
+/// A mesh uploaded to the GPU.
+pub struct GpuMesh {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+}
+
+impl GpuMesh {
+    /// Uploads `mesh`.
+    pub fn new(device: &wgpu::Device, mesh: &Mesh) -> Self {
+        let vertices: Vec<GpuVertex> = (0..mesh.positions.len())
+            .map(|i| GpuVertex {
+                position: mesh.positions[i].to_array(),
+                normal: mesh.normals[i].to_array(),
+                albedo: mesh.albedo[i].to_array(),
+            })
+            .collect();
+        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("scene vertices"),
+            contents: bytemuck::cast_slice(&vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("scene indices"),
+            contents: bytemuck::cast_slice(&mesh.indices),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        Self {
+            vertices,
+            indices,
+            index_count: mesh.indices.len() as u32,
+        }
+    }
+}
+
+/// The G-buffer textures for one resolution.
+pub struct GBuffer {
+    /// Width and height in pixels.
+    pub size: [u32; 2],
+    /// Hardware depth, as the projection's convention writes it.
+    pub depth: wgpu::Texture,
+    /// oct32 view-space normals.
+    pub normals: wgpu::Texture,
+    /// Albedo.
+    pub albedo: wgpu::Texture,
+}
+
+impl GBuffer {
+    /// Allocates the targets.
+    pub fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
+        let make = |label, format| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d {
+                    width: size[0],
+                    height: size[1],
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                    | wgpu::TextureUsages::TEXTURE_BINDING
+                    | wgpu::TextureUsages::COPY_SRC,
+                view_formats: &[],
+            })
+        };
+        Self {
+            size,
+            depth: make("gbuffer depth", DEPTH_FORMAT),
+            normals: make("gbuffer normals", NORMAL_FORMAT),
+            albedo: make("gbuffer albedo", ALBEDO_FORMAT),
+        }
+    }
+}
+
+/// Rasterises a [`GpuMesh`] into a [`GBuffer`].
+pub struct GBufferPass {
+    /// Pipelines for standard (`[0]`) and reverse-Z (`[1]`) depth tests.
+    pipelines: [wgpu::RenderPipeline; 2],
+    layout: wgpu::BindGroupLayout,
+    uniforms: wgpu::Buffer,
+}
+
+impl GBufferPass {
+    /// Compiles the pass.
+    pub fn new(device: &wgpu::Device) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("gbuffer"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("gbuffer"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let module = shaders::GBUFFER.create_module(device);
+        let pipeline = |compare| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("gbuffer"),
+                layout: Some(&pipeline_layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(wgpu::VertexBufferLayout {
+                        array_stride: std::mem::size_of::<GpuVertex>() as u64,
+                        step_mode: wgpu::VertexStepMode::Vertex,
+                        attributes: &wgpu::vertex_attr_array![
+                            0 => Float32x3, 1 => Float32x3, 2 => Float32x3
+                        ],
+                    })],
+                },
+                primitive: wgpu::PrimitiveState {
+                    // Both sides are drawn: scene files hold open sheets and mixed windings.
+                    cull_mode: None,
+                    ..Default::default()
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(compare),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: Default::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(NORMAL_FORMAT.into()), Some(ALBEDO_FORMAT.into())],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("gbuffer uniforms"),
+            size: std::mem::size_of::<GBufferUniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        Self {
+            pipelines: [
+                pipeline(wgpu::CompareFunction::Less),
+                pipeline(wgpu::CompareFunction::Greater),
+            ],
+            layout,
+            uniforms,
+        }
+    }
+
+    /// Records the raster of `mesh` seen through `view_from_world` and `projection`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn encode(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &GpuMesh,
+        view_from_world: Mat4,
+        projection: &Projection,
+        target: &GBuffer,
+    ) {
+        let uniforms = GBufferUniforms {
+            clip_from_world: (projection.clip_from_view() * view_from_world).to_cols_array_2d(),
+            view_from_world: view_from_world.to_cols_array_2d(),
+            orthographic: if projection.is_orthographic() {
+                1.0
+            } else {
+                0.0
+            },
+            _pad: [0.0; 3],
+        };
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("gbuffer"),
+            layout: &self.layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: self.uniforms.as_entire_binding(),
+            }],
+        });
+        let normals = target.normals.create_view(&Default::default());
+        let albedo = target.albedo.create_view(&Default::default());
+        let depth = target.depth.create_view(&Default::default());
+        let color = |view| {
+            Some(wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })
+        };
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("gbuffer"),
+            color_attachments: &[color(&normals), color(&albedo)],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(projection.far_ndc_depth()),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&self.pipelines[usize::from(projection.reverse_z)]);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn uniforms_match_wgsl() {
+        let fields = aokit::field_offsets!(GBufferUniforms {
+            clip_from_world,
+            view_from_world,
+            orthographic,
+        });
+        aokit::shader::check_layout(
+            &shaders::GBUFFER,
+            "GBufferUniforms",
+            fields,
+            std::mem::size_of::<GBufferUniforms>(),
+        )
+        .unwrap();
+    }
+}

@@ -1,0 +1,147 @@
+//! Wavefront OBJ, with diffuse colours from its MTL file when there is one, and named cameras
+//! from a `<stem>-cameras.json` file beside it (the format of Sponza's in `shared/scenes`).
+
+use std::path::{Path, PathBuf};
+
+use glam::Vec3;
+use serde::Deserialize;
+
+use super::DEFAULT_ALBEDO;
+use crate::camera::{Camera, Lens};
+use crate::mesh::{Mesh, with_generated_normals};
+use crate::scene::{Scene, SceneError};
+
+/// Normals are smoothed across edges shallower than this when the file has none: curved
+/// surfaces come out smooth, architectural edges stay sharp.
+const CREASE_DEGREES: f32 = 35.0;
+
+/// Loads an OBJ file and its camera sidecar.
+pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let parse = |reason: String| SceneError::Parse {
+        path: path.to_path_buf(),
+        reason,
+    };
+    let options = tobj::LoadOptions {
+        triangulate: true,
+        single_index: true,
+        ignore_points: true,
+        ignore_lines: true,
+    };
+    let (models, materials) = tobj::load_obj(path, &options).map_err(|e| parse(e.to_string()))?;
+    let mut notes = Vec::new();
+    let materials = materials.unwrap_or_else(|e| {
+        notes.push(format!("materials not loaded ({e}); using grey albedo"));
+        Vec::new()
+    });
+    let mut mesh = Mesh::default();
+    let mut generated = false;
+    for model in &models {
+        let m = &model.mesh;
+        let positions: Vec<Vec3> = m
+            .positions
+            .chunks_exact(3)
+            .map(|p| Vec3::new(p[0], p[1], p[2]))
+            .collect();
+        let albedo = m
+            .material_id
+            .and_then(|id| materials.get(id))
+            .and_then(|mat| mat.diffuse)
+            .map(Vec3::from)
+            .unwrap_or(DEFAULT_ALBEDO);
+        let part = if m.normals.len() == m.positions.len() && !m.normals.is_empty() {
+            Mesh {
+                normals: m
+                    .normals
+                    .chunks_exact(3)
+                    .map(|n| Vec3::new(n[0], n[1], n[2]).normalize_or_zero())
+                    .collect(),
+                albedo: vec![albedo; positions.len()],
+                positions,
+                indices: m.indices.clone(),
+            }
+        } else {
+            generated = true;
+            with_generated_normals(&positions, &m.indices, albedo, CREASE_DEGREES)
+        };
+        part.validate().map_err(parse)?;
+        mesh.append(&part);
+    }
+    if generated {
+        notes.push(format!(
+            "the file has no normals: generated them, smooth across edges under {CREASE_DEGREES} degrees"
+        ));
+    }
+    if mesh.triangle_count() == 0 {
+        return Err(SceneError::Empty(path.to_path_buf()));
+    }
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let (cameras, radius) = match sidecar_path(path) {
+        Some(sidecar) => read_sidecar(&sidecar)?,
+        None => (Vec::new(), None),
+    };
+    let mut scene = Scene::new(&stem, mesh, cameras, radius);
+    scene.notes = notes;
+    Ok(scene)
+}
+
+fn sidecar_path(obj: &Path) -> Option<PathBuf> {
+    let stem = obj.file_stem()?.to_string_lossy();
+    let candidate = obj.with_file_name(format!("{stem}-cameras.json"));
+    candidate.exists().then_some(candidate)
+}
+
+#[derive(Deserialize)]
+struct Sidecar {
+    #[serde(default)]
+    suggested_ao_radius: Option<f32>,
+    #[serde(default)]
+    cameras: Vec<SidecarCamera>,
+}
+
+#[derive(Deserialize)]
+struct SidecarCamera {
+    name: String,
+    eye: [f32; 3],
+    target: [f32; 3],
+    #[serde(default = "default_up")]
+    up: [f32; 3],
+    fov_y_deg: f32,
+}
+
+fn default_up() -> [f32; 3] {
+    [0.0, 1.0, 0.0]
+}
+
+/// Reads named cameras and the suggested radius from a `<stem>-cameras.json` file.
+fn read_sidecar(path: &Path) -> Result<(Vec<Camera>, Option<f32>), SceneError> {
+    let parse = |reason: String| SceneError::Parse {
+        path: path.to_path_buf(),
+        reason,
+    };
+    let text = std::fs::read_to_string(path).map_err(|e| parse(e.to_string()))?;
+    let sidecar: Sidecar = serde_json::from_str(&text).map_err(|e| parse(e.to_string()))?;
+    let cameras = sidecar
+        .cameras
+        .into_iter()
+        .map(|c| {
+            let camera = Camera {
+                up: Vec3::from(c.up),
+                lens: Lens::Perspective {
+                    fov_y_deg: c.fov_y_deg,
+                },
+                ..Camera::perspective(
+                    &c.name,
+                    Vec3::from(c.eye),
+                    Vec3::from(c.target),
+                    c.fov_y_deg,
+                )
+            };
+            camera.validate().map_err(parse)?;
+            Ok(camera)
+        })
+        .collect::<Result<Vec<_>, SceneError>>()?;
+    Ok((cameras, sidecar.suggested_ao_radius))
+}

@@ -1,0 +1,197 @@
+//! Renders a scene through the AO pipeline and reads the results back.
+
+use aokit::gpu::{read_texture, read_texture_f32};
+use aokit::{AoError, AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, Projection};
+use glam::{Mat4, Vec3};
+
+use crate::camera::Camera;
+use crate::composite::{CompositePass, LIT_FORMAT, Lighting};
+use crate::gbuffer::{GBuffer, GBufferPass, GpuMesh};
+use crate::scene::Scene;
+
+/// One rendered view, on the CPU, row by row from the top-left pixel.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    /// Width and height in pixels.
+    pub size: [u32; 2],
+    /// The projection used.
+    pub projection: Projection,
+    /// The world-to-view transform used.
+    pub view_from_world: Mat4,
+    /// AO, 1 = unoccluded.
+    pub ao: Vec<f32>,
+    /// Lit image, RGBA8, sRGB-encoded.
+    pub lit: Vec<u8>,
+    /// Linear view depth, 0 where nothing was drawn.
+    pub linear_depth: Vec<f32>,
+    /// View-space unit normals, zero where nothing was drawn.
+    pub normals: Vec<Vec3>,
+}
+
+/// Why a frame could not be rendered.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    /// The resolution is empty or beyond the device.
+    #[error("resolution {width}x{height} is not usable: {reason}")]
+    Size {
+        /// Width asked for.
+        width: u32,
+        /// Height asked for.
+        height: u32,
+        /// Why not.
+        reason: String,
+    },
+    /// The camera is degenerate.
+    #[error("{0}")]
+    Camera(String),
+    /// The AO pipeline refused its inputs or settings.
+    #[error(transparent)]
+    Ao(#[from] AoError),
+    /// Reading back failed.
+    #[error(transparent)]
+    Gpu(#[from] GpuError),
+}
+
+/// A scene on the GPU with the passes to render it.
+pub struct Renderer {
+    mesh: GpuMesh,
+    bounds: crate::mesh::Bounds,
+    gbuffer_pass: GBufferPass,
+    composite: CompositePass,
+    ao: AoPipeline,
+    /// Lighting of the lit composite.
+    pub lighting: Lighting,
+}
+
+impl Renderer {
+    /// Uploads `scene` and compiles the passes for `settings`.
+    pub fn new(
+        gpu: &GpuContext,
+        scene: &Scene,
+        settings: &AoSettings,
+    ) -> Result<Self, RenderError> {
+        Ok(Self {
+            mesh: GpuMesh::new(&gpu.device, &scene.mesh),
+            bounds: scene.bounds,
+            gbuffer_pass: GBufferPass::new(&gpu.device),
+            composite: CompositePass::new(&gpu.device),
+            ao: AoPipeline::new(&gpu.device, &gpu.queue, settings)?,
+            lighting: Lighting::default(),
+        })
+    }
+
+    /// Changes the AO settings for later frames.
+    pub fn set_settings(
+        &mut self,
+        gpu: &GpuContext,
+        settings: &AoSettings,
+    ) -> Result<(), RenderError> {
+        Ok(self.ao.set_settings(&gpu.queue, settings)?)
+    }
+
+    /// The projection `camera` gets at `size`, near and far planes fitted to the scene.
+    pub fn projection(&self, camera: &Camera, size: [u32; 2]) -> Projection {
+        camera.projection(size[0] as f32 / size[1] as f32, &self.bounds)
+    }
+
+    /// Renders G-buffer, AO and lit image for `camera` at `size` and reads them back.
+    pub fn render(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        size: [u32; 2],
+        frame_index: u32,
+    ) -> Result<Frame, RenderError> {
+        let max = gpu.device.limits().max_texture_dimension_2d;
+        let [width, height] = size;
+        if width == 0 || height == 0 || width > max || height > max {
+            return Err(RenderError::Size {
+                width,
+                height,
+                reason: format!("each side must be between 1 and {max} pixels on this device"),
+            });
+        }
+        camera.validate().map_err(RenderError::Camera)?;
+        let projection = self.projection(camera, size);
+        projection
+            .validate()
+            .map_err(|e| RenderError::Camera(format!("camera `{}`: {e}", camera.name)))?;
+        let view_from_world = camera.view_from_world();
+        let (device, queue) = (&gpu.device, &gpu.queue);
+
+        let gbuffer = GBuffer::new(device, size);
+        let lit = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("lit"),
+            size: wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: LIT_FORMAT,
+            usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let mut encoder = device.create_command_encoder(&Default::default());
+        self.gbuffer_pass.encode(
+            device,
+            queue,
+            &mut encoder,
+            &self.mesh,
+            view_from_world,
+            &projection,
+            &gbuffer,
+        );
+        let outputs = self.ao.encode(
+            device,
+            queue,
+            &mut encoder,
+            &AoInputs {
+                depth: &gbuffer.depth,
+                normals: &gbuffer.normals,
+                projection,
+                frame_index,
+            },
+        )?;
+        self.composite.encode(
+            device,
+            queue,
+            &mut encoder,
+            &self.lighting,
+            view_from_world,
+            &gbuffer,
+            outputs.linear_depth,
+            outputs.ao,
+            &lit,
+        );
+        queue.submit([encoder.finish()]);
+
+        let ao = read_texture_f32(device, queue, outputs.ao)?;
+        let linear_depth = read_texture_f32(device, queue, outputs.linear_depth)?;
+        let lit = read_texture(device, queue, &lit)?;
+        let packed: Vec<u32> =
+            bytemuck::pod_collect_to_vec(&read_texture(device, queue, &gbuffer.normals)?);
+        let normals = packed
+            .iter()
+            .zip(&linear_depth)
+            .map(|(&bits, &depth)| {
+                if depth > 0.0 {
+                    aokit::normals::unpack_oct32(bits)
+                } else {
+                    Vec3::ZERO
+                }
+            })
+            .collect();
+        Ok(Frame {
+            size,
+            projection,
+            view_from_world,
+            ao,
+            lit,
+            linear_depth,
+            normals,
+        })
+    }
+}

@@ -1,0 +1,149 @@
+//! A scene: one world-space mesh, its cameras and a suggested AO radius.
+
+use std::path::{Path, PathBuf};
+
+use crate::builtin::Builtin;
+use crate::camera::Camera;
+use crate::load;
+use crate::mesh::{Bounds, Mesh};
+
+/// Everything the renderer and the reference tracer need to know about a scene.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// Built-in name or file stem.
+    pub name: String,
+    /// All geometry, flattened to world space.
+    pub mesh: Mesh,
+    /// Cameras from the file or the built-in, in order.
+    pub cameras: Vec<Camera>,
+    /// A radius in scene units that suits the scene's scale, if the scene names one.
+    pub suggested_radius: Option<f32>,
+    /// Bounds of the mesh.
+    pub bounds: Bounds,
+    /// Things the loader skipped or assumed, for the user to read.
+    pub notes: Vec<String>,
+}
+
+/// Why a scene could not be opened.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// Neither a built-in name nor an existing file.
+    #[error("unknown scene `{0}`: not a built-in ({builtins}) and no such file", builtins = builtin_names())]
+    Unknown(String),
+    /// The file extension is not one aokit reads.
+    #[error("cannot load `{}`: unsupported extension (expected .gltf, .glb or .obj)", .0.display())]
+    Extension(PathBuf),
+    /// The file could not be parsed.
+    #[error("cannot load `{}`: {reason}", path.display())]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// What went wrong.
+        reason: String,
+    },
+    /// The file holds no triangles.
+    #[error("`{}` contains no triangles", .0.display())]
+    Empty(PathBuf),
+    /// `--camera` named no camera of the scene.
+    #[error("scene `{scene}` has no camera `{wanted}` (cameras: {available})")]
+    NoCamera {
+        /// The scene's name.
+        scene: String,
+        /// What was asked for.
+        wanted: String,
+        /// Names and indices on offer.
+        available: String,
+    },
+}
+
+fn builtin_names() -> String {
+    Builtin::ALL.map(Builtin::name).join(", ")
+}
+
+impl Scene {
+    /// Assembles a scene; bounds come from the mesh.
+    ///
+    /// # Panics
+    /// If the mesh is empty: built-ins never are, and loaders check first.
+    pub fn new(
+        name: &str,
+        mesh: Mesh,
+        cameras: Vec<Camera>,
+        suggested_radius: Option<f32>,
+    ) -> Self {
+        let bounds = mesh.bounds().expect("scene mesh has vertices");
+        Self {
+            name: name.to_string(),
+            mesh,
+            cameras,
+            suggested_radius,
+            bounds,
+            notes: Vec::new(),
+        }
+    }
+
+    /// Opens a built-in by name (`room`, `stairs`, `thin`, `open`) or a `.gltf`, `.glb` or
+    /// `.obj` file by path.
+    ///
+    /// ```
+    /// let scene = aokit_scene::Scene::open("room").unwrap();
+    /// assert_eq!(scene.name, "room");
+    /// assert!(aokit_scene::Scene::open("no-such-scene").is_err());
+    /// ```
+    pub fn open(spec: &str) -> Result<Scene, SceneError> {
+        if let Some(builtin) = Builtin::from_name(spec) {
+            return Ok(builtin.build());
+        }
+        let path = Path::new(spec);
+        if !path.exists() {
+            return Err(SceneError::Unknown(spec.to_string()));
+        }
+        let extension = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        let scene = match extension.as_deref() {
+            Some("gltf" | "glb") => load::gltf::load(path)?,
+            Some("obj") => load::obj::load(path)?,
+            _ => return Err(SceneError::Extension(path.to_path_buf())),
+        };
+        if scene.mesh.triangle_count() == 0 {
+            return Err(SceneError::Empty(path.to_path_buf()));
+        }
+        Ok(scene)
+    }
+
+    /// Picks a camera by name or index; with `None`, the first camera, or a framing camera when
+    /// the scene has none.
+    pub fn camera(&self, selector: Option<&str>) -> Result<Camera, SceneError> {
+        let Some(wanted) = selector else {
+            return Ok(self
+                .cameras
+                .first()
+                .cloned()
+                .unwrap_or_else(|| Camera::framing(&self.bounds)));
+        };
+        let by_name = self.cameras.iter().find(|c| c.name == wanted);
+        let by_index = wanted
+            .parse::<usize>()
+            .ok()
+            .and_then(|i| self.cameras.get(i));
+        by_name
+            .or(by_index)
+            .cloned()
+            .ok_or_else(|| SceneError::NoCamera {
+                scene: self.name.clone(),
+                wanted: wanted.to_string(),
+                available: if self.cameras.is_empty() {
+                    "none; omit --camera for a framing camera or give --eye/--target".to_string()
+                } else {
+                    self.cameras
+                        .iter()
+                        .enumerate()
+                        .map(|(i, c)| format!("{i}: {}", c.name))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                },
+            })
+    }
+}

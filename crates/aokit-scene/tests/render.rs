@@ -1,0 +1,273 @@
+//! GPU tests on whatever adapter exists (lavapipe in CI), at small sizes.
+
+use aokit::{AoSettings, GpuContext, Preset, Projection};
+use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
+use glam::{Vec2, Vec3};
+
+const SIZE: [u32; 2] = [192, 128];
+
+fn gpu() -> GpuContext {
+    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
+}
+
+fn settings_for(scene: &Scene) -> AoSettings {
+    AoSettings {
+        radius: scene.suggested_radius.unwrap(),
+        ..AoSettings::preset(aokit::Method::Gtao, Preset::High)
+    }
+}
+
+fn render(gpu: &GpuContext, scene: &Scene, camera: &Camera) -> Frame {
+    let mut renderer = Renderer::new(gpu, scene, &settings_for(scene)).unwrap();
+    renderer.render(gpu, camera, SIZE, 0).unwrap()
+}
+
+/// Pixel index of a world point, checking that the point is the visible surface there.
+fn visible_pixel(frame: &Frame, world: Vec3) -> usize {
+    let view = frame.view_from_world.transform_point3(world);
+    let clip = frame.projection.clip_from_view() * view.extend(1.0);
+    let ndc = Vec2::new(clip.x, clip.y) / clip.w;
+    let size = Vec2::new(frame.size[0] as f32, frame.size[1] as f32);
+    let pixel = Vec2::new((ndc.x + 1.0) * 0.5, (1.0 - ndc.y) * 0.5) * size;
+    assert!(
+        pixel.cmpge(Vec2::ZERO).all() && pixel.cmplt(size).all(),
+        "{world} is off screen"
+    );
+    let index = pixel.y as usize * frame.size[0] as usize + pixel.x as usize;
+    let depth = frame.linear_depth[index];
+    assert!(
+        (depth + view.z).abs() < 0.02 * depth,
+        "{world} is hidden (depth {depth}, point {})",
+        -view.z
+    );
+    index
+}
+
+#[test]
+fn open_plane_is_unoccluded_everywhere() {
+    let gpu = gpu();
+    let scene = Builtin::Open.build();
+    for camera in &scene.cameras {
+        let frame = render(&gpu, &scene, camera);
+        let covered: Vec<f32> = frame
+            .ao
+            .iter()
+            .zip(&frame.linear_depth)
+            .filter(|&(_, &d)| d > 0.0)
+            .map(|(&ao, _)| ao)
+            .collect();
+        assert!(
+            covered.len() > frame.ao.len() / 3,
+            "the plane should fill much of the view"
+        );
+        let worst = covered.iter().copied().fold(1.0f32, f32::min);
+        assert!(
+            worst >= 0.98,
+            "camera {}: lowest AO on an open plane is {worst}",
+            camera.name
+        );
+    }
+}
+
+#[test]
+fn room_corners_are_darker_than_open_floor() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let frame = render(&gpu, &scene, &scene.cameras[0]);
+    let open_floor = frame.ao[visible_pixel(&frame, Vec3::new(-0.3, 0.0, 2.5))];
+    let corner = frame.ao[visible_pixel(&frame, Vec3::new(3.96, 0.04, -3.96))];
+    let wall_foot = frame.ao[visible_pixel(&frame, Vec3::new(0.0, 0.03, -3.97))];
+    let under_sphere = frame.ao[visible_pixel(&frame, Vec3::new(-1.5, 0.0, -0.75))];
+    assert!(open_floor > 0.95, "open floor AO {open_floor}");
+    for (name, ao) in [
+        ("corner", corner),
+        ("wall foot", wall_foot),
+        ("sphere contact", under_sphere),
+    ] {
+        assert!(
+            ao < open_floor - 0.2,
+            "{name} AO {ao} vs open floor {open_floor}"
+        );
+    }
+    assert!(
+        corner < wall_foot,
+        "a three-plane corner ({corner}) must be darker than an edge ({wall_foot})"
+    );
+}
+
+#[test]
+fn every_builtin_gives_finite_ao_in_range_and_a_lit_image() {
+    let gpu = gpu();
+    for builtin in Builtin::ALL {
+        let scene = builtin.build();
+        let frame = render(&gpu, &scene, &scene.cameras[0]);
+        assert!(
+            frame.ao.iter().all(|a| (0.0..=1.0).contains(a)),
+            "{}",
+            scene.name
+        );
+        assert_eq!(frame.lit.len(), (SIZE[0] * SIZE[1] * 4) as usize);
+        let covered = frame.linear_depth.iter().filter(|&&d| d > 0.0).count();
+        assert!(covered > 0, "{} drew nothing", scene.name);
+        let sky = frame.linear_depth.iter().position(|&d| d == 0.0);
+        if let Some(i) = sky {
+            assert_eq!(frame.ao[i], 1.0, "sky pixels are unoccluded");
+        }
+    }
+}
+
+/// Depth along each pixel's ray to the plane y = 0, computed on the CPU.
+fn plane_depths(frame: &Frame) -> Vec<Option<f32>> {
+    let world_from_view = frame.view_from_world.inverse();
+    let size = Vec2::new(frame.size[0] as f32, frame.size[1] as f32);
+    (0..frame.size[1])
+        .flat_map(|y| (0..frame.size[0]).map(move |x| Vec2::new(x as f32, y as f32)))
+        .map(|pixel| {
+            let ndc = aokit::projection::pixel_to_ndc(pixel, size);
+            let near = frame.projection.view_position_from_linear(ndc, 1.0);
+            let far = frame.projection.view_position_from_linear(ndc, 2.0);
+            let (a, b) = (
+                world_from_view.transform_point3(near),
+                world_from_view.transform_point3(far),
+            );
+            // Linear depth grows linearly along the ray from a (depth 1) to b (depth 2).
+            let t = a.y / (a.y - b.y);
+            let hit = a + t * (b - a);
+            (t > -1.0 && hit.x.abs() < 19.9 && hit.z.abs() < 19.9).then_some(1.0 + t)
+        })
+        .collect()
+}
+
+#[test]
+fn linear_depth_matches_ray_casts_for_every_depth_convention() {
+    let gpu = gpu();
+    let scene = Builtin::Open.build();
+    let base = scene.cameras[0].clone();
+    let variants = [
+        ("reverse-z infinite", Camera { ..base.clone() }),
+        (
+            "standard-z finite",
+            Camera {
+                far: Some(100.0),
+                reverse_z: false,
+                ..base.clone()
+            },
+        ),
+        (
+            "reverse-z finite",
+            Camera {
+                far: Some(100.0),
+                ..base.clone()
+            },
+        ),
+        (
+            "standard-z infinite",
+            Camera {
+                reverse_z: false,
+                near: Some(0.5),
+                ..base.clone()
+            },
+        ),
+        (
+            "orthographic",
+            Camera {
+                lens: Lens::Orthographic { height: 12.0 },
+                ..base.clone()
+            },
+        ),
+        (
+            "orthographic standard-z",
+            Camera {
+                lens: Lens::Orthographic { height: 12.0 },
+                reverse_z: false,
+                ..base.clone()
+            },
+        ),
+    ];
+    for (name, camera) in variants {
+        let frame = render(&gpu, &scene, &camera);
+        let expected = plane_depths(&frame);
+        let mut checked = 0;
+        for (i, want) in expected.iter().enumerate() {
+            let got = frame.linear_depth[i];
+            match want {
+                Some(want) => {
+                    assert!(
+                        (got - want).abs() <= 1e-3 * want,
+                        "{name}: pixel {i} depth {got}, ray {want}"
+                    );
+                    checked += 1;
+                }
+                None => assert!(
+                    got == 0.0 || got > 30.0,
+                    "{name}: pixel {i} should be sky, got {got}"
+                ),
+            }
+        }
+        assert!(checked > 1000, "{name}: only {checked} pixels on the plane");
+        let worst = frame.ao.iter().copied().fold(1.0f32, f32::min);
+        assert!(
+            worst >= 0.98,
+            "{name}: lowest AO on the open plane is {worst}"
+        );
+    }
+}
+
+#[test]
+fn ao_does_not_depend_on_the_depth_convention() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let base = scene.cameras[0].clone();
+    let reference = render(&gpu, &scene, &base);
+    let standard = render(
+        &gpu,
+        &scene,
+        &Camera {
+            far: Some(50.0),
+            reverse_z: false,
+            near: Some(0.1),
+            ..base
+        },
+    );
+    let mean_diff = reference
+        .ao
+        .iter()
+        .zip(&standard.ao)
+        .map(|(a, b)| (a - b).abs())
+        .sum::<f32>()
+        / reference.ao.len() as f32;
+    assert!(
+        mean_diff < 0.01,
+        "mean AO difference between depth conventions {mean_diff}"
+    );
+}
+
+#[test]
+fn bad_sizes_and_cameras_are_refused_with_a_reason() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let mut renderer = Renderer::new(&gpu, &scene, &settings_for(&scene)).unwrap();
+    let camera = scene.cameras[0].clone();
+    let err = renderer
+        .render(&gpu, &camera, [0, 10], 0)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("0x10"), "{err}");
+    let err = renderer
+        .render(&gpu, &camera, [100_000, 10], 0)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("100000x10"), "{err}");
+    let flat = Camera {
+        target: camera.eye,
+        ..camera
+    };
+    assert!(
+        renderer
+            .render(&gpu, &flat, SIZE, 0)
+            .unwrap_err()
+            .to_string()
+            .contains("same point")
+    );
+    let _ = Projection::perspective(1.0, 1.0, 0.1, None);
+}
