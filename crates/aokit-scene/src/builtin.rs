@@ -185,8 +185,8 @@ fn stairs() -> (Mesh, Vec<Camera>, f32) {
     let cameras = vec![
         Camera::perspective(
             "side",
-            Vec3::new(3.4, 2.7, 2.8),
-            Vec3::new(-0.3, 0.8, -3.0),
+            Vec3::new(2.5, 2.3, 0.6),
+            Vec3::new(-0.1, 0.8, -3.3),
             60.0,
         ),
         Camera::perspective(
@@ -258,7 +258,7 @@ fn thin() -> (Mesh, Vec<Camera>, f32) {
     let cameras = vec![
         Camera::perspective(
             "front",
-            Vec3::new(0.0, 1.6, 3.4),
+            Vec3::new(0.2, 1.4, 1.3),
             Vec3::new(0.0, 0.9, -3.0),
             60.0,
         ),

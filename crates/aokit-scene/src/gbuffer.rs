@@ -41,6 +41,32 @@ pub struct GpuMesh {
 }
 
 impl GpuMesh {
+    /// Vertex layout of all attributes: position, normal, albedo.
+    fn layout() -> wgpu::VertexBufferLayout<'static> {
+        const ATTRIBUTES: [wgpu::VertexAttribute; 3] =
+            wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3];
+        wgpu::VertexBufferLayout {
+            array_stride: std::mem::size_of::<GpuVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &ATTRIBUTES,
+        }
+    }
+
+    /// Vertex layout of the position alone, for depth-only passes.
+    pub(crate) fn position_layout() -> wgpu::VertexBufferLayout<'static> {
+        wgpu::VertexBufferLayout {
+            attributes: &Self::layout().attributes[..1],
+            ..Self::layout()
+        }
+    }
+
+    /// Binds the buffers and draws every triangle.
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..self.index_count, 0, 0..1);
+    }
+
     /// Uploads `mesh`.
     pub fn new(device: &wgpu::Device, mesh: &Mesh) -> Self {
         let vertices: Vec<GpuVertex> = (0..mesh.positions.len())
@@ -148,13 +174,7 @@ impl GBufferPass {
                     module: &module,
                     entry_point: Some("vs_main"),
                     compilation_options: Default::default(),
-                    buffers: &[Some(wgpu::VertexBufferLayout {
-                        array_stride: std::mem::size_of::<GpuVertex>() as u64,
-                        step_mode: wgpu::VertexStepMode::Vertex,
-                        attributes: &wgpu::vertex_attr_array![
-                            0 => Float32x3, 1 => Float32x3, 2 => Float32x3
-                        ],
-                    })],
+                    buffers: &[Some(GpuMesh::layout())],
                 },
                 primitive: wgpu::PrimitiveState {
                     // Both sides are drawn: scene files hold open sheets and mixed windings.
@@ -257,9 +277,7 @@ impl GBufferPass {
         });
         pass.set_pipeline(&self.pipelines[usize::from(projection.reverse_z)]);
         pass.set_bind_group(0, &bind_group, &[]);
-        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+        mesh.draw(&mut pass);
     }
 }
 

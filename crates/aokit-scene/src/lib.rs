@@ -25,6 +25,7 @@ pub mod mesh;
 pub mod renderer;
 pub mod scene;
 pub mod shaders;
+pub mod shadow;
 pub mod shapes;
 
 pub use builtin::Builtin;

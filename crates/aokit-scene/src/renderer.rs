@@ -5,9 +5,10 @@ use aokit::{AoError, AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, Pro
 use glam::{Mat4, Vec3};
 
 use crate::camera::Camera;
-use crate::composite::{CompositePass, LIT_FORMAT, Lighting};
+use crate::composite::{CompositePass, CompositeView, LIT_FORMAT, Lighting};
 use crate::gbuffer::{GBuffer, GBufferPass, GpuMesh};
 use crate::scene::Scene;
+use crate::shadow::{ShadowPass, SunView};
 
 /// One rendered view, on the CPU, row by row from the top-left pixel.
 #[derive(Clone, Debug)]
@@ -57,6 +58,7 @@ pub struct Renderer {
     mesh: GpuMesh,
     bounds: crate::mesh::Bounds,
     gbuffer_pass: GBufferPass,
+    shadow_pass: ShadowPass,
     composite: CompositePass,
     ao: AoPipeline,
     /// Lighting of the lit composite.
@@ -74,6 +76,7 @@ impl Renderer {
             mesh: GpuMesh::new(&gpu.device, &scene.mesh),
             bounds: scene.bounds,
             gbuffer_pass: GBufferPass::new(&gpu.device),
+            shadow_pass: ShadowPass::new(&gpu.device),
             composite: CompositePass::new(&gpu.device),
             ao: AoPipeline::new(&gpu.device, &gpu.queue, settings)?,
             lighting: Lighting::default(),
@@ -155,15 +158,22 @@ impl Renderer {
                 frame_index,
             },
         )?;
+        let sun = SunView::new(self.lighting.sun_direction, &self.bounds);
+        self.shadow_pass
+            .encode(device, queue, &mut encoder, &self.mesh, &sun);
         self.composite.encode(
             device,
             queue,
             &mut encoder,
             &self.lighting,
-            view_from_world,
+            &CompositeView {
+                projection: &projection,
+                view_from_world,
+                sun: &sun,
+            },
             &gbuffer,
-            outputs.linear_depth,
             outputs.ao,
+            &self.shadow_pass.map,
             &lit,
         );
         queue.submit([encoder.finish()]);

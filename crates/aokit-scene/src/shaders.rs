@@ -14,8 +14,14 @@ pub const COMPOSITE: ShaderSource = ShaderSource {
     parts: &[ENCODING, include_str!("../shaders/composite.wgsl")],
 };
 
+/// Sun shadow map.
+pub const SHADOW: ShaderSource = ShaderSource {
+    name: "shadow",
+    parts: &[include_str!("../shaders/shadow.wgsl")],
+};
+
 /// Every program of this crate.
-pub const ALL: &[ShaderSource] = &[GBUFFER, COMPOSITE];
+pub const ALL: &[ShaderSource] = &[GBUFFER, COMPOSITE, SHADOW];
 
 #[cfg(test)]
 mod tests {

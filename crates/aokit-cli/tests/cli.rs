@@ -1,0 +1,200 @@
+//! The `aokit` binary, run in fresh temporary directories.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn aokit(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_aokit"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("run aokit")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+fn read_exr_channel(path: &Path, name: &str) -> (Vec<f32>, [usize; 2]) {
+    use exr::prelude::*;
+    let image = read_all_flat_layers_from_file(path).unwrap();
+    let layer = &image.layer_data[0];
+    let channel = layer
+        .channel_data
+        .list
+        .iter()
+        .find(|c| c.name == Text::from(name))
+        .unwrap_or_else(|| panic!("{} has no channel {name}", path.display()));
+    let values = channel.sample_data.values_as_f32().collect();
+    (values, [layer.size.0, layer.size.1])
+}
+
+#[test]
+fn render_without_arguments_writes_the_default_scene_to_aokit_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit(dir.path(), &["render"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("aokit-out") && stdout.contains("room"),
+        "{stdout}"
+    );
+    for file in ["ao.png", "ao.exr", "lit.png"] {
+        assert!(
+            dir.path().join("aokit-out").join(file).is_file(),
+            "{file} missing"
+        );
+    }
+    let ao = image::open(dir.path().join("aokit-out/ao.png")).unwrap();
+    assert_eq!((ao.width(), ao.height()), (1280, 720));
+    assert_eq!(ao.color(), image::ColorType::L8);
+}
+
+#[test]
+fn gbuffer_export_writes_depth_normals_and_camera() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit(
+        dir.path(),
+        &[
+            "render",
+            "--scene",
+            "stairs",
+            "--size",
+            "96x64",
+            "--gbuffer",
+            "--out",
+            "g",
+            "--preset",
+            "low",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let g = dir.path().join("g");
+    let camera: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(g.join("camera.json")).unwrap()).unwrap();
+    assert_eq!(camera["width"], 96);
+    assert_eq!(camera["height"], 64);
+    assert_eq!(camera["projection"], "perspective");
+    assert_eq!(camera["reverse_z"], true);
+    assert!(camera["far"].is_null());
+    assert_eq!(camera["view_from_world"].as_array().unwrap().len(), 4);
+
+    let (depth, size) = read_exr_channel(&g.join("depth.exr"), "Z");
+    assert_eq!(size, [96, 64]);
+    assert!(depth.iter().all(|d| d.is_finite() && *d >= 0.0));
+    assert!(depth.iter().filter(|&&d| d > 0.0).count() > 96 * 64 / 2);
+    let (ao, _) = read_exr_channel(&g.join("ao.exr"), "Y");
+    assert!(ao.iter().all(|a| (0.0..=1.0).contains(a)));
+    let channels: Vec<Vec<f32>> = ["R", "G", "B"]
+        .iter()
+        .map(|c| read_exr_channel(&g.join("normal.exr"), c).0)
+        .collect();
+    let fov_y = (camera["fov_y_deg"].as_f64().unwrap() as f32).to_radians();
+    let tan_half = (0.5 * fov_y).tan();
+    for i in 0..depth.len() {
+        let n = [channels[0][i], channels[1][i], channels[2][i]];
+        let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        if depth[i] > 0.0 {
+            assert!(
+                (length - 1.0).abs() < 1e-3,
+                "pixel {i}: normal length {length}"
+            );
+            // Visible surfaces face the eye: the view position, camera looking down -Z, is
+            // (ndc.x * tan * aspect, ndc.y * tan, -1) * depth.
+            let (x, y) = ((i % 96) as f32 + 0.5, (i / 96) as f32 + 0.5);
+            let ndc = [x / 96.0 * 2.0 - 1.0, 1.0 - y / 64.0 * 2.0];
+            let to_eye = [-ndc[0] * tan_half * 1.5, -ndc[1] * tan_half, 1.0];
+            let facing = n[0] * to_eye[0] + n[1] * to_eye[1] + n[2] * to_eye[2];
+            assert!(
+                facing > 0.0,
+                "pixel {i}: normal {n:?} faces away from the eye"
+            );
+        } else {
+            assert_eq!(length, 0.0);
+        }
+    }
+}
+
+#[test]
+fn settings_flags_reach_the_pipeline() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("s.toml"), "intensity = 0.0\n").unwrap();
+    let out = aokit(
+        dir.path(),
+        &[
+            "render",
+            "--size",
+            "64x48",
+            "--settings",
+            "s.toml",
+            "--set",
+            "gtao.slice_count=2",
+            "--out",
+            "o",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let (ao, _) = read_exr_channel(&dir.path().join("o/ao.exr"), "Y");
+    assert!(
+        ao.iter().all(|&a| a == 1.0),
+        "intensity 0 must remove all occlusion"
+    );
+}
+
+#[test]
+fn bad_arguments_exit_2_and_name_the_problem() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("broken.obj"), "v 0 0 0\nf 1 2 3\n").unwrap();
+    std::fs::write(dir.path().join("broken.gltf"), "{ not json").unwrap();
+    std::fs::write(dir.path().join("bad.toml"), "radius = [").unwrap();
+    let cases: &[(&[&str], &str)] = &[
+        (&["render", "--size", "0x10"], "at least 1"),
+        (&["render", "--size", "big"], "WIDTHxHEIGHT"),
+        (&["render", "--scene", "nowhere"], "unknown scene"),
+        (&["render", "--scene", "broken.obj"], "broken.obj"),
+        (&["render", "--scene", "broken.gltf"], "broken.gltf"),
+        (&["render", "--camera", "nosuch"], "no camera `nosuch`"),
+        (&["render", "--method", "ssao9"], "ssao9"),
+        (&["render", "--set", "gtao.slices=3"], "gtao.slice_count"),
+        (&["render", "--set", "radius=0"], "radius"),
+        (&["render", "--settings", "missing.toml"], "missing.toml"),
+        (&["render", "--settings", "bad.toml"], "bad.toml"),
+        (
+            &["render", "--eye", "0,1,2", "--target", "0,1,2"],
+            "same point",
+        ),
+        (&["render", "--eye", "1,2"], "X,Y,Z"),
+        (&["render", "--size", "100000x10"], "100000x10"),
+        (&["frobnicate"], "frobnicate"),
+    ];
+    for (args, expected) in cases {
+        let out = aokit(dir.path(), args);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains(expected),
+            "{args:?}: expected `{expected}` in: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn a_machine_without_an_adapter_gets_an_install_hint() {
+    let dir = tempfile::tempdir().unwrap();
+    // Metal does not exist on Linux or Windows, so asking only for it finds no adapter.
+    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
+        .args(["render", "--size", "8x8"])
+        .env("WGPU_BACKEND", "metal")
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = text(&out.stderr);
+    if cfg!(target_os = "macos") {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("no GPU adapter") && stderr.contains("mesa-vulkan-drivers"),
+        "{stderr}"
+    );
+}

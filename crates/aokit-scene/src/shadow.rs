@@ -1,0 +1,219 @@
+//! The sun's shadow map for the lit composite: one orthographic depth view fitted to the scene.
+
+use aokit::Projection;
+use bytemuck::{Pod, Zeroable};
+use glam::{Mat4, Vec3};
+
+use crate::gbuffer::{DEPTH_FORMAT, GpuMesh};
+use crate::mesh::Bounds;
+use crate::shaders;
+
+/// Texels per side: about 2 cm per texel across Sponza's 37 m atrium.
+pub const SHADOW_MAP_SIZE: u32 = 2048;
+
+/// Mirrors `ShadowUniforms` in `shaders/shadow.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+struct ShadowUniforms {
+    light_clip_from_world: [[f32; 4]; 4],
+}
+
+/// Where the sun's view sits for a scene.
+#[derive(Clone, Copy, Debug)]
+pub struct SunView {
+    /// World to the shadow map's clip space (standard depth, near = 0).
+    pub light_clip_from_world: Mat4,
+    /// World-space width of one shadow-map texel, for the normal offset against acne.
+    pub texel_size: f32,
+}
+
+impl SunView {
+    /// An orthographic view along `-sun_direction` holding all of `bounds`.
+    pub fn new(sun_direction: Vec3, bounds: &Bounds) -> Self {
+        let radius = bounds.radius().max(1e-3);
+        let center = bounds.center();
+        let up = if sun_direction.normalize().y.abs() > 0.99 {
+            Vec3::Z
+        } else {
+            Vec3::Y
+        };
+        let eye = center + sun_direction.normalize() * 2.0 * radius;
+        let view = glam::camera::rh::view::look_at_mat4(eye, center, up);
+        let projection =
+            Projection::orthographic(2.0 * radius, 1.0, radius, 3.0 * radius).with_reverse_z(false);
+        Self {
+            light_clip_from_world: projection.clip_from_view() * view,
+            texel_size: 2.0 * radius / SHADOW_MAP_SIZE as f32,
+        }
+    }
+}
+
+/// Renders the shadow map.
+pub struct ShadowPass {
+    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+    uniforms: wgpu::Buffer,
+    /// The depth map, `SHADOW_MAP_SIZE` square.
+    pub map: wgpu::Texture,
+}
+
+impl ShadowPass {
+    /// Compiles the pass and allocates the map.
+    pub fn new(device: &wgpu::Device) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shadow"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("shadow"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let module = shaders::SHADOW.create_module(device);
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("shadow"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(GpuMesh::position_layout())],
+            },
+            primitive: Default::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                // Slope-scaled bias keeps lit surfaces from shadowing themselves at grazing sun.
+                bias: wgpu::DepthBiasState {
+                    constant: 2,
+                    slope_scale: 2.0,
+                    clamp: 0.0,
+                },
+            }),
+            multisample: Default::default(),
+            fragment: None,
+            multiview_mask: None,
+            cache: None,
+        });
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("shadow uniforms"),
+            size: std::mem::size_of::<ShadowUniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let map = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("shadow map"),
+            size: wgpu::Extent3d {
+                width: SHADOW_MAP_SIZE,
+                height: SHADOW_MAP_SIZE,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        });
+        Self {
+            pipeline,
+            layout,
+            uniforms,
+            map,
+        }
+    }
+
+    /// Records the shadow map of `mesh` seen from `sun`.
+    pub fn encode(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &GpuMesh,
+        sun: &SunView,
+    ) {
+        let uniforms = ShadowUniforms {
+            light_clip_from_world: sun.light_clip_from_world.to_cols_array_2d(),
+        };
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("shadow"),
+            layout: &self.layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: self.uniforms.as_entire_binding(),
+            }],
+        });
+        let view = self.map.create_view(&Default::default());
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("shadow"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        mesh.draw(&mut pass);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn uniforms_match_wgsl() {
+        let fields = aokit::field_offsets!(ShadowUniforms {
+            light_clip_from_world
+        });
+        aokit::shader::check_layout(
+            &shaders::SHADOW,
+            "ShadowUniforms",
+            fields,
+            std::mem::size_of::<ShadowUniforms>(),
+        )
+        .unwrap();
+    }
+
+    #[test]
+    fn the_sun_view_holds_the_whole_scene() {
+        let bounds = Bounds {
+            min: Vec3::new(-3.0, 0.0, -1.0),
+            max: Vec3::new(5.0, 2.0, 4.0),
+        };
+        let sun = SunView::new(Vec3::new(0.3, 1.0, 0.2), &bounds);
+        for i in 0..8 {
+            let corner = Vec3::select(
+                glam::BVec3::new(i & 1 == 0, i & 2 == 0, i & 4 == 0),
+                bounds.min,
+                bounds.max,
+            );
+            let clip = sun.light_clip_from_world * corner.extend(1.0);
+            assert!(
+                clip.x.abs() <= 1.0 && clip.y.abs() <= 1.0,
+                "{corner} -> {clip}"
+            );
+            assert!((0.0..=1.0).contains(&clip.z), "{corner} -> {clip}");
+        }
+    }
+}
