@@ -29,6 +29,9 @@ pub struct RenderArgs {
     /// Also write depth.exr, normal.exr and camera.json.
     #[arg(long)]
     pub gbuffer: bool,
+    /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
+    #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3)]
+    pub sun: Option<glam::Vec3>,
 }
 
 pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
@@ -68,6 +71,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     let settings = args.settings.resolve(scene.suggested_radius)?;
     let gpu = open_gpu()?;
     let mut renderer = Renderer::new(&gpu, &scene, &settings)?;
+    if let Some(sun) = args.sun {
+        if sun.length() < 1e-6 {
+            bail!("--sun {sun} has no direction");
+        }
+        renderer.lighting.sun_direction = sun.normalize();
+    }
     let frame = renderer.render(&gpu, &camera, args.size, 0)?;
     if frame.ao.iter().any(|v| !v.is_finite()) {
         bail!("the AO pass produced non-finite values: please report this with the command line");
@@ -108,5 +117,25 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         written.join(", "),
         out.display()
     );
+    println!("{}", ao_summary(&frame.ao, &frame.linear_depth));
     Ok(())
+}
+
+/// Mean and minimum AO over the pixels that show a surface.
+fn ao_summary(ao: &[f32], linear_depth: &[f32]) -> String {
+    let covered: Vec<f32> = ao
+        .iter()
+        .zip(linear_depth)
+        .filter(|&(_, &d)| d > 0.0)
+        .map(|(&a, _)| a)
+        .collect();
+    if covered.is_empty() {
+        return "no surface in view".to_string();
+    }
+    let mean = covered.iter().sum::<f32>() / covered.len() as f32;
+    let min = covered.iter().copied().fold(1.0f32, f32::min);
+    format!(
+        "AO over the {:.1}% of pixels showing a surface: mean {mean:.4}, min {min:.4}",
+        100.0 * covered.len() as f32 / ao.len() as f32
+    )
 }

@@ -23,7 +23,7 @@ fn read_exr_channel(path: &Path, name: &str) -> (Vec<f32>, [usize; 2]) {
         .channel_data
         .list
         .iter()
-        .find(|c| c.name == Text::from(name))
+        .find(|c| c.name == *name)
         .unwrap_or_else(|| panic!("{} has no channel {name}", path.display()));
     let values = channel.sample_data.values_as_f32().collect();
     (values, [layer.size.0, layer.size.1])

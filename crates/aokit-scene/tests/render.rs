@@ -47,25 +47,29 @@ fn visible_pixel(frame: &Frame, world: Vec3) -> usize {
 fn open_plane_is_unoccluded_everywhere() {
     let gpu = gpu();
     let scene = Builtin::Open.build();
-    for camera in &scene.cameras {
-        let frame = render(&gpu, &scene, camera);
-        let covered: Vec<f32> = frame
-            .ao
-            .iter()
-            .zip(&frame.linear_depth)
-            .filter(|&(_, &d)| d > 0.0)
-            .map(|(&ao, _)| ao)
-            .collect();
-        assert!(
-            covered.len() > frame.ao.len() / 3,
-            "the plane should fill much of the view"
-        );
-        let worst = covered.iter().copied().fold(1.0f32, f32::min);
-        assert!(
-            worst >= 0.98,
-            "camera {}: lowest AO on an open plane is {worst}",
-            camera.name
-        );
+    // Two sizes: sample positions, and with them the rounding cases, differ between them.
+    for size in [SIZE, [640, 360]] {
+        for camera in &scene.cameras {
+            let mut renderer = Renderer::new(&gpu, &scene, &settings_for(&scene)).unwrap();
+            let frame = renderer.render(&gpu, camera, size, 0).unwrap();
+            let covered: Vec<f32> = frame
+                .ao
+                .iter()
+                .zip(&frame.linear_depth)
+                .filter(|&(_, &d)| d > 0.0)
+                .map(|(&ao, _)| ao)
+                .collect();
+            assert!(
+                covered.len() > frame.ao.len() / 3,
+                "the plane should fill much of the view"
+            );
+            let worst = covered.iter().copied().fold(1.0f32, f32::min);
+            assert!(
+                worst >= 0.98,
+                "camera {} at {size:?}: lowest AO on an open plane is {worst}",
+                camera.name
+            );
+        }
     }
 }
 

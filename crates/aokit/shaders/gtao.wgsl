@@ -22,6 +22,7 @@ struct GtaoUniforms {
 @group(0) @binding(2) var linear_depth: texture_2d<f32>;
 @group(0) @binding(3) var normals: texture_2d<u32>;
 @group(0) @binding(4) var ao_out: texture_storage_2d<r32float, write>;
+@group(0) @binding(5) var point_clamp: sampler;
 
 const PI: f32 = 3.14159265;
 const HALF_PI: f32 = 1.57079633;
@@ -41,13 +42,51 @@ fn arc_integral(h: f32, n: f32) -> f32 {
     return 0.25 * (-cos(2.0 * h - n) + cos(n) + 2.0 * h * sin(n));
 }
 
-// Highest horizon cosine along one screen direction, starting from the normal hemisphere's edge.
+// Relative depth spread above which a 2x2 footprint is taken to straddle a depth edge. A plane
+// seen 2 degrees from grazing spreads about 10% per pixel at 60 degrees field of view.
+const DEPTH_EDGE: f32 = 0.1;
+
+// Offset from `p` to the surface seen at continuous pixel position `q`, placed in the slice
+// plane; w = 0 when there is no surface there.
 //
-// Samples are read at texel centres, which lie up to half a texel off the slice plane. On
-// surfaces seen at grazing angles that sideways step is long in view space and runs towards the
-// eye, so an open plane would occlude itself. Each sample is therefore slid within the pixel's
-// tangent plane until it lies in the slice: its height above the tangent plane, which is what
-// occludes, is kept, and samples on the plane itself land exactly on the tangent line.
+// A sample must lie in the slice: texel centres sit up to half a texel off it, and on surfaces
+// seen at grazing angles that sideways step is long in view space and runs towards the eye, so an
+// open plane would occlude itself. Inside one surface, 1 / depth (perspective) or depth
+// (orthographic) is affine in screen space across a plane, so interpolating it bilinearly at `q`
+// gives a point exactly on the slice. Across a depth edge interpolation would invent a surface
+// between foreground and background; there the nearest texel is read instead and slid within
+// the pixel's tangent plane into the slice, which keeps its height above that plane, the part
+// that occludes.
+fn slice_sample(q: vec2<f32>, p: vec3<f32>, axis: vec3<f32>, slide: vec3<f32>) -> vec4<f32> {
+    // The 2x2 texels around `q`, gathered at their shared corner: a coordinate there cannot
+    // round into a neighbouring footprint the way `q` itself can near texel centres, so `f`
+    // weights exactly the texels read. In the outermost half texel the footprint stays inside
+    // the image and `f` extrapolates, which is exact on a plane where clamping is not. Gather
+    // order: x = (left, bottom), y = (right, bottom), z = (right, top), w = (left, top), with
+    // "top" the smaller row index.
+    let corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
+    let depths = textureGather(0, linear_depth, point_clamp, corner * view.inv_size);
+    let f = q - 0.5 - (corner - 1.0);
+    let lowest = min(min(depths.x, depths.y), min(depths.z, depths.w));
+    let highest = max(max(depths.x, depths.y), max(depths.z, depths.w));
+    if lowest > 0.0 && highest <= lowest * (1.0 + DEPTH_EDGE) {
+        let ortho = view.orthographic > 0.5;
+        let w = select(1.0 / depths, depths, ortho);
+        let b = mix(mix(w.w, w.z, f.x), mix(w.x, w.y, f.x), f.y);
+        return vec4<f32>(view_position(q, select(1.0 / b, b, ortho)) - p, 1.0);
+    }
+    let right = f.x >= 0.5;
+    let bottom = f.y >= 0.5;
+    let depth = select(select(depths.w, depths.z, right), select(depths.x, depths.y, right), bottom);
+    if depth == NO_SURFACE {
+        return vec4<f32>(0.0);
+    }
+    let texel_center = corner + select(vec2<f32>(-0.5), vec2<f32>(0.5), vec2<bool>(right, bottom));
+    let off_slice = view_position(texel_center, depth) - p;
+    return vec4<f32>(off_slice - dot(off_slice, axis) * slide, 1.0);
+}
+
+// Highest horizon cosine along one screen direction, starting from the normal hemisphere's edge.
 fn search_horizon(center: vec2<f32>, p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, axis: vec3<f32>,
                   side: vec3<f32>, step_px: vec2<f32>, radius_px: f32, jitter: f32,
                   low_cos: f32) -> f32 {
@@ -57,27 +96,21 @@ fn search_horizon(center: vec2<f32>, p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, a
     // |n_p| = sqrt(1 - n_axis^2) of at most 0.03.
     let slide = (axis - n * n_axis) / max(1.0 - n_axis * n_axis, 1e-3);
     var horizon_cos = low_cos;
-    let size = vec2<i32>(view.size);
     for (var step = 0u; step < gtao.steps_per_side; step++) {
         // Quadratic spacing puts more samples near the pixel, where occluders matter most;
         // starting one pixel out keeps the centre pixel from sampling itself.
         let t = (f32(step) + jitter) / f32(gtao.steps_per_side);
-        let distance_px = 1.0 + t * t * (radius_px - 1.0);
-        let texel = vec2<i32>(floor(center + step_px * distance_px));
-        if any(texel < vec2<i32>(0)) || any(texel >= size) {
+        let q = center + step_px * (1.0 + t * t * (radius_px - 1.0));
+        if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
             break;
         }
-        let sample_depth = textureLoad(linear_depth, texel, 0).r;
-        if sample_depth == NO_SURFACE {
+        let sample = slice_sample(q, p, axis, slide);
+        // A slid sample can land past the pixel, on the other half of the slice, where it says
+        // nothing about this side's horizon.
+        if sample.w == 0.0 || dot(sample.xyz, side) <= 0.0 {
             continue;
         }
-        let off_slice = view_position(vec2<f32>(texel) + 0.5, sample_depth) - p;
-        let delta = off_slice - dot(off_slice, axis) * slide;
-        // A long slide can carry a near sample past the pixel to the other half of the slice,
-        // where it says nothing about this side's horizon.
-        if dot(delta, side) <= 0.0 {
-            continue;
-        }
+        let delta = sample.xyz;
         let distance = length(delta);
         let weight = saturate(distance * gtao.falloff_mul + gtao.falloff_add);
         let sample_cos = dot(delta, v) / distance;

@@ -12,6 +12,7 @@ pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 pub struct GtaoPass {
     kernel: ComputeKernel,
     uniforms: wgpu::Buffer,
+    point_clamp: wgpu::Sampler,
 }
 
 impl GtaoPass {
@@ -26,15 +27,25 @@ impl GtaoPass {
                 bind::texture(2, wgpu::TextureSampleType::Float { filterable: false }),
                 bind::texture(3, wgpu::TextureSampleType::Uint),
                 bind::storage_texture(4, AO_FORMAT),
+                bind::sampler(5, wgpu::SamplerBindingType::NonFiltering),
             ],
         );
+        // Only gathered, never filtered: clamping repeats edge depths instead of wrapping.
+        let point_clamp = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("gtao point clamp"),
+            ..Default::default()
+        });
         let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("gtao settings"),
             size: std::mem::size_of::<GtaoUniforms>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        Self { kernel, uniforms }
+        Self {
+            kernel,
+            uniforms,
+            point_clamp,
+        }
     }
 
     /// Uploads validated settings; they apply to every later `encode`.
@@ -67,6 +78,7 @@ impl GtaoPass {
                 wgpu::BindingResource::TextureView(linear_depth),
                 wgpu::BindingResource::TextureView(normals),
                 wgpu::BindingResource::TextureView(output),
+                wgpu::BindingResource::Sampler(&self.point_clamp),
             ],
             size,
         );

@@ -1,0 +1,172 @@
+//! Scene files: glTF and OBJ written here, and the Sponza shipped in `scenes/`.
+
+use std::path::{Path, PathBuf};
+
+use aokit::{AoSettings, GpuContext};
+use aokit_scene::{Lens, Renderer, Scene, SceneError};
+use glam::Vec3;
+
+fn open(path: &Path) -> Result<Scene, SceneError> {
+    Scene::open(path.to_str().unwrap())
+}
+
+fn sponza_path() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scenes/sponza.obj")
+}
+
+#[test]
+fn gltf_meshes_materials_transforms_and_cameras_load() {
+    let dir = tempfile::tempdir().unwrap();
+    let positions: [[f32; 3]; 4] = [
+        [-1.0, -1.0, 0.0],
+        [1.0, -1.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [-1.0, 1.0, 0.0],
+    ];
+    let indices: [u16; 6] = [0, 1, 2, 0, 2, 3];
+    let mut bin: Vec<u8> = bytemuck::cast_slice(&positions).to_vec();
+    bin.extend_from_slice(bytemuck::cast_slice(&indices));
+    std::fs::write(dir.path().join("quad.bin"), &bin).unwrap();
+    let json = format!(
+        r#"{{
+  "asset": {{"version": "2.0"}},
+  "scene": 0,
+  "scenes": [{{"nodes": [0, 1]}}],
+  "nodes": [
+    {{"mesh": 0, "translation": [0, 0, -5]}},
+    {{"camera": 0, "name": "cam", "translation": [0, 1, 3]}}
+  ],
+  "cameras": [{{"type": "perspective", "perspective": {{"yfov": 0.8, "znear": 0.1}}}}],
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "indices": 1, "material": 0}}]}}],
+  "materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [0.2, 0.4, 0.6, 1.0]}}}}],
+  "buffers": [{{"byteLength": {len}, "uri": "quad.bin"}}],
+  "bufferViews": [
+    {{"buffer": 0, "byteOffset": 0, "byteLength": 48}},
+    {{"buffer": 0, "byteOffset": 48, "byteLength": 12}}
+  ],
+  "accessors": [
+    {{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+      "min": [-1, -1, 0], "max": [1, 1, 0]}},
+    {{"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}}
+  ]
+}}"#,
+        len = bin.len()
+    );
+    let path = dir.path().join("quad.gltf");
+    std::fs::write(&path, json).unwrap();
+    let scene = open(&path).unwrap();
+    assert_eq!(scene.mesh.triangle_count(), 2);
+    assert!(scene.mesh.positions.iter().all(|p| p.z == -5.0));
+    assert!(
+        scene
+            .mesh
+            .normals
+            .iter()
+            .all(|n| (*n - Vec3::Z).length() < 1e-6)
+    );
+    assert!(
+        scene
+            .mesh
+            .albedo
+            .iter()
+            .all(|a| (*a - Vec3::new(0.2, 0.4, 0.6)).length() < 1e-6)
+    );
+    let camera = scene.camera(Some("cam")).unwrap();
+    assert_eq!(camera.eye, Vec3::new(0.0, 1.0, 3.0));
+    assert_eq!(camera.target, Vec3::new(0.0, 1.0, 2.0));
+    assert_eq!(
+        camera.lens,
+        Lens::Perspective {
+            fov_y_deg: 0.8f32.to_degrees()
+        }
+    );
+    assert_eq!(camera.near, Some(0.1));
+    assert_eq!(camera.far, None);
+
+    std::fs::remove_file(dir.path().join("quad.bin")).unwrap();
+    let err = open(&path).unwrap_err().to_string();
+    assert!(err.contains("quad.gltf"), "{err}");
+}
+
+#[test]
+fn obj_with_normals_and_a_camera_sidecar_loads() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("tri.obj");
+    std::fs::write(
+        &path,
+        "v 0 0 0\nv 1 0 0\nv 0 0 -1\nvn 0 1 0\nf 1//1 2//1 3//1\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("tri-cameras.json"),
+        r#"{"suggested_ao_radius": 0.25,
+            "cameras": [{"name": "top", "eye": [0, 5, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_y_deg": 40}]}"#,
+    )
+    .unwrap();
+    let scene = open(&path).unwrap();
+    assert_eq!(scene.mesh.triangle_count(), 1);
+    assert_eq!(scene.mesh.normals, vec![Vec3::Y; 3]);
+    assert_eq!(scene.suggested_radius, Some(0.25));
+    let camera = scene.camera(Some("0")).unwrap();
+    assert_eq!((camera.name.as_str(), camera.up), ("top", Vec3::NEG_Z));
+    let err = scene.camera(Some("side")).unwrap_err().to_string();
+    assert!(err.contains("0: top"), "{err}");
+
+    std::fs::write(
+        dir.path().join("tri-cameras.json"),
+        r#"{"cameras": [{"name": "x"}]}"#,
+    )
+    .unwrap();
+    let err = open(&path).unwrap_err().to_string();
+    assert!(err.contains("tri-cameras.json"), "{err}");
+}
+
+#[test]
+fn malformed_files_are_refused_with_their_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        ("bad.obj", "v 0 0 0\nf 1 2 3\n"),
+        ("empty.obj", "# nothing\n"),
+        ("bad.gltf", "{\"asset\": "),
+        ("bad.glb", "glTF but not really"),
+        ("notes.txt", "hello"),
+    ];
+    for (name, contents) in cases {
+        let path = dir.path().join(name);
+        std::fs::write(&path, contents).unwrap();
+        let err = open(&path).unwrap_err().to_string();
+        assert!(err.contains(name), "{name}: {err}");
+    }
+}
+
+#[test]
+fn sponza_loads_with_its_named_cameras_and_renders() {
+    let scene = open(&sponza_path()).unwrap();
+    assert_eq!(scene.mesh.triangle_count(), 279_163);
+    assert_eq!(scene.suggested_radius, Some(6.0));
+    let names: Vec<&str> = scene.cameras.iter().map(|c| c.name.as_str()).collect();
+    assert_eq!(names, ["atrium", "arcade", "gallery", "floor"]);
+
+    let gpu = GpuContext::headless().unwrap();
+    let settings = AoSettings {
+        radius: 6.0,
+        ..AoSettings::default()
+    };
+    let mut renderer = Renderer::new(&gpu, &scene, &settings).unwrap();
+    for camera in &scene.cameras {
+        let frame = renderer.render(&gpu, camera, [96, 64], 0).unwrap();
+        let covered = frame.linear_depth.iter().filter(|&&d| d > 0.0).count();
+        assert!(
+            covered > 96 * 64 * 9 / 10,
+            "{}: only {covered} pixels covered",
+            camera.name
+        );
+        assert!(
+            frame.ao.iter().all(|a| (0.0..=1.0).contains(a)),
+            "{}",
+            camera.name
+        );
+        let mean = frame.ao.iter().sum::<f32>() / frame.ao.len() as f32;
+        assert!(mean > 0.5 && mean < 0.99, "{}: mean AO {mean}", camera.name);
+    }
+}
