@@ -16,9 +16,9 @@ pub struct CameraArgs {
     /// Place the camera: point looked at.
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, requires = "eye")]
     pub target: Option<Vec3>,
-    /// Up direction for --eye/--target.
-    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, default_value = "0,1,0")]
-    pub up: Vec3,
+    /// Up direction (default: +Y for --eye/--target, the scene camera's otherwise).
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3)]
+    pub up: Option<Vec3>,
     /// Vertical field of view in degrees for --eye/--target, or to override the scene camera's.
     #[arg(long, value_name = "DEG")]
     pub fov_y: Option<f32>,
@@ -55,12 +55,14 @@ impl CameraArgs {
             bail!("give either --camera or --eye/--target, not both");
         }
         let mut camera = match (self.eye, self.target) {
-            (Some(eye), Some(target)) => Camera {
-                up: self.up,
-                ..Camera::perspective("command-line", eye, target, self.fov_y.unwrap_or(60.0))
-            },
+            (Some(eye), Some(target)) => {
+                Camera::perspective("command-line", eye, target, self.fov_y.unwrap_or(60.0))
+            }
             _ => scene.camera(self.camera.as_deref())?,
         };
+        if let Some(up) = self.up {
+            camera.up = up;
+        }
         if let Some(fov_y_deg) = self.fov_y {
             camera.lens = Lens::Perspective { fov_y_deg };
         }
