@@ -29,20 +29,8 @@ pub struct SettingsArgs {
 impl SettingsArgs {
     /// Preset, then the scene's radius, then the file, then `--radius`, then each `--set`.
     pub fn resolve(&self, suggested_radius: Option<f32>) -> Result<AoSettings> {
-        let method: Method = self
-            .method
-            .as_deref()
-            .map(str::parse)
-            .transpose()
-            .map_err(|e: String| anyhow!(e))?
-            .unwrap_or_default();
-        let preset: Preset = self
-            .preset
-            .as_deref()
-            .map(str::parse)
-            .transpose()
-            .map_err(|e: String| anyhow!(e))?
-            .unwrap_or_default();
+        let method: Method = parse_or_default(self.method.as_deref())?;
+        let preset: Preset = parse_or_default(self.preset.as_deref())?;
         let mut settings = AoSettings::preset(method, preset);
         if let Some(radius) = suggested_radius {
             settings.radius = radius;
@@ -67,6 +55,13 @@ impl SettingsArgs {
         settings.validate()?;
         Ok(settings)
     }
+}
+
+fn parse_or_default<T: std::str::FromStr<Err = String> + Default>(name: Option<&str>) -> Result<T> {
+    name.map_or_else(
+        || Ok(T::default()),
+        |n| n.parse().map_err(|e: String| anyhow!(e)),
+    )
 }
 
 fn to_table(settings: &AoSettings) -> Result<toml::Table> {

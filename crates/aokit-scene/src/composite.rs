@@ -1,6 +1,7 @@
 //! The lit composite: albedo x (ambient x AO + direct sunlight).
 
 use aokit::Projection;
+use aokit::gpu::create_uniform_buffer;
 use aokit::passes::{ComputeKernel, bind};
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat4, Vec3};
@@ -96,12 +97,7 @@ impl CompositePass {
             compare: Some(wgpu::CompareFunction::LessEqual),
             ..Default::default()
         });
-        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("composite uniforms"),
-            size: std::mem::size_of::<CompositeUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let uniforms = create_uniform_buffer::<CompositeUniforms>(device, "composite uniforms");
         Self {
             kernel,
             uniforms,

@@ -1,12 +1,14 @@
 //! The G-buffer raster pass: depth (D32F), oct32 view-space normals and albedo. No MSAA.
 
 use aokit::Projection;
+use aokit::gpu::create_texture_2d;
 use bytemuck::{Pod, Zeroable};
 use glam::Mat4;
 use wgpu::util::DeviceExt;
 
 use crate::mesh::Mesh;
 use crate::shaders;
+use crate::uniform_block::UniformBlock;
 
 /// Depth format of the G-buffer.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
@@ -109,24 +111,10 @@ pub struct GBuffer {
 impl GBuffer {
     /// Allocates the targets.
     pub fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
-        let make = |label, format| {
-            device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(label),
-                size: wgpu::Extent3d {
-                    width: size[0],
-                    height: size[1],
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                    | wgpu::TextureUsages::TEXTURE_BINDING
-                    | wgpu::TextureUsages::COPY_SRC,
-                view_formats: &[],
-            })
-        };
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
+        let make = |label, format| create_texture_2d(device, label, size, format, usage);
         Self {
             size,
             depth: make("gbuffer depth", DEPTH_FORMAT),
@@ -140,31 +128,14 @@ impl GBuffer {
 pub struct GBufferPass {
     /// Pipelines for standard (`[0]`) and reverse-Z (`[1]`) depth tests.
     pipelines: [wgpu::RenderPipeline; 2],
-    layout: wgpu::BindGroupLayout,
-    uniforms: wgpu::Buffer,
+    uniforms: UniformBlock<GBufferUniforms>,
 }
 
 impl GBufferPass {
     /// Compiles the pass.
     pub fn new(device: &wgpu::Device) -> Self {
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("gbuffer"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("gbuffer"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
+        let uniforms = UniformBlock::new(device, "gbuffer", wgpu::ShaderStages::VERTEX_FRAGMENT);
+        let pipeline_layout = uniforms.pipeline_layout(device, "gbuffer");
         let module = shaders::GBUFFER.create_module(device);
         let pipeline = |compare| {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -199,27 +170,18 @@ impl GBufferPass {
                 cache: None,
             })
         };
-        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("gbuffer uniforms"),
-            size: std::mem::size_of::<GBufferUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
         Self {
             pipelines: [
                 pipeline(wgpu::CompareFunction::Less),
                 pipeline(wgpu::CompareFunction::Greater),
             ],
-            layout,
             uniforms,
         }
     }
 
     /// Records the raster of `mesh` seen through `view_from_world` and `projection`.
-    #[allow(clippy::too_many_arguments)]
     pub fn encode(
         &self,
-        device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
         mesh: &GpuMesh,
@@ -237,15 +199,7 @@ impl GBufferPass {
             },
             _pad: [0.0; 3],
         };
-        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("gbuffer"),
-            layout: &self.layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: self.uniforms.as_entire_binding(),
-            }],
-        });
+        self.uniforms.write(queue, &uniforms);
         let normals = target.normals.create_view(&Default::default());
         let albedo = target.albedo.create_view(&Default::default());
         let depth = target.depth.create_view(&Default::default());
@@ -276,7 +230,7 @@ impl GBufferPass {
             multiview_mask: None,
         });
         pass.set_pipeline(&self.pipelines[usize::from(projection.reverse_z)]);
-        pass.set_bind_group(0, &bind_group, &[]);
+        pass.set_bind_group(0, self.uniforms.bind_group(), &[]);
         mesh.draw(&mut pass);
     }
 }

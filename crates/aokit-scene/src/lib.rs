@@ -27,6 +27,7 @@ pub mod scene;
 pub mod shaders;
 pub mod shadow;
 pub mod shapes;
+mod uniform_block;
 
 pub use builtin::Builtin;
 pub use camera::{Camera, CameraFile, Lens};

@@ -1,6 +1,6 @@
 //! Renders a scene through the AO pipeline and reads the results back.
 
-use aokit::gpu::{read_texture, read_texture_f32};
+use aokit::gpu::{create_texture_2d, read_texture, read_texture_f32};
 use aokit::{AoError, AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, Projection};
 use glam::{Mat4, Vec3};
 
@@ -123,23 +123,15 @@ impl Renderer {
         let (device, queue) = (&gpu.device, &gpu.queue);
 
         let gbuffer = GBuffer::new(device, size);
-        let lit = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("lit"),
-            size: wgpu::Extent3d {
-                width,
-                height,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: LIT_FORMAT,
-            usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
+        let lit = create_texture_2d(
+            device,
+            "lit",
+            size,
+            LIT_FORMAT,
+            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+        );
         let mut encoder = device.create_command_encoder(&Default::default());
         self.gbuffer_pass.encode(
-            device,
             queue,
             &mut encoder,
             &self.mesh,
@@ -160,7 +152,7 @@ impl Renderer {
         )?;
         let sun = SunView::new(self.lighting.sun_direction, &self.bounds);
         self.shadow_pass
-            .encode(device, queue, &mut encoder, &self.mesh, &sun);
+            .encode(queue, &mut encoder, &self.mesh, &sun);
         self.composite.encode(
             device,
             queue,

@@ -1,12 +1,14 @@
 //! The sun's shadow map for the lit composite: one orthographic depth view fitted to the scene.
 
 use aokit::Projection;
+use aokit::gpu::create_texture_2d;
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat4, Vec3};
 
 use crate::gbuffer::{DEPTH_FORMAT, GpuMesh};
 use crate::mesh::Bounds;
 use crate::shaders;
+use crate::uniform_block::UniformBlock;
 
 /// Texels per side: about 2 cm per texel across Sponza's 37 m atrium.
 pub const SHADOW_MAP_SIZE: u32 = 2048;
@@ -51,8 +53,7 @@ impl SunView {
 /// Renders the shadow map.
 pub struct ShadowPass {
     pipeline: wgpu::RenderPipeline,
-    layout: wgpu::BindGroupLayout,
-    uniforms: wgpu::Buffer,
+    uniforms: UniformBlock<ShadowUniforms>,
     /// The depth map, `SHADOW_MAP_SIZE` square.
     pub map: wgpu::Texture,
 }
@@ -60,24 +61,8 @@ pub struct ShadowPass {
 impl ShadowPass {
     /// Compiles the pass and allocates the map.
     pub fn new(device: &wgpu::Device) -> Self {
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("shadow"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("shadow"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
+        let uniforms = UniformBlock::new(device, "shadow", wgpu::ShaderStages::VERTEX);
+        let pipeline_layout = uniforms.pipeline_layout(device, "shadow");
         let module = shaders::SHADOW.create_module(device);
         let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("shadow"),
@@ -106,29 +91,15 @@ impl ShadowPass {
             multiview_mask: None,
             cache: None,
         });
-        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("shadow uniforms"),
-            size: std::mem::size_of::<ShadowUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let map = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("shadow map"),
-            size: wgpu::Extent3d {
-                width: SHADOW_MAP_SIZE,
-                height: SHADOW_MAP_SIZE,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: DEPTH_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
-        });
+        let map = create_texture_2d(
+            device,
+            "shadow map",
+            [SHADOW_MAP_SIZE; 2],
+            DEPTH_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+        );
         Self {
             pipeline,
-            layout,
             uniforms,
             map,
         }
@@ -137,7 +108,6 @@ impl ShadowPass {
     /// Records the shadow map of `mesh` seen from `sun`.
     pub fn encode(
         &self,
-        device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
         mesh: &GpuMesh,
@@ -146,15 +116,7 @@ impl ShadowPass {
         let uniforms = ShadowUniforms {
             light_clip_from_world: sun.light_clip_from_world.to_cols_array_2d(),
         };
-        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("shadow"),
-            layout: &self.layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: self.uniforms.as_entire_binding(),
-            }],
-        });
+        self.uniforms.write(queue, &uniforms);
         let view = self.map.create_view(&Default::default());
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadow"),
@@ -172,7 +134,7 @@ impl ShadowPass {
             multiview_mask: None,
         });
         pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &bind_group, &[]);
+        pass.set_bind_group(0, self.uniforms.bind_group(), &[]);
         mesh.draw(&mut pass);
     }
 }

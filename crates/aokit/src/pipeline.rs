@@ -1,6 +1,7 @@
 //! [`AoPipeline`]: owns the passes and the intermediate textures, and wires them per frame.
 
 use crate::error::AoError;
+use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
 use crate::passes::gtao::{AO_FORMAT, GtaoPass};
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
@@ -18,24 +19,10 @@ struct Targets {
 
 impl Targets {
     fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
-        let make = |label, format| {
-            device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(label),
-                size: wgpu::Extent3d {
-                    width: size[0],
-                    height: size[1],
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage: wgpu::TextureUsages::STORAGE_BINDING
-                    | wgpu::TextureUsages::TEXTURE_BINDING
-                    | wgpu::TextureUsages::COPY_SRC,
-                view_formats: &[],
-            })
-        };
+        let usage = wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
+        let make = |label, format| create_texture_2d(device, label, size, format, usage);
         let linear_depth = make("aokit linear depth", LINEAR_DEPTH_FORMAT);
         let ao = make("aokit ao", AO_FORMAT);
         Self {
@@ -91,12 +78,7 @@ impl AoPipeline {
         settings: &AoSettings,
     ) -> Result<Self, AoError> {
         settings.validate()?;
-        let view_uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("aokit view"),
-            size: std::mem::size_of::<ViewUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let view_uniforms = create_uniform_buffer::<ViewUniforms>(device, "aokit view");
         let pipeline = Self {
             settings: *settings,
             view_uniforms,

@@ -29,15 +29,7 @@ impl Method {
 impl std::str::FromStr for Method {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {
-        Method::ALL
-            .into_iter()
-            .find(|m| m.name() == s)
-            .ok_or_else(|| {
-                format!(
-                    "unknown method `{s}` (known: {})",
-                    names(Method::ALL.map(Method::name))
-                )
-            })
+        find_by_name(&Method::ALL, Method::name, "method", s)
     }
 }
 
@@ -74,20 +66,24 @@ impl Preset {
 impl std::str::FromStr for Preset {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, String> {
-        Preset::ALL
-            .into_iter()
-            .find(|p| p.name() == s)
-            .ok_or_else(|| {
-                format!(
-                    "unknown preset `{s}` (known: {})",
-                    names(Preset::ALL.map(Preset::name))
-                )
-            })
+        find_by_name(&Preset::ALL, Preset::name, "preset", s)
     }
 }
 
-fn names<const N: usize>(list: [&str; N]) -> String {
-    list.join(", ")
+/// The member of `all` called `wanted`, or an error listing the names on offer.
+fn find_by_name<T: Copy>(
+    all: &[T],
+    name: fn(T) -> &'static str,
+    what: &str,
+    wanted: &str,
+) -> Result<T, String> {
+    all.iter()
+        .copied()
+        .find(|&t| name(t) == wanted)
+        .ok_or_else(|| {
+            let known: Vec<&str> = all.iter().map(|&t| name(t)).collect();
+            format!("unknown {what} `{wanted}` (known: {})", known.join(", "))
+        })
 }
 
 /// GTAO-specific sampling counts.

@@ -1,6 +1,7 @@
 //! The GTAO kernel: linear depth and normals in, AO out.
 
 use super::{ComputeKernel, bind};
+use crate::gpu::create_uniform_buffer;
 use crate::settings::AoSettings;
 use crate::shader;
 use crate::uniforms::GtaoUniforms;
@@ -35,12 +36,7 @@ impl GtaoPass {
             label: Some("gtao point clamp"),
             ..Default::default()
         });
-        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("gtao settings"),
-            size: std::mem::size_of::<GtaoUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let uniforms = create_uniform_buffer::<GtaoUniforms>(device, "gtao settings");
         Self {
             kernel,
             uniforms,
