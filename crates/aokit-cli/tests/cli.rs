@@ -179,6 +179,23 @@ fn bad_arguments_exit_2_and_name_the_problem() {
 }
 
 #[test]
+fn an_adapter_name_that_matches_nothing_lists_the_adapters() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
+        .args(["render", "--size", "8x8"])
+        .env("WGPU_ADAPTER_NAME", "no-such-gpu-9000")
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("no-such-gpu-9000") && stderr.contains("found:"),
+        "{stderr}"
+    );
+}
+
+#[test]
 fn a_machine_without_an_adapter_gets_an_install_hint() {
     let dir = tempfile::tempdir().unwrap();
     // Metal does not exist on Linux or Windows, so asking only for it finds no adapter.

@@ -31,4 +31,19 @@ mod tests {
             shader.validate().unwrap_or_else(|e| panic!("{e}"));
         }
     }
+
+    #[test]
+    fn every_wgsl_file_is_part_of_a_validated_program() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let name = entry.unwrap().file_name().into_string().unwrap();
+            let pass = name
+                .strip_suffix(".wgsl")
+                .expect("only WGSL files in shaders/");
+            assert!(
+                super::ALL.iter().any(|s| s.name == pass),
+                "shaders/{name} is not in shaders::ALL, so nothing validates it"
+            );
+        }
+    }
 }

@@ -136,4 +136,25 @@ mod tests {
             shader.validate().unwrap_or_else(|e| panic!("{e}"));
         }
     }
+
+    #[test]
+    fn every_wgsl_file_is_part_of_a_validated_program() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
+        let passes: Vec<String> = std::fs::read_dir(&dir)
+            .unwrap()
+            .filter_map(|e| e.ok()?.file_name().into_string().ok())
+            .filter_map(|name| name.strip_suffix(".wgsl").map(str::to_string))
+            .collect();
+        assert!(!passes.is_empty());
+        for pass in passes {
+            assert!(
+                ALL.iter().any(|s| s.name == pass),
+                "shaders/{pass}.wgsl is not in shader::ALL, so nothing validates it"
+            );
+        }
+        for snippet in [VIEW, ENCODING, NOISE] {
+            assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
+        }
+        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 3);
+    }
 }
