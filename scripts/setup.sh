@@ -18,7 +18,11 @@ if ! command -v cargo >/dev/null 2>&1; then
 fi
 
 has_vulkan_driver() {
-    ls /usr/share/vulkan/icd.d/*.json /etc/vulkan/icd.d/*.json >/dev/null 2>&1
+    local icd
+    for icd in /usr/share/vulkan/icd.d/*.json /etc/vulkan/icd.d/*.json; do
+        [ -e "$icd" ] && return 0
+    done
+    return 1
 }
 if ! has_vulkan_driver; then
     if command -v apt-get >/dev/null 2>&1; then
