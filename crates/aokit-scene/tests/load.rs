@@ -27,8 +27,9 @@ fn gltf_meshes_materials_transforms_and_cameras_load() {
     let mut bin: Vec<u8> = bytemuck::cast_slice(&positions).to_vec();
     bin.extend_from_slice(bytemuck::cast_slice(&indices));
     std::fs::write(dir.path().join("quad.bin"), &bin).unwrap();
-    let json = format!(
-        r#"{{
+    let gltf_json = |buffer: &str| {
+        format!(
+            r#"{{
   "asset": {{"version": "2.0"}},
   "scene": 0,
   "scenes": [{{"nodes": [0, 1]}}],
@@ -39,7 +40,7 @@ fn gltf_meshes_materials_transforms_and_cameras_load() {
   "cameras": [{{"type": "perspective", "perspective": {{"yfov": 0.8, "znear": 0.1}}}}],
   "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "indices": 1, "material": 0}}]}}],
   "materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [0.2, 0.4, 0.6, 1.0]}}}}],
-  "buffers": [{{"byteLength": {len}, "uri": "quad.bin"}}],
+  "buffers": [{buffer}],
   "bufferViews": [
     {{"buffer": 0, "byteOffset": 0, "byteLength": 48}},
     {{"buffer": 0, "byteOffset": 48, "byteLength": 12}}
@@ -49,11 +50,19 @@ fn gltf_meshes_materials_transforms_and_cameras_load() {
       "min": [-1, -1, 0], "max": [1, 1, 0]}},
     {{"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}}
   ]
-}}"#,
-        len = bin.len()
-    );
+}}"#
+        )
+    };
     let path = dir.path().join("quad.gltf");
-    std::fs::write(&path, json).unwrap();
+    let external = format!(r#"{{"byteLength": {}, "uri": "quad.bin"}}"#, bin.len());
+    std::fs::write(&path, gltf_json(&external)).unwrap();
+    let glb_path = dir.path().join("quad.glb");
+    let embedded = format!(r#"{{"byteLength": {}}}"#, bin.len());
+    std::fs::write(&glb_path, glb(&gltf_json(&embedded), &bin)).unwrap();
+    assert_eq!(
+        open(&glb_path).unwrap().mesh.positions,
+        open(&path).unwrap().mesh.positions
+    );
     let scene = open(&path).unwrap();
     assert_eq!(scene.mesh.triangle_count(), 2);
     assert!(scene.mesh.positions.iter().all(|p| p.z == -5.0));
@@ -86,6 +95,26 @@ fn gltf_meshes_materials_transforms_and_cameras_load() {
     std::fs::remove_file(dir.path().join("quad.bin")).unwrap();
     let err = open(&path).unwrap_err().to_string();
     assert!(err.contains("quad.gltf"), "{err}");
+}
+
+/// A binary glTF: header, JSON chunk padded with spaces, BIN chunk padded with zeros.
+fn glb(json: &str, bin: &[u8]) -> Vec<u8> {
+    let mut json = json.as_bytes().to_vec();
+    json.resize(json.len().next_multiple_of(4), b' ');
+    let mut bin = bin.to_vec();
+    bin.resize(bin.len().next_multiple_of(4), 0);
+    let total = 12 + 8 + json.len() + 8 + bin.len();
+    let mut out = Vec::with_capacity(total);
+    out.extend_from_slice(b"glTF");
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&(total as u32).to_le_bytes());
+    out.extend_from_slice(&(json.len() as u32).to_le_bytes());
+    out.extend_from_slice(b"JSON");
+    out.extend_from_slice(&json);
+    out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
+    out.extend_from_slice(b"BIN\0");
+    out.extend_from_slice(&bin);
+    out
 }
 
 #[test]
