@@ -170,6 +170,7 @@ impl CompositePass {
                 wgpu::BindingResource::TextureView(&output),
             ],
             gbuffer.size,
+            None,
         );
     }
 }

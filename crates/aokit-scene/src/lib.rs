@@ -19,6 +19,7 @@
 pub mod builtin;
 pub mod camera;
 pub mod composite;
+pub mod external;
 pub mod gbuffer;
 pub mod load;
 pub mod mesh;

@@ -145,7 +145,7 @@ impl Renderer {
             &mut encoder,
             &AoInputs {
                 depth: &gbuffer.depth,
-                normals: &gbuffer.normals,
+                normals: Some(&gbuffer.normals),
                 projection,
                 frame_index,
             },

@@ -1,6 +1,7 @@
 //! GPU tests on whatever adapter exists (lavapipe in CI), at small sizes.
 
 use aokit::{AoSettings, GpuContext, Preset, Projection};
+use aokit_scene::external::{self, Passes};
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
 use glam::{Vec2, Vec3};
 
@@ -274,4 +275,138 @@ fn bad_sizes_and_cameras_are_refused_with_a_reason() {
             .contains("same point")
     );
     let _ = Projection::perspective(1.0, 1.0, 0.1, None);
+}
+
+#[test]
+fn passes_from_the_cpu_give_the_same_ao_as_the_raster() {
+    let gpu = gpu();
+    for builtin in [Builtin::Room, Builtin::Thin] {
+        let scene = builtin.build();
+        let frame = render(&gpu, &scene, &scene.cameras[0]);
+        let passes = Passes {
+            size: frame.size,
+            linear_depth: &frame.linear_depth,
+            normals: Some(&frame.normals),
+            projection: frame.projection,
+        };
+        let ao = external::ambient_occlusion(&gpu, &settings_for(&scene), &passes, 0).unwrap();
+        let worst = ao
+            .iter()
+            .zip(&frame.ao)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0f32, f32::max);
+        assert!(
+            worst < 1e-5,
+            "{}: AO from uploaded passes differs by up to {worst}",
+            scene.name
+        );
+    }
+}
+
+/// Reconstructs normals from the frame's depth and reads them back.
+fn reconstructed_normals(gpu: &GpuContext, frame: &Frame) -> Vec<Vec3> {
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let depth = aokit::gpu::upload_texture_2d(
+        device,
+        queue,
+        "depth",
+        frame.size,
+        wgpu::TextureFormat::R32Float,
+        bytemuck::cast_slice(&frame.linear_depth),
+    )
+    .unwrap();
+    let mut pipeline = aokit::AoPipeline::new(device, queue, &AoSettings::default()).unwrap();
+    let mut encoder = device.create_command_encoder(&Default::default());
+    let outputs = pipeline
+        .encode(
+            device,
+            queue,
+            &mut encoder,
+            &aokit::AoInputs {
+                depth: &depth,
+                normals: None,
+                projection: frame.projection,
+                frame_index: 0,
+            },
+        )
+        .unwrap();
+    queue.submit([encoder.finish()]);
+    let texture = outputs
+        .reconstructed_normals
+        .expect("normals were reconstructed");
+    let bytes = aokit::gpu::read_texture(device, queue, texture).unwrap();
+    bytemuck::pod_collect_to_vec::<u8, u32>(&bytes)
+        .into_iter()
+        .map(aokit::normals::unpack_oct32)
+        .collect()
+}
+
+#[test]
+fn normals_reconstructed_from_depth_match_the_gbuffer() {
+    let gpu = gpu();
+    for builtin in [Builtin::Room, Builtin::Stairs, Builtin::Open] {
+        let scene = builtin.build();
+        let frame = render(&gpu, &scene, &scene.cameras[0]);
+        let reconstructed = reconstructed_normals(&gpu, &frame);
+        let errors: Vec<f32> = frame
+            .normals
+            .iter()
+            .zip(&reconstructed)
+            .zip(&frame.linear_depth)
+            .filter(|&(_, &d)| d > 0.0)
+            .map(|((a, b), _)| a.angle_between(*b).to_degrees())
+            .collect();
+        let within_a_degree =
+            errors.iter().filter(|&&e| e < 1.0).count() as f32 / errors.len() as f32;
+        // Curved surfaces (the room's sphere) and one-pixel-wide features miss by more.
+        assert!(
+            within_a_degree > 0.9,
+            "{}: only {within_a_degree} of normals within 1 degree",
+            scene.name
+        );
+    }
+}
+
+#[test]
+fn pass_times_are_reported_when_the_adapter_has_timestamps() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let frame = render(&gpu, &scene, &scene.cameras[0]);
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let depth = aokit::gpu::upload_texture_2d(
+        device,
+        queue,
+        "depth",
+        frame.size,
+        wgpu::TextureFormat::R32Float,
+        bytemuck::cast_slice(&frame.linear_depth),
+    )
+    .unwrap();
+    let mut pipeline = aokit::AoPipeline::new(device, queue, &AoSettings::default()).unwrap();
+    let has_timestamps = device.features().contains(wgpu::Features::TIMESTAMP_QUERY);
+    assert_eq!(pipeline.enable_timing(device, queue), has_timestamps);
+    let mut encoder = device.create_command_encoder(&Default::default());
+    pipeline
+        .encode(
+            device,
+            queue,
+            &mut encoder,
+            &aokit::AoInputs {
+                depth: &depth,
+                normals: None,
+                projection: frame.projection,
+                frame_index: 0,
+            },
+        )
+        .unwrap();
+    queue.submit([encoder.finish()]);
+    match pipeline.last_pass_times(device) {
+        None => assert!(!has_timestamps),
+        Some(times) => {
+            let times = times.unwrap();
+            let names: Vec<&str> = times.iter().map(|t| t.name).collect();
+            assert_eq!(names, ["import_depth", "normals_from_depth", "gtao"]);
+            assert!(times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0));
+        }
+    }
 }

@@ -46,6 +46,9 @@ pub enum GpuError {
     /// A texture read-back failed.
     #[error("reading a texture back from the GPU failed: {0}")]
     Readback(String),
+    /// Data handed in does not fit the texture.
+    #[error("cannot upload texture data: {0}")]
+    Upload(String),
 }
 
 /// A device and queue with the adapter they came from.
@@ -106,7 +109,8 @@ impl GpuContext {
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("aokit"),
-                required_features: wgpu::Features::empty(),
+                // Timestamps where the adapter has them: tools report per-pass GPU time.
+                required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
                 required_limits: adapter.limits(),
                 ..Default::default()
             })
@@ -211,6 +215,50 @@ pub fn create_texture_2d(
         usage,
         view_formats: &[],
     })
+}
+
+/// A 2D texture filled from tightly packed rows of `bytes` (one mip level), with
+/// `TEXTURE_BINDING | COPY_DST` usage.
+pub fn upload_texture_2d(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    label: &str,
+    size: [u32; 2],
+    format: wgpu::TextureFormat,
+    bytes: &[u8],
+) -> Result<wgpu::Texture, GpuError> {
+    let texel = texel_size(format)?;
+    let expected = u64::from(size[0]) * u64::from(size[1]) * u64::from(texel);
+    if bytes.len() as u64 != expected {
+        return Err(GpuError::Upload(format!(
+            "{label}: {} bytes given for a {}x{} {format:?} texture of {expected} bytes",
+            bytes.len(),
+            size[0],
+            size[1]
+        )));
+    }
+    let texture = create_texture_2d(
+        device,
+        label,
+        size,
+        format,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
+    queue.write_texture(
+        texture.as_image_copy(),
+        bytes,
+        wgpu::TexelCopyBufferLayout {
+            offset: 0,
+            bytes_per_row: Some(size[0] * texel),
+            rows_per_image: Some(size[1]),
+        },
+        wgpu::Extent3d {
+            width: size[0],
+            height: size[1],
+            depth_or_array_layers: 1,
+        },
+    );
+    Ok(texture)
 }
 
 /// A uniform buffer the size of `T`, to be filled with `queue.write_buffer`.

@@ -5,13 +5,16 @@ use crate::projection::Projection;
 /// Per-frame inputs of [`AoPipeline::encode`](crate::AoPipeline::encode).
 #[derive(Clone, Copy, Debug)]
 pub struct AoInputs<'a> {
-    /// The depth buffer, any depth format (`Depth32Float`, `Depth24Plus`, `Depth16Unorm`, with
-    /// or without stencil), single-sampled, with `TEXTURE_BINDING` usage.
+    /// The depth buffer, single-sampled, with `TEXTURE_BINDING` usage: any depth format
+    /// (`Depth32Float`, `Depth24Plus`, `Depth16Unorm`, with or without stencil) holding NDC depth
+    /// as [`AoInputs::projection`] wrote it, or `R32Float` holding linear view depth (positive
+    /// distance along the view axis; 0, negative, NaN or infinity where there is no surface).
     pub depth: &'a wgpu::Texture,
     /// View-space normals in the `oct32` encoding (see [`shader::ENCODING`](crate::shader::ENCODING)):
-    /// an `R32Uint` texture of the depth buffer's size, with `TEXTURE_BINDING` usage.
-    pub normals: &'a wgpu::Texture,
-    /// The projection the depth buffer was rendered with.
+    /// an `R32Uint` texture of the depth's size with `TEXTURE_BINDING` usage. `None` reconstructs
+    /// them from depth, which is less precise at edges and on curved surfaces.
+    pub normals: Option<&'a wgpu::Texture>,
+    /// The projection the depth was rendered with.
     pub projection: Projection,
     /// Frame counter; it moves the sampling noise from frame to frame.
     pub frame_index: u32,
@@ -20,8 +23,8 @@ pub struct AoInputs<'a> {
 /// Why the inputs cannot be used.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum InputError {
-    /// The depth texture has no depth aspect.
-    #[error("depth texture format {0:?} is not a depth format")]
+    /// The depth texture is neither a depth format nor `R32Float`.
+    #[error("depth texture format {0:?} is neither a depth format nor R32Float linear depth")]
     DepthFormat(wgpu::TextureFormat),
     /// The normals texture is not `R32Uint`.
     #[error("normals texture format {0:?} is not R32Uint (oct32-encoded normals)")]
@@ -46,32 +49,37 @@ impl AoInputs<'_> {
     /// The resolution the inputs describe, after checking formats, usages and sizes.
     pub fn validate(&self) -> Result<[u32; 2], InputError> {
         let depth = self.depth;
-        let normals = self.normals;
-        if !depth.format().has_depth_aspect() {
+        if !(depth.format().has_depth_aspect() || depth.format() == wgpu::TextureFormat::R32Float) {
             return Err(InputError::DepthFormat(depth.format()));
         }
-        if normals.format() != wgpu::TextureFormat::R32Uint {
-            return Err(InputError::NormalsFormat(normals.format()));
-        }
-        for (name, texture) in [("depth", depth), ("normals", normals)] {
-            if texture.sample_count() > 1 {
-                return Err(InputError::Multisampled(name));
-            }
-            if !texture
-                .usage()
-                .contains(wgpu::TextureUsages::TEXTURE_BINDING)
-            {
-                return Err(InputError::NotBindable(name));
-            }
-        }
+        check_readable("depth", depth)?;
         let size = [depth.width(), depth.height()];
-        let normals_size = [normals.width(), normals.height()];
-        if size != normals_size {
-            return Err(InputError::SizeMismatch {
-                depth: size,
-                normals: normals_size,
-            });
+        if let Some(normals) = self.normals {
+            if normals.format() != wgpu::TextureFormat::R32Uint {
+                return Err(InputError::NormalsFormat(normals.format()));
+            }
+            check_readable("normals", normals)?;
+            let normals_size = [normals.width(), normals.height()];
+            if size != normals_size {
+                return Err(InputError::SizeMismatch {
+                    depth: size,
+                    normals: normals_size,
+                });
+            }
         }
         Ok(size)
     }
+}
+
+fn check_readable(name: &'static str, texture: &wgpu::Texture) -> Result<(), InputError> {
+    if texture.sample_count() > 1 {
+        return Err(InputError::Multisampled(name));
+    }
+    if !texture
+        .usage()
+        .contains(wgpu::TextureUsages::TEXTURE_BINDING)
+    {
+        return Err(InputError::NotBindable(name));
+    }
+    Ok(())
 }

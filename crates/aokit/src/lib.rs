@@ -19,6 +19,7 @@ pub mod pipeline;
 pub mod projection;
 pub mod settings;
 pub mod shader;
+pub mod timing;
 mod uniforms;
 
 pub use error::AoError;
@@ -27,3 +28,4 @@ pub use inputs::{AoInputs, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{AoSettings, GtaoSettings, Method, Preset, SettingsError};
+pub use timing::PassTime;

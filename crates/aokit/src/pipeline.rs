@@ -3,9 +3,12 @@
 use crate::error::AoError;
 use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
+use crate::passes::PassContext;
 use crate::passes::gtao::{AO_FORMAT, GtaoPass};
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
+use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
 use crate::settings::{AoSettings, Method};
+use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
 
 /// Textures sized to the current resolution.
@@ -15,6 +18,8 @@ struct Targets {
     linear_depth_view: wgpu::TextureView,
     ao: wgpu::Texture,
     ao_view: wgpu::TextureView,
+    reconstructed_normals: wgpu::Texture,
+    reconstructed_normals_view: wgpu::TextureView,
 }
 
 impl Targets {
@@ -25,7 +30,10 @@ impl Targets {
         let make = |label, format| create_texture_2d(device, label, size, format, usage);
         let linear_depth = make("aokit linear depth", LINEAR_DEPTH_FORMAT);
         let ao = make("aokit ao", AO_FORMAT);
+        let normals = make("aokit reconstructed normals", NORMALS_FORMAT);
         Self {
+            reconstructed_normals_view: normals.create_view(&Default::default()),
+            reconstructed_normals: normals,
             size,
             linear_depth_view: linear_depth.create_view(&Default::default()),
             linear_depth,
@@ -45,6 +53,8 @@ pub struct AoOutputs<'a> {
     pub ao_view: &'a wgpu::TextureView,
     /// Linear view depth, `R32Float`, 0 where nothing was drawn.
     pub linear_depth: &'a wgpu::Texture,
+    /// The oct32 normals reconstructed from depth, when the inputs had none.
+    pub reconstructed_normals: Option<&'a wgpu::Texture>,
 }
 
 /// The AO pipeline for one view.
@@ -56,7 +66,7 @@ pub struct AoOutputs<'a> {
 /// let mut pipeline = AoPipeline::new(device, queue, &AoSettings::default())?;
 /// let mut encoder = device.create_command_encoder(&Default::default());
 /// let outputs = pipeline.encode(device, queue, &mut encoder, &AoInputs {
-///     depth, normals, projection, frame_index: 0,
+///     depth, normals: Some(normals), projection, frame_index: 0,
 /// })?;
 /// // ... bind `outputs.ao_view` in your lighting pass ...
 /// queue.submit([encoder.finish()]);
@@ -66,8 +76,10 @@ pub struct AoPipeline {
     settings: AoSettings,
     view_uniforms: wgpu::Buffer,
     linear_depth: LinearDepthPass,
+    normals_from_depth: NormalsFromDepthPass,
     gtao: GtaoPass,
     targets: Option<Targets>,
+    timer: Option<PassTimer>,
 }
 
 impl AoPipeline {
@@ -83,11 +95,31 @@ impl AoPipeline {
             settings: *settings,
             view_uniforms,
             linear_depth: LinearDepthPass::new(device),
+            normals_from_depth: NormalsFromDepthPass::new(device),
             gtao: GtaoPass::new(device),
             targets: None,
+            timer: None,
         };
         pipeline.gtao.set_settings(queue, settings);
         Ok(pipeline)
+    }
+
+    /// Times every pass with GPU timestamps from now on. Returns `false`, and changes nothing,
+    /// when the device was not created with `Features::TIMESTAMP_QUERY`.
+    pub fn enable_timing(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) -> bool {
+        if self.timer.is_none() {
+            self.timer = PassTimer::new(device, queue);
+        }
+        self.timer.is_some()
+    }
+
+    /// GPU time of each pass of the last encoded frame, once its commands were submitted;
+    /// `None` unless [`AoPipeline::enable_timing`] succeeded. Blocks until the GPU is done.
+    pub fn last_pass_times(
+        &self,
+        device: &wgpu::Device,
+    ) -> Option<Result<Vec<PassTime>, crate::GpuError>> {
+        self.timer.as_ref().map(|timer| timer.read(device))
     }
 
     /// The settings in use.
@@ -138,34 +170,49 @@ impl AoPipeline {
             )),
         );
 
-        let depth_view = inputs.depth.create_view(&wgpu::TextureViewDescriptor {
-            aspect: wgpu::TextureAspect::DepthOnly,
-            ..Default::default()
-        });
-        let normals_view = inputs.normals.create_view(&Default::default());
-        self.linear_depth.encode(
+        if let Some(timer) = self.timer.as_mut() {
+            timer.begin_frame();
+        }
+        let mut ctx = PassContext {
             device,
             encoder,
-            &self.view_uniforms,
-            &depth_view,
-            &targets.linear_depth_view,
+            view_uniforms: &self.view_uniforms,
             size,
-        );
+            timer: self.timer.as_mut(),
+        };
+        self.linear_depth
+            .encode(&mut ctx, inputs.depth, &targets.linear_depth_view);
+        let given_normals = inputs.normals.map(|n| n.create_view(&Default::default()));
+        let normals = match &given_normals {
+            Some(view) => view,
+            None => {
+                self.normals_from_depth.encode(
+                    &mut ctx,
+                    &targets.linear_depth_view,
+                    &targets.reconstructed_normals_view,
+                );
+                &targets.reconstructed_normals_view
+            }
+        };
         match self.settings.method {
             Method::Gtao => self.gtao.encode(
-                device,
-                encoder,
-                &self.view_uniforms,
+                &mut ctx,
                 &targets.linear_depth_view,
-                &normals_view,
+                normals,
                 &targets.ao_view,
-                size,
             ),
+        }
+        if let Some(timer) = &self.timer {
+            timer.resolve(encoder);
         }
         Ok(AoOutputs {
             ao: &targets.ao,
             ao_view: &targets.ao_view,
             linear_depth: &targets.linear_depth,
+            reconstructed_normals: inputs
+                .normals
+                .is_none()
+                .then_some(&targets.reconstructed_normals),
         })
     }
 }

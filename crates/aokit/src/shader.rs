@@ -28,6 +28,22 @@ pub const LINEAR_DEPTH: ShaderSource = ShaderSource {
     parts: &[VIEW, include_str!("../shaders/linear_depth.wgsl")],
 };
 
+/// Linear depth handed in as `R32Float`, sanitised.
+pub const IMPORT_DEPTH: ShaderSource = ShaderSource {
+    name: "import_depth",
+    parts: &[VIEW, include_str!("../shaders/import_depth.wgsl")],
+};
+
+/// Normals reconstructed from linear depth.
+pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
+    name: "normals_from_depth",
+    parts: &[
+        VIEW,
+        ENCODING,
+        include_str!("../shaders/normals_from_depth.wgsl"),
+    ],
+};
+
 /// The GTAO kernel.
 pub const GTAO: ShaderSource = ShaderSource {
     name: "gtao",
@@ -35,7 +51,7 @@ pub const GTAO: ShaderSource = ShaderSource {
 };
 
 /// Every program the library compiles.
-pub const ALL: &[ShaderSource] = &[LINEAR_DEPTH, GTAO];
+pub const ALL: &[ShaderSource] = &[LINEAR_DEPTH, IMPORT_DEPTH, NORMALS_FROM_DEPTH, GTAO];
 
 impl ShaderSource {
     /// The assembled WGSL text.

@@ -1,6 +1,6 @@
 //! The GTAO kernel: linear depth and normals in, AO out.
 
-use super::{ComputeKernel, bind};
+use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::create_uniform_buffer;
 use crate::settings::AoSettings;
 use crate::shader;
@@ -53,30 +53,23 @@ impl GtaoPass {
         );
     }
 
-    /// Records the kernel over `size` pixels.
-    #[allow(clippy::too_many_arguments)]
+    /// Records the kernel.
     pub fn encode(
         &self,
-        device: &wgpu::Device,
-        encoder: &mut wgpu::CommandEncoder,
-        view_uniforms: &wgpu::Buffer,
+        ctx: &mut PassContext<'_>,
         linear_depth: &wgpu::TextureView,
         normals: &wgpu::TextureView,
         output: &wgpu::TextureView,
-        size: [u32; 2],
     ) {
-        self.kernel.dispatch(
-            device,
-            encoder,
+        ctx.dispatch(
+            &self.kernel,
             &[
-                view_uniforms.as_entire_binding(),
                 self.uniforms.as_entire_binding(),
                 wgpu::BindingResource::TextureView(linear_depth),
                 wgpu::BindingResource::TextureView(normals),
                 wgpu::BindingResource::TextureView(output),
                 wgpu::BindingResource::Sampler(&self.point_clamp),
             ],
-            size,
         );
     }
 }

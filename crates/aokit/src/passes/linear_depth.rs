@@ -1,50 +1,63 @@
-//! Prepare pass: the renderer's depth buffer to linear view depth.
+//! Prepare pass: the renderer's depth to linear view depth, 0 where there is no surface.
 
-use super::{ComputeKernel, bind};
+use super::{ComputeKernel, PassContext, bind};
 use crate::shader;
 
 /// Format of the linear depth the AO kernels read.
 pub const LINEAR_DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 
-/// Converts any depth buffer to positive linear view depth, 0 where nothing was drawn.
+/// Converts hardware depth (any depth format) or linear depth (`R32Float`) to the linear depth
+/// the kernels read.
 pub struct LinearDepthPass {
-    kernel: ComputeKernel,
+    from_hardware: ComputeKernel,
+    from_linear: ComputeKernel,
 }
 
 impl LinearDepthPass {
-    /// Compiles the pass.
+    /// Compiles both variants.
     pub fn new(device: &wgpu::Device) -> Self {
-        let kernel = ComputeKernel::new(
-            device,
-            &shader::LINEAR_DEPTH,
-            &[
-                bind::uniform(0),
-                bind::texture(1, wgpu::TextureSampleType::Depth),
-                bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
-            ],
-        );
-        Self { kernel }
+        let kernel = |source, input| {
+            ComputeKernel::new(
+                device,
+                source,
+                &[
+                    bind::uniform(0),
+                    bind::texture(1, input),
+                    bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
+                ],
+            )
+        };
+        Self {
+            from_hardware: kernel(&shader::LINEAR_DEPTH, wgpu::TextureSampleType::Depth),
+            from_linear: kernel(
+                &shader::IMPORT_DEPTH,
+                wgpu::TextureSampleType::Float { filterable: false },
+            ),
+        }
     }
 
-    /// Records the pass. `depth` must be a depth-only view.
+    /// Records the pass for `depth`, a depth texture or an `R32Float` linear-depth texture.
     pub fn encode(
         &self,
-        device: &wgpu::Device,
-        encoder: &mut wgpu::CommandEncoder,
-        view_uniforms: &wgpu::Buffer,
-        depth: &wgpu::TextureView,
+        ctx: &mut PassContext<'_>,
+        depth: &wgpu::Texture,
         output: &wgpu::TextureView,
-        size: [u32; 2],
     ) {
-        self.kernel.dispatch(
-            device,
-            encoder,
+        let (kernel, aspect) = if depth.format().has_depth_aspect() {
+            (&self.from_hardware, wgpu::TextureAspect::DepthOnly)
+        } else {
+            (&self.from_linear, wgpu::TextureAspect::All)
+        };
+        let input = depth.create_view(&wgpu::TextureViewDescriptor {
+            aspect,
+            ..Default::default()
+        });
+        ctx.dispatch(
+            kernel,
             &[
-                view_uniforms.as_entire_binding(),
-                wgpu::BindingResource::TextureView(depth),
+                wgpu::BindingResource::TextureView(&input),
                 wgpu::BindingResource::TextureView(output),
             ],
-            size,
         );
     }
 }

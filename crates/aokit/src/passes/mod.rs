@@ -2,8 +2,36 @@
 
 pub mod gtao;
 pub mod linear_depth;
+pub mod normals_from_depth;
 
 use crate::shader::ShaderSource;
+use crate::timing::PassTimer;
+
+/// What a pass needs to record itself into a frame.
+pub struct PassContext<'a> {
+    /// The device, for bind groups.
+    pub device: &'a wgpu::Device,
+    /// The encoder the frame is recorded into.
+    pub encoder: &'a mut wgpu::CommandEncoder,
+    /// The frame's `ViewUniforms` buffer, bound at binding 0 of every pass.
+    pub view_uniforms: &'a wgpu::Buffer,
+    /// Working resolution.
+    pub size: [u32; 2],
+    /// Collects per-pass GPU times when timing is on.
+    pub timer: Option<&'a mut PassTimer>,
+}
+
+impl PassContext<'_> {
+    /// Dispatches `kernel` over the working resolution with the view uniforms at binding 0 and
+    /// `resources` from binding 1 on, timed when the frame is timed.
+    pub fn dispatch(&mut self, kernel: &ComputeKernel, resources: &[wgpu::BindingResource<'_>]) {
+        let mut bindings = Vec::with_capacity(resources.len() + 1);
+        bindings.push(self.view_uniforms.as_entire_binding());
+        bindings.extend_from_slice(resources);
+        let timestamps = self.timer.as_mut().and_then(|t| t.pass(kernel.name()));
+        kernel.dispatch(self.device, self.encoder, &bindings, self.size, timestamps);
+    }
+}
 
 /// Threads per workgroup side; every pass uses 8x8 tiles.
 pub const TILE: u32 = 8;
@@ -49,13 +77,20 @@ impl ComputeKernel {
         }
     }
 
-    /// Binds `resources` in order (binding 0, 1, ...) and dispatches one thread per pixel.
+    /// The shader's name, used for labels and timings.
+    pub fn name(&self) -> &'static str {
+        self.label
+    }
+
+    /// Binds `resources` in order (binding 0, 1, ...) and dispatches one thread per pixel,
+    /// with timestamps around the pass when `timestamps` is given.
     pub fn dispatch(
         &self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
         resources: &[wgpu::BindingResource<'_>],
         size: [u32; 2],
+        timestamps: Option<wgpu::ComputePassTimestampWrites<'_>>,
     ) {
         let entries: Vec<wgpu::BindGroupEntry<'_>> = resources
             .iter()
@@ -72,7 +107,7 @@ impl ComputeKernel {
         });
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some(self.label),
-            timestamp_writes: None,
+            timestamp_writes: timestamps,
         });
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &bind_group, &[]);

@@ -1,0 +1,71 @@
+//! AO for G-buffer passes that come from files or another renderer rather than the raster.
+
+use aokit::gpu::{read_texture_f32, upload_texture_2d};
+use aokit::normals::pack_oct32;
+use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Projection};
+use glam::Vec3;
+
+use crate::renderer::RenderError;
+
+/// One view's passes on the CPU, row-major from the top-left pixel.
+#[derive(Clone, Copy, Debug)]
+pub struct Passes<'a> {
+    /// Width and height in pixels.
+    pub size: [u32; 2],
+    /// Linear view depth; 0, negative, NaN or infinity where there is no surface.
+    pub linear_depth: &'a [f32],
+    /// View-space unit normals, or `None` to reconstruct them from depth.
+    pub normals: Option<&'a [Vec3]>,
+    /// The camera's projection.
+    pub projection: Projection,
+}
+
+/// Runs the AO pipeline on `passes` and reads the AO back (1 = unoccluded).
+pub fn ambient_occlusion(
+    gpu: &GpuContext,
+    settings: &AoSettings,
+    passes: &Passes<'_>,
+    frame_index: u32,
+) -> Result<Vec<f32>, RenderError> {
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let depth = upload_texture_2d(
+        device,
+        queue,
+        "external linear depth",
+        passes.size,
+        wgpu::TextureFormat::R32Float,
+        bytemuck::cast_slice(passes.linear_depth),
+    )?;
+    let normals = passes
+        .normals
+        .map(|normals| {
+            let packed: Vec<u32> = normals
+                .iter()
+                .map(|&n| pack_oct32(n.normalize_or(Vec3::Z)))
+                .collect();
+            upload_texture_2d(
+                device,
+                queue,
+                "external normals",
+                passes.size,
+                wgpu::TextureFormat::R32Uint,
+                bytemuck::cast_slice(&packed),
+            )
+        })
+        .transpose()?;
+    let mut pipeline = AoPipeline::new(device, queue, settings)?;
+    let mut encoder = device.create_command_encoder(&Default::default());
+    let outputs = pipeline.encode(
+        device,
+        queue,
+        &mut encoder,
+        &AoInputs {
+            depth: &depth,
+            normals: normals.as_ref(),
+            projection: passes.projection,
+            frame_index,
+        },
+    )?;
+    queue.submit([encoder.finish()]);
+    Ok(read_texture_f32(device, queue, outputs.ao)?)
+}

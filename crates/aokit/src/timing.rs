@@ -1,0 +1,129 @@
+//! GPU timestamps around each pass, where the device has `TIMESTAMP_QUERY`.
+
+use crate::gpu::GpuError;
+
+/// Most passes one frame can time; aokit's longest chain is far below this.
+const MAX_PASSES: u32 = 16;
+
+/// GPU time of one pass.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PassTime {
+    /// The pass, as its shader is named (`gtao`, `linear_depth`, ...).
+    pub name: &'static str,
+    /// Milliseconds between the pass's start and end timestamps.
+    pub ms: f64,
+}
+
+/// A query set with two timestamps per pass, resolved once per frame.
+pub struct PassTimer {
+    queries: wgpu::QuerySet,
+    resolved: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    names: Vec<&'static str>,
+    period_ns: f32,
+}
+
+impl PassTimer {
+    /// A timer, or `None` when the device lacks `TIMESTAMP_QUERY`.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Option<Self> {
+        if !device.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
+            return None;
+        }
+        let count = 2 * MAX_PASSES;
+        let bytes = u64::from(count) * 8;
+        let buffer = |label, usage| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: bytes,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        Some(Self {
+            queries: device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("aokit pass timestamps"),
+                ty: wgpu::QueryType::Timestamp,
+                count,
+            }),
+            resolved: buffer(
+                "aokit timestamps resolved",
+                wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+            ),
+            readback: buffer(
+                "aokit timestamps readback",
+                wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            ),
+            names: Vec::new(),
+            period_ns: queue.get_timestamp_period(),
+        })
+    }
+
+    /// Forgets the passes of the previous frame.
+    pub(crate) fn begin_frame(&mut self) {
+        self.names.clear();
+    }
+
+    /// Timestamp writes for the next pass, or `None` once the set is full.
+    pub(crate) fn pass(
+        &mut self,
+        name: &'static str,
+    ) -> Option<wgpu::ComputePassTimestampWrites<'_>> {
+        let index = self.names.len() as u32;
+        if index >= MAX_PASSES {
+            return None;
+        }
+        self.names.push(name);
+        Some(wgpu::ComputePassTimestampWrites {
+            query_set: &self.queries,
+            beginning_of_pass_write_index: Some(2 * index),
+            end_of_pass_write_index: Some(2 * index + 1),
+        })
+    }
+
+    /// Records the copy of this frame's timestamps to the read-back buffer.
+    pub(crate) fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
+        let count = 2 * self.names.len() as u32;
+        if count == 0 {
+            return;
+        }
+        encoder.resolve_query_set(&self.queries, 0..count, &self.resolved, 0);
+        encoder.copy_buffer_to_buffer(&self.resolved, 0, &self.readback, 0, u64::from(count) * 8);
+    }
+
+    /// Reads the last resolved frame's pass times; call after its commands were submitted.
+    /// Blocks until the GPU has finished them.
+    pub fn read(&self, device: &wgpu::Device) -> Result<Vec<PassTime>, GpuError> {
+        let count = 2 * self.names.len() as u64;
+        if count == 0 {
+            return Ok(Vec::new());
+        }
+        let slice = self.readback.slice(..count * 8);
+        let (sender, receiver) = std::sync::mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |result| {
+            let _ = sender.send(result);
+        });
+        device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        receiver
+            .recv()
+            .map_err(|e| GpuError::Readback(e.to_string()))?
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        let ticks: Vec<u64> = {
+            let mapped = slice
+                .get_mapped_range()
+                .map_err(|e| GpuError::Readback(e.to_string()))?;
+            bytemuck::pod_collect_to_vec(&mapped)
+        };
+        self.readback.unmap();
+        Ok(self
+            .names
+            .iter()
+            .zip(ticks.chunks_exact(2))
+            .map(|(&name, pair)| PassTime {
+                name,
+                ms: pair[1].saturating_sub(pair[0]) as f64 * f64::from(self.period_ns) * 1e-6,
+            })
+            .collect())
+    }
+}
