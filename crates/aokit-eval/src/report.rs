@@ -1,0 +1,76 @@
+//! Comparison reports: a CSV for tools, a Markdown table for terminals and docs, and one
+//! self-contained HTML page with images, error maps, tables and an error-versus-cost chart.
+
+mod chart;
+mod csv;
+mod html;
+mod markdown;
+mod text;
+
+use crate::metrics::Metrics;
+
+/// One method at one preset, scored against a view's reference.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MethodResult {
+    /// Method name, such as `gtao`.
+    pub method: String,
+    /// Preset name, such as `high`.
+    pub preset: String,
+    /// Scores over every surface pixel.
+    pub all: Metrics,
+    /// Scores over pixels near depth edges only.
+    pub edges: Metrics,
+    /// Median GPU time of the AO passes per frame, when timestamps were available.
+    pub gpu_ms: Option<f64>,
+    /// AO samples per pixel, a cost measure that needs no GPU timer.
+    pub samples_per_pixel: u32,
+    /// The method's AO as a PNG.
+    pub ao_png: Vec<u8>,
+    /// Its signed error map (see [`error_map_rgb`](crate::error_map_rgb)) as a PNG.
+    pub error_png: Vec<u8>,
+}
+
+/// One camera view: its reference and every method scored on it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewResult {
+    /// Shown as the section heading and in the `view` column.
+    pub name: String,
+    /// The reference AO as a PNG.
+    pub reference_png: Vec<u8>,
+    /// Results in the order they should be listed.
+    pub methods: Vec<MethodResult>,
+}
+
+/// A whole comparison run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Report {
+    /// Page title and Markdown heading.
+    pub title: String,
+    /// Free-text lines shown under the title (adapter, sizes, command line); empty ones are
+    /// skipped.
+    pub notes: Vec<String>,
+    /// The error maps' saturation point, printed on the legend.
+    pub error_range: f32,
+    /// The colour bar from [`legend_rgb`](crate::legend_rgb) as a PNG.
+    pub legend_png: Vec<u8>,
+    /// The views, in order.
+    pub views: Vec<ViewResult>,
+}
+
+impl Report {
+    /// One row per view, method and preset under a header row; `gpu_ms` empty when unknown,
+    /// full precision numbers (`inf` for an exact match's PSNR, `NaN` for an empty selection).
+    pub fn csv(&self) -> String {
+        csv::render(self)
+    }
+
+    /// The title, notes and a GitHub table per view.
+    pub fn markdown(&self) -> String {
+        markdown::render(self)
+    }
+
+    /// One offline HTML page: images embedded as `data:` URIs, inline CSS and SVG, no scripts.
+    pub fn html(&self) -> String {
+        html::render(self)
+    }
+}
