@@ -23,6 +23,7 @@ pub mod external;
 pub mod gbuffer;
 pub mod load;
 pub mod mesh;
+pub mod reference;
 pub mod renderer;
 pub mod scene;
 pub mod shaders;
