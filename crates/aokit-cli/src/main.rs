@@ -1,7 +1,12 @@
 //! `aokit`: render scenes with screen-space AO, headless.
 
+mod ao;
+mod cache;
 mod camera_args;
-mod output;
+mod compare;
+mod export;
+mod passes;
+mod reference;
 mod render;
 mod settings_args;
 
@@ -20,12 +25,21 @@ struct Cli {
 enum Command {
     /// Render a scene's G-buffer, its AO and a lit image.
     Render(render::RenderArgs),
+    /// Ray-trace the reference AO of a scene and camera on the CPU.
+    Reference(reference::ReferenceArgs),
+    /// Compute AO for depth (and normal) passes exported by another renderer.
+    Ao(ao::AoArgs),
+    /// Score methods and presets against the reference: metrics, error maps, report.html.
+    Compare(compare::CompareArgs),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => render::run(&args),
+        Command::Reference(args) => reference::run(&args),
+        Command::Ao(args) => ao::run(&args),
+        Command::Compare(args) => compare::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -2,13 +2,15 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 use aokit::{AdapterKind, GpuContext};
-use aokit_scene::{CameraFile, Renderer, Scene};
+use aokit_scene::{Renderer, Scene};
 use clap::Args;
 
+use aokit_eval::{write_exr, write_grey_png, write_rgba_png};
+
 use crate::camera_args::CameraArgs;
-use crate::output::{write_exr, write_grey_png, write_rgba_png};
+use crate::export::{create_dir, write_gbuffer};
 use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug)]
@@ -34,6 +36,10 @@ pub struct RenderArgs {
     pub sun: Option<glam::Vec3>,
 }
 
+/// Largest side `--size` accepts: twice the 8192 every wgpu device supports, far past any
+/// screen, and still a few hundred MB of float images.
+const MAX_SIDE: u32 = 16384;
+
 pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
     let (w, h) = s
         .split_once(['x', 'X'])
@@ -46,6 +52,11 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
     let size = [parse(w)?, parse(h)?];
     if size.contains(&0) {
         return Err(format!("`{s}`: width and height must be at least 1"));
+    }
+    if size.iter().any(|&side| side > MAX_SIDE) {
+        return Err(format!(
+            "`{s}`: width and height must be at most {MAX_SIDE}"
+        ));
     }
     Ok(size)
 }
@@ -83,28 +94,20 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     }
 
     let out = &args.out;
-    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    create_dir(out)?;
     write_grey_png(&out.join("ao.png"), frame.size, &frame.ao)?;
     write_exr(&out.join("ao.exr"), frame.size, &[("Y", frame.ao.clone())])?;
     write_rgba_png(&out.join("lit.png"), frame.size, &frame.lit)?;
     let mut written = vec!["ao.png", "ao.exr", "lit.png"];
     if args.gbuffer {
-        write_exr(
-            &out.join("depth.exr"),
+        written.extend(write_gbuffer(
+            out,
             frame.size,
-            &[("Z", frame.linear_depth.clone())],
-        )?;
-        let channel = |i: usize| frame.normals.iter().map(|n| n[i]).collect::<Vec<f32>>();
-        write_exr(
-            &out.join("normal.exr"),
-            frame.size,
-            &[("R", channel(0)), ("G", channel(1)), ("B", channel(2))],
-        )?;
-        let camera_file = CameraFile::new(&frame.projection, frame.view_from_world, frame.size);
-        let path = out.join("camera.json");
-        std::fs::write(&path, serde_json::to_string_pretty(&camera_file)? + "\n")
-            .with_context(|| format!("cannot write {}", path.display()))?;
-        written.extend(["depth.exr", "normal.exr", "camera.json"]);
+            &frame.linear_depth,
+            &frame.normals,
+            &frame.projection,
+            frame.view_from_world,
+        )?);
     }
     println!(
         "rendered `{}` from camera `{}` at {}x{} with {} (radius {}): wrote {} to {}",
@@ -122,7 +125,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
 }
 
 /// Mean and minimum AO over the pixels that show a surface.
-fn ao_summary(ao: &[f32], linear_depth: &[f32]) -> String {
+pub fn ao_summary(ao: &[f32], linear_depth: &[f32]) -> String {
     let covered: Vec<f32> = ao
         .iter()
         .zip(linear_depth)

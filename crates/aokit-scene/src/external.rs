@@ -2,7 +2,7 @@
 
 use aokit::gpu::{read_texture_f32, upload_texture_2d};
 use aokit::normals::pack_oct32;
-use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Projection};
+use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, PassTime, Projection};
 use glam::Vec3;
 
 use crate::renderer::RenderError;
@@ -20,52 +20,100 @@ pub struct Passes<'a> {
     pub projection: Projection,
 }
 
-/// Runs the AO pipeline on `passes` and reads the AO back (1 = unoccluded).
+/// Passes uploaded once, with a pipeline to run any settings on them.
+pub struct ExternalAo {
+    depth: wgpu::Texture,
+    normals: Option<wgpu::Texture>,
+    projection: Projection,
+    pipeline: AoPipeline,
+}
+
+impl ExternalAo {
+    /// Uploads `passes` and compiles the pipeline for `settings`.
+    pub fn new(
+        gpu: &GpuContext,
+        settings: &AoSettings,
+        passes: &Passes<'_>,
+    ) -> Result<Self, RenderError> {
+        let (device, queue) = (&gpu.device, &gpu.queue);
+        let depth = upload_texture_2d(
+            device,
+            queue,
+            "external linear depth",
+            passes.size,
+            wgpu::TextureFormat::R32Float,
+            bytemuck::cast_slice(passes.linear_depth),
+        )?;
+        let normals = passes
+            .normals
+            .map(|normals| {
+                let packed: Vec<u32> = normals
+                    .iter()
+                    .map(|&n| pack_oct32(n.normalize_or(Vec3::Z)))
+                    .collect();
+                upload_texture_2d(
+                    device,
+                    queue,
+                    "external normals",
+                    passes.size,
+                    wgpu::TextureFormat::R32Uint,
+                    bytemuck::cast_slice(&packed),
+                )
+            })
+            .transpose()?;
+        Ok(Self {
+            depth,
+            normals,
+            projection: passes.projection,
+            pipeline: AoPipeline::new(device, queue, settings)?,
+        })
+    }
+
+    /// Changes the settings for later runs.
+    pub fn set_settings(
+        &mut self,
+        gpu: &GpuContext,
+        settings: &AoSettings,
+    ) -> Result<(), RenderError> {
+        Ok(self.pipeline.set_settings(&gpu.queue, settings)?)
+    }
+
+    /// Times the AO passes of later runs; `false` when the device has no timestamps.
+    pub fn enable_timing(&mut self, gpu: &GpuContext) -> bool {
+        self.pipeline.enable_timing(&gpu.device, &gpu.queue)
+    }
+
+    /// GPU time of each pass of the last run, when timing is on.
+    pub fn last_times(&self, gpu: &GpuContext) -> Option<Result<Vec<PassTime>, GpuError>> {
+        self.pipeline.last_pass_times(&gpu.device)
+    }
+
+    /// Runs the pipeline and reads the AO back (1 = unoccluded).
+    pub fn run(&mut self, gpu: &GpuContext, frame_index: u32) -> Result<Vec<f32>, RenderError> {
+        let (device, queue) = (&gpu.device, &gpu.queue);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let outputs = self.pipeline.encode(
+            device,
+            queue,
+            &mut encoder,
+            &AoInputs {
+                depth: &self.depth,
+                normals: self.normals.as_ref(),
+                projection: self.projection,
+                frame_index,
+            },
+        )?;
+        queue.submit([encoder.finish()]);
+        Ok(read_texture_f32(device, queue, outputs.ao)?)
+    }
+}
+
+/// Runs the AO pipeline once on `passes` and reads the AO back (1 = unoccluded).
 pub fn ambient_occlusion(
     gpu: &GpuContext,
     settings: &AoSettings,
     passes: &Passes<'_>,
     frame_index: u32,
 ) -> Result<Vec<f32>, RenderError> {
-    let (device, queue) = (&gpu.device, &gpu.queue);
-    let depth = upload_texture_2d(
-        device,
-        queue,
-        "external linear depth",
-        passes.size,
-        wgpu::TextureFormat::R32Float,
-        bytemuck::cast_slice(passes.linear_depth),
-    )?;
-    let normals = passes
-        .normals
-        .map(|normals| {
-            let packed: Vec<u32> = normals
-                .iter()
-                .map(|&n| pack_oct32(n.normalize_or(Vec3::Z)))
-                .collect();
-            upload_texture_2d(
-                device,
-                queue,
-                "external normals",
-                passes.size,
-                wgpu::TextureFormat::R32Uint,
-                bytemuck::cast_slice(&packed),
-            )
-        })
-        .transpose()?;
-    let mut pipeline = AoPipeline::new(device, queue, settings)?;
-    let mut encoder = device.create_command_encoder(&Default::default());
-    let outputs = pipeline.encode(
-        device,
-        queue,
-        &mut encoder,
-        &AoInputs {
-            depth: &depth,
-            normals: normals.as_ref(),
-            projection: passes.projection,
-            frame_index,
-        },
-    )?;
-    queue.submit([encoder.finish()]);
-    Ok(read_texture_f32(device, queue, outputs.ao)?)
+    ExternalAo::new(gpu, settings, passes)?.run(gpu, frame_index)
 }

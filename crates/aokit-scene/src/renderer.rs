@@ -1,7 +1,9 @@
 //! Renders a scene through the AO pipeline and reads the results back.
 
 use aokit::gpu::{create_texture_2d, read_texture, read_texture_f32};
-use aokit::{AoError, AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, Projection};
+use aokit::{
+    AoError, AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, PassTime, Projection,
+};
 use glam::{Mat4, Vec3};
 
 use crate::camera::Camera;
@@ -83,6 +85,16 @@ impl Renderer {
         })
     }
 
+    /// Times the AO passes of later frames; `false` when the device has no timestamps.
+    pub fn enable_timing(&mut self, gpu: &GpuContext) -> bool {
+        self.ao.enable_timing(&gpu.device, &gpu.queue)
+    }
+
+    /// GPU time of each AO pass of the last frame, when timing is on.
+    pub fn last_ao_times(&self, gpu: &GpuContext) -> Option<Result<Vec<PassTime>, GpuError>> {
+        self.ao.last_pass_times(&gpu.device)
+    }
+
     /// Changes the AO settings for later frames.
     pub fn set_settings(
         &mut self,
@@ -92,7 +104,8 @@ impl Renderer {
         Ok(self.ao.set_settings(&gpu.queue, settings)?)
     }
 
-    /// The projection `camera` gets at `size`, near and far planes fitted to the scene.
+    /// The projection `camera` gets at `size`, near and far planes fitted to the scene; the
+    /// reference tracer's [`pixel_camera`](crate::reference::pixel_camera) uses the same.
     pub fn projection(&self, camera: &Camera, size: [u32; 2]) -> Projection {
         camera.projection(size[0] as f32 / size[1] as f32, &self.bounds)
     }

@@ -189,6 +189,13 @@ impl AoSettings {
         }
     }
 
+    /// Depth samples the AO kernel takes per pixel: the cost that does not depend on the GPU.
+    pub fn samples_per_pixel(&self) -> u32 {
+        match self.method {
+            Method::Gtao => 2 * self.gtao.slice_count * self.gtao.steps_per_side,
+        }
+    }
+
     /// Checks every field, naming the first one out of range.
     pub fn validate(&self) -> Result<(), SettingsError> {
         positive("radius", self.radius)?;
@@ -253,7 +260,7 @@ mod tests {
         for preset in Preset::ALL {
             let s = AoSettings::preset(Method::Gtao, preset);
             s.validate().unwrap();
-            let cost = s.gtao.slice_count * s.gtao.steps_per_side;
+            let cost = s.samples_per_pixel();
             assert!(cost > last, "{preset:?}");
             last = cost;
         }

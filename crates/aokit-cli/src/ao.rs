@@ -1,0 +1,74 @@
+//! `aokit ao`: AO for passes exported by another renderer.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use aokit_eval::{write_exr, write_grey_png};
+use aokit_scene::external;
+use clap::Args;
+
+use crate::export::create_dir;
+use crate::passes::{self, DepthKind, NormalSpace};
+use crate::render::{ao_summary, open_gpu};
+use crate::settings_args::SettingsArgs;
+
+#[derive(Args, Debug)]
+pub struct AoArgs {
+    /// Depth image: EXR, PFM or NPY (float32; H x W; background 0, +inf or NaN).
+    #[arg(long, value_name = "FILE")]
+    pub depth: PathBuf,
+    /// Normal image: EXR, PFM or NPY (H x W x 3). Without it normals are reconstructed from depth.
+    #[arg(long, value_name = "FILE")]
+    pub normals: Option<PathBuf>,
+    /// The camera, in the camera.json format `render --gbuffer` writes.
+    #[arg(long, value_name = "camera.json")]
+    pub camera: PathBuf,
+    /// Whether the depth is linear view depth or depth-buffer values.
+    #[arg(long, value_enum, default_value = "linear")]
+    pub depth_kind: DepthKind,
+    /// Whether the normals are in view or world space.
+    #[arg(long, value_enum, default_value = "view")]
+    pub normal_space: NormalSpace,
+    #[command(flatten)]
+    pub settings: SettingsArgs,
+    /// Output directory.
+    #[arg(long, value_name = "DIR", default_value = "aokit-out")]
+    pub out: PathBuf,
+}
+
+pub fn run(args: &AoArgs) -> Result<()> {
+    let loaded = passes::load(
+        &args.depth,
+        args.normals.as_deref(),
+        &args.camera,
+        args.depth_kind,
+        args.normal_space,
+    )?;
+    let settings = args.settings.resolve(None)?;
+    let gpu = open_gpu()?;
+    let ao = external::ambient_occlusion(&gpu, &settings, &loaded.passes(), 0)?;
+    create_dir(&args.out)?;
+    write_exr(&args.out.join("ao.exr"), loaded.size, &[("Y", ao.clone())])?;
+    write_grey_png(&args.out.join("ao.png"), loaded.size, &ao)?;
+    println!(
+        "AO of {} ({}x{}, normals {}) with {} (radius {}): wrote ao.exr, ao.png to {}",
+        args.depth.display(),
+        loaded.size[0],
+        loaded.size[1],
+        if loaded.normals.is_some() {
+            "from file"
+        } else {
+            "reconstructed from depth"
+        },
+        settings.method.name(),
+        settings.radius,
+        args.out.display()
+    );
+    let depth_for_summary: Vec<f32> = loaded
+        .linear_depth
+        .iter()
+        .map(|&d| if d > 0.0 && d.is_finite() { d } else { 0.0 })
+        .collect();
+    println!("{}", ao_summary(&ao, &depth_for_summary));
+    Ok(())
+}

@@ -1,0 +1,413 @@
+//! `aokit compare`: every method and preset against the ray-traced reference, on the same
+//! pixels, with images, error maps, a metrics table and an error-versus-cost chart.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, anyhow, bail};
+use aokit::{AoSettings, GpuContext, Method, Preset};
+use aokit_eval::report::{MethodResult, Report, ViewResult};
+use aokit_eval::{
+    Metrics, compare as score, depth_edge_mask, encode_png_grey, encode_png_rgb, error_map_rgb,
+    legend_rgb, read_scalar_exr, surface_mask,
+};
+use aokit_reference::{AoOptions, Falloff, ReferenceImage};
+use aokit_scene::external::ExternalAo;
+use aokit_scene::{Renderer, Scene};
+use clap::Args;
+use serde_json::json;
+
+use crate::cache;
+use crate::camera_args::CameraArgs;
+use crate::export::create_dir;
+use crate::passes::{self, DepthKind, NormalSpace};
+use crate::reference::ReferenceInfo;
+use crate::render::{open_gpu, parse_size};
+
+#[derive(Args, Debug)]
+pub struct CompareArgs {
+    /// Built-in scene or scene file (one view with --camera; see --view for several).
+    #[arg(long, conflicts_with_all = ["view", "inputs"])]
+    pub scene: Option<String>,
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// A view as SCENE or SCENE@CAMERA; repeat for several views in one report.
+    #[arg(long, value_name = "SCENE[@CAMERA]", conflicts_with = "inputs")]
+    pub view: Vec<String>,
+    /// Score `aokit ao` on the passes in DIR (depth.exr, optional normal.exr, camera.json)
+    /// against DIR/reference.exr, with the radius from DIR/reference.json unless --radius is given.
+    #[arg(long, value_name = "DIR")]
+    pub inputs: Option<PathBuf>,
+    /// Image size (scene views).
+    #[arg(long, value_name = "WxH", default_value = "480x270", value_parser = parse_size)]
+    pub size: [u32; 2],
+    /// Methods to score, comma-separated, or `all`.
+    #[arg(long, value_delimiter = ',', default_value = "all")]
+    pub methods: Vec<String>,
+    /// Presets to score, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
+    pub presets: Vec<Preset>,
+    /// AO radius (default: the scene's suggested radius, else 1).
+    #[arg(long)]
+    pub radius: Option<f32>,
+    /// Reference rays per pixel.
+    #[arg(long, default_value_t = 512)]
+    pub spp: u32,
+    /// Where references are cached (default: $AOKIT_CACHE, $XDG_CACHE_HOME/aokit or ~/.cache/aokit).
+    #[arg(long, value_name = "DIR")]
+    pub cache: Option<PathBuf>,
+    /// Frames timed per method and preset; the median is reported.
+    #[arg(long, default_value_t = 5)]
+    pub timing_frames: u32,
+    /// Output directory.
+    #[arg(long, value_name = "DIR", default_value = "aokit-compare")]
+    pub out: PathBuf,
+}
+
+/// The error maps' colour scale: errors beyond a quarter of the AO range read as saturated.
+const ERROR_RANGE: f32 = 0.25;
+/// Depth edges: a neighbour 5% nearer or farther, or a surface next to the sky...
+const EDGE_RELATIVE_DEPTH: f32 = 0.05;
+/// ...and pixels within 2 of one, where halos and missing contact shadows show.
+const EDGE_RADIUS: u32 = 2;
+
+/// What every view brings to scoring: the reference and a way to run a method on the same pixels.
+struct Scored {
+    name: String,
+    reference: ReferenceImage,
+    results: Vec<MethodResult>,
+}
+
+/// The methods named on the command line, `all` standing for every one.
+fn methods(names: &[String]) -> Result<Vec<Method>> {
+    let mut methods = Vec::new();
+    for name in names {
+        let named: Vec<Method> = if name == "all" {
+            Method::ALL.to_vec()
+        } else {
+            vec![name.parse().map_err(|e: String| anyhow!(e))?]
+        };
+        for method in named {
+            if !methods.contains(&method) {
+                methods.push(method);
+            }
+        }
+    }
+    Ok(methods)
+}
+
+fn settings_for(method: Method, preset: Preset, radius: f32) -> AoSettings {
+    AoSettings {
+        radius,
+        ..AoSettings::preset(method, preset)
+    }
+}
+
+fn median(mut values: Vec<f64>) -> Option<f64> {
+    if values.is_empty() {
+        return None;
+    }
+    values.sort_by(f64::total_cmp);
+    Some(values[values.len() / 2])
+}
+
+/// Scores one method's AO against the reference and renders its images.
+fn score_method(
+    reference: &ReferenceImage,
+    ao: &[f32],
+    settings: &AoSettings,
+    preset: Preset,
+    gpu_ms: Option<f64>,
+) -> Result<MethodResult> {
+    let surface = surface_mask(&reference.linear_depth);
+    let edges = depth_edge_mask(
+        reference.size,
+        &reference.linear_depth,
+        EDGE_RELATIVE_DEPTH,
+        EDGE_RADIUS,
+    );
+    if ao.iter().any(|v| !v.is_finite()) {
+        bail!("{} wrote non-finite AO values", settings.method.name());
+    }
+    Ok(MethodResult {
+        method: settings.method.name().to_string(),
+        preset: preset.name().to_string(),
+        all: score(reference.size, ao, &reference.ao, &surface),
+        edges: score(reference.size, ao, &reference.ao, &edges),
+        gpu_ms,
+        samples_per_pixel: settings.samples_per_pixel(),
+        ao_png: encode_png_grey(reference.size, ao)?,
+        error_png: encode_png_rgb(
+            reference.size,
+            &error_map_rgb(ao, &reference.ao, &surface, ERROR_RANGE),
+        )?,
+    })
+}
+
+/// Sums each frame's pass times; `None` without timestamps.
+fn frame_ms(times: Option<Result<Vec<aokit::PassTime>, aokit::GpuError>>) -> Result<Option<f64>> {
+    times
+        .transpose()
+        .map(|t| t.map(|passes| passes.iter().map(|p| p.ms).sum()))
+        .map_err(|e| anyhow!(e))
+}
+
+fn score_scene_view(
+    gpu: &GpuContext,
+    args: &CompareArgs,
+    methods: &[Method],
+    cache_dir: &Path,
+    scene: &Scene,
+    camera: &aokit_scene::Camera,
+) -> Result<Scored> {
+    let radius = args.radius.or(scene.suggested_radius).unwrap_or(1.0);
+    let options = AoOptions {
+        radius,
+        spp: args.spp,
+        seed: 0,
+        falloff: Falloff::None,
+    };
+    let reference = cache::reference(cache_dir, scene, camera, args.size, &options)?;
+    let first = settings_for(methods[0], args.presets[0], radius);
+    let mut renderer = Renderer::new(gpu, scene, &first)?;
+    let timed = renderer.enable_timing(gpu);
+    let mut results = Vec::new();
+    for &method in methods {
+        for &preset in &args.presets {
+            let settings = settings_for(method, preset, radius);
+            renderer.set_settings(gpu, &settings)?;
+            let frame = renderer.render(gpu, camera, args.size, 0)?;
+            let mut times = Vec::new();
+            for _ in 0..if timed { args.timing_frames } else { 0 } {
+                renderer.render(gpu, camera, args.size, 0)?;
+                times.extend(frame_ms(renderer.last_ao_times(gpu))?);
+            }
+            results.push(score_method(
+                &reference,
+                &frame.ao,
+                &settings,
+                preset,
+                median(times),
+            )?);
+        }
+    }
+    Ok(Scored {
+        name: format!("{} / {}", scene.name, camera.name),
+        reference,
+        results,
+    })
+}
+
+fn score_inputs(
+    gpu: &GpuContext,
+    args: &CompareArgs,
+    methods: &[Method],
+    dir: &Path,
+) -> Result<Scored> {
+    let normals = dir.join("normal.exr");
+    let loaded = passes::load(
+        &dir.join("depth.exr"),
+        normals.is_file().then_some(normals.as_path()),
+        &dir.join("camera.json"),
+        DepthKind::Linear,
+        NormalSpace::View,
+    )?;
+    let reference_ao = read_scalar_exr(&dir.join("reference.exr"))?;
+    if [reference_ao.width, reference_ao.height] != loaded.size {
+        bail!(
+            "{}: reference.exr and depth.exr differ in size",
+            dir.display()
+        );
+    }
+    let radius = match args.radius {
+        Some(r) => r,
+        None => {
+            ReferenceInfo::read(dir)
+                .context("give --radius, or keep the reference.json `aokit reference` writes")?
+                .radius
+        }
+    };
+    let reference = ReferenceImage {
+        size: loaded.size,
+        ao: reference_ao.data,
+        linear_depth: loaded
+            .linear_depth
+            .iter()
+            .map(|&d| if d.is_finite() && d > 0.0 { d } else { 0.0 })
+            .collect(),
+        normals: Vec::new(),
+    };
+    let first = settings_for(methods[0], args.presets[0], radius);
+    let mut external = ExternalAo::new(gpu, &first, &loaded.passes())?;
+    let timed = external.enable_timing(gpu);
+    let mut results = Vec::new();
+    for &method in methods {
+        for &preset in &args.presets {
+            let settings = settings_for(method, preset, radius);
+            external.set_settings(gpu, &settings)?;
+            let ao = external.run(gpu, 0)?;
+            let mut times = Vec::new();
+            for _ in 0..if timed { args.timing_frames } else { 0 } {
+                external.run(gpu, 0)?;
+                times.extend(frame_ms(external.last_times(gpu))?);
+            }
+            results.push(score_method(
+                &reference,
+                &ao,
+                &settings,
+                preset,
+                median(times),
+            )?);
+        }
+    }
+    Ok(Scored {
+        name: dir.display().to_string(),
+        reference,
+        results,
+    })
+}
+
+fn metrics_json(m: &Metrics) -> serde_json::Value {
+    // JSON has no infinity: a perfect match's PSNR is written as null.
+    let finite = |v: f64| {
+        if v.is_finite() {
+            json!(v)
+        } else {
+            serde_json::Value::Null
+        }
+    };
+    json!({
+        "pixels": m.pixels,
+        "mae": finite(m.mae),
+        "rmse": finite(m.rmse),
+        "bias": finite(m.bias),
+        "psnr": finite(m.psnr),
+        "ssim": finite(m.ssim),
+    })
+}
+
+/// A view name as a file name: `sponza / atrium` -> `sponza-atrium`.
+fn slug(name: &str) -> String {
+    name.split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|part| !part.is_empty())
+        .collect::<Vec<_>>()
+        .join("-")
+        .to_ascii_lowercase()
+}
+
+/// The report's images as files, for docs and other tools: `VIEW-reference.png`,
+/// `VIEW-METHOD-PRESET.png` and `VIEW-METHOD-PRESET-error.png`.
+fn write_images(dir: &Path, views: &[ViewResult]) -> Result<()> {
+    create_dir(dir)?;
+    let write = |name: String, png: &[u8]| -> Result<()> {
+        let path = dir.join(name);
+        std::fs::write(&path, png).with_context(|| format!("cannot write {}", path.display()))
+    };
+    for view in views {
+        let view_name = slug(&view.name);
+        write(format!("{view_name}-reference.png"), &view.reference_png)?;
+        for m in &view.methods {
+            let stem = format!("{view_name}-{}-{}", m.method, m.preset);
+            write(format!("{stem}.png"), &m.ao_png)?;
+            write(format!("{stem}-error.png"), &m.error_png)?;
+        }
+    }
+    Ok(())
+}
+
+pub fn run(args: &CompareArgs) -> Result<()> {
+    let methods = methods(&args.methods)?;
+    if methods.is_empty() || args.presets.is_empty() {
+        bail!("--methods and --presets need at least one entry each");
+    }
+    if args.timing_frames > 1000 {
+        bail!("--timing-frames {} is more than 1000", args.timing_frames);
+    }
+    let cache_dir = args.cache.clone().unwrap_or_else(cache::default_dir);
+    let gpu = open_gpu()?;
+    let mut scored = Vec::new();
+    if let Some(dir) = &args.inputs {
+        scored.push(score_inputs(&gpu, args, &methods, dir)?);
+    } else if args.view.is_empty() {
+        let scene = Scene::open(args.scene.as_deref().unwrap_or("room"))?;
+        let camera = args.camera.resolve(&scene)?;
+        scored.push(score_scene_view(
+            &gpu, args, &methods, &cache_dir, &scene, &camera,
+        )?);
+    } else {
+        for view in &args.view {
+            let (spec, camera_name) = match view.rsplit_once('@') {
+                Some((spec, camera)) => (spec, Some(camera)),
+                None => (view.as_str(), None),
+            };
+            let scene = Scene::open(spec)?;
+            let camera = scene.camera(camera_name)?;
+            scored.push(score_scene_view(
+                &gpu, args, &methods, &cache_dir, &scene, &camera,
+            )?);
+        }
+    }
+
+    let out = &args.out;
+    create_dir(out)?;
+    let mut views = Vec::new();
+    let mut rows = Vec::new();
+    for view in scored {
+        for m in &view.results {
+            rows.push(json!({
+                "view": view.name,
+                "method": m.method,
+                "preset": m.preset,
+                "samples_per_pixel": m.samples_per_pixel,
+                "gpu_ms": m.gpu_ms,
+                "all": metrics_json(&m.all),
+                "edges": metrics_json(&m.edges),
+            }));
+        }
+        views.push(ViewResult {
+            reference_png: encode_png_grey(view.reference.size, &view.reference.ao)?,
+            name: view.name,
+            methods: view.results,
+        });
+    }
+    write_images(&out.join("images"), &views)?;
+    let size = views.first().map(|_| args.size);
+    let report = Report {
+        title: "aokit: AO methods against the ray-traced reference".to_string(),
+        notes: vec![
+            format!("Adapter: {}.", gpu.describe()),
+            match (&args.inputs, size) {
+                (Some(dir), _) => format!("Passes from {}.", dir.display()),
+                (None, Some(size)) => format!(
+                    "{}x{} pixels; reference with {} cosine-weighted rays per pixel, no falloff.",
+                    size[0], size[1], args.spp
+                ),
+                (None, None) => String::new(),
+            },
+            format!(
+                "Command: aokit {}",
+                std::env::args().skip(1).collect::<Vec<_>>().join(" ")
+            ),
+        ],
+        error_range: ERROR_RANGE,
+        legend_png: encode_png_rgb([256, 12], &legend_rgb(256, 12))?,
+        views,
+    };
+    let write = |name: &str, text: String| -> Result<()> {
+        let path = out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("cannot write {}", path.display()))
+    };
+    write("metrics.csv", report.csv())?;
+    write("metrics.md", report.markdown())?;
+    write(
+        "metrics.json",
+        serde_json::to_string_pretty(&json!({ "adapter": gpu.describe(), "results": rows }))?
+            + "\n",
+    )?;
+    write("report.html", report.html())?;
+    print!("{}", report.markdown());
+    println!(
+        "wrote metrics.csv, metrics.md, metrics.json, report.html and images/ to {}",
+        out.display()
+    );
+    Ok(())
+}

@@ -1,0 +1,48 @@
+//! The G-buffer export shared by `render --gbuffer` and `reference`: depth.exr, normal.exr and
+//! camera.json, the format docs/camera-json.md describes.
+
+use std::path::Path;
+
+use anyhow::{Context, Result};
+use aokit::Projection;
+use aokit_eval::write_exr;
+use aokit_scene::CameraFile;
+use glam::{Mat4, Vec3};
+
+/// Writes the three files into `out` and returns their names.
+pub fn write_gbuffer(
+    out: &Path,
+    size: [u32; 2],
+    linear_depth: &[f32],
+    normals: &[Vec3],
+    projection: &Projection,
+    view_from_world: Mat4,
+) -> Result<[&'static str; 3]> {
+    write_exr(
+        &out.join("depth.exr"),
+        size,
+        &[("Z", linear_depth.to_vec())],
+    )?;
+    let channel = |i: usize| normals.iter().map(|n| n[i]).collect::<Vec<f32>>();
+    write_exr(
+        &out.join("normal.exr"),
+        size,
+        &[("R", channel(0)), ("G", channel(1)), ("B", channel(2))],
+    )?;
+    write_json(
+        &out.join("camera.json"),
+        &CameraFile::new(projection, view_from_world, size),
+    )?;
+    Ok(["depth.exr", "normal.exr", "camera.json"])
+}
+
+/// Pretty JSON with a trailing newline.
+pub fn write_json(path: &Path, value: &impl serde::Serialize) -> Result<()> {
+    std::fs::write(path, serde_json::to_string_pretty(value)? + "\n")
+        .with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// Creates `dir` and its parents, naming it on failure.
+pub fn create_dir(dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))
+}

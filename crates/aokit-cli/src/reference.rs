@@ -1,0 +1,154 @@
+//! `aokit reference`: ray-traced ground-truth AO for a scene and camera.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Result, anyhow};
+use aokit_eval::{write_exr, write_grey_png};
+use aokit_reference::{AoOptions, Falloff, ReferenceImage};
+use aokit_scene::{Camera, Scene};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use serde::{Deserialize, Serialize};
+
+use crate::camera_args::CameraArgs;
+use crate::export::{create_dir, write_gbuffer, write_json};
+use crate::render::parse_size;
+
+#[derive(Args, Debug)]
+pub struct ReferenceArgs {
+    /// Built-in scene (room, stairs, thin, open) or a .gltf/.glb/.obj file.
+    #[arg(long, default_value = "room")]
+    pub scene: String,
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// Image size.
+    #[arg(long, value_name = "WxH", default_value = "640x360", value_parser = parse_size)]
+    pub size: [u32; 2],
+    /// AO radius in world units (default: the scene's suggested radius, else 1).
+    #[arg(long)]
+    pub radius: Option<f32>,
+    /// Rays per pixel.
+    #[arg(long, default_value_t = 256)]
+    pub spp: u32,
+    /// Seed of the per-pixel sample scrambling; the same seed gives the same image.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// How a hit at distance t counts: none (1), linear (1 - t/R), quadratic (1 - (t/R)^2).
+    #[arg(long, default_value = "none")]
+    pub falloff: Falloff,
+    /// Output directory.
+    #[arg(long, value_name = "DIR", default_value = "aokit-out")]
+    pub out: PathBuf,
+}
+
+/// What a reference was traced with, saved beside it as `reference.json` so that `aokit
+/// compare --inputs` scores methods with the same radius.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ReferenceInfo {
+    /// AO radius in world units.
+    pub radius: f32,
+    /// Rays per pixel.
+    pub spp: u32,
+    /// Scrambling seed.
+    pub seed: u64,
+    /// `none`, `linear` or `quadratic`.
+    pub falloff: String,
+}
+
+impl ReferenceInfo {
+    pub fn new(options: &AoOptions) -> Self {
+        Self {
+            radius: options.radius,
+            spp: options.spp,
+            seed: options.seed,
+            falloff: options.falloff.name().to_string(),
+        }
+    }
+
+    pub fn read(dir: &Path) -> Result<Self> {
+        let path = dir.join("reference.json");
+        let text = std::fs::read_to_string(&path)
+            .map_err(|e| anyhow!("cannot read {}: {e}", path.display()))?;
+        serde_json::from_str(&text)
+            .map_err(|e| anyhow!("{} is not a reference.json: {e}", path.display()))
+    }
+}
+
+/// Traces `camera`'s view of `scene` with a progress bar on stderr.
+pub fn trace(
+    scene: &Scene,
+    camera: &Camera,
+    size: [u32; 2],
+    options: &AoOptions,
+) -> Result<ReferenceImage> {
+    options.validate()?;
+    camera.validate().map_err(|e| anyhow!(e))?;
+    let tracer =
+        aokit_scene::reference::tracer(scene).map_err(|e| anyhow!("{}: {e}", scene.name))?;
+    let pixel_camera = aokit_scene::reference::pixel_camera(scene, camera, size);
+    let bar = ProgressBar::new(u64::from(size[1])).with_style(
+        ProgressStyle::with_template("tracing {msg} [{bar:30}] {pos}/{len} rows, {eta} left")
+            .expect("progress template is valid")
+            .progress_chars("=> "),
+    );
+    bar.set_message(format!("{} ({} rays per pixel)", scene.name, options.spp));
+    let image = tracer.render(&pixel_camera, options, &|rows| {
+        bar.set_position(rows as u64)
+    });
+    bar.finish_and_clear();
+    Ok(image?)
+}
+
+pub fn run(args: &ReferenceArgs) -> Result<()> {
+    let scene = Scene::open(&args.scene)?;
+    let camera = args.camera.resolve(&scene)?;
+    let options = AoOptions {
+        radius: args.radius.or(scene.suggested_radius).unwrap_or(1.0),
+        spp: args.spp,
+        seed: args.seed,
+        falloff: args.falloff,
+    };
+    let started = std::time::Instant::now();
+    let image = trace(&scene, &camera, args.size, &options)?;
+    let elapsed = started.elapsed();
+
+    let out = &args.out;
+    create_dir(out)?;
+    write_exr(
+        &out.join("reference.exr"),
+        image.size,
+        &[("Y", image.ao.clone())],
+    )?;
+    write_grey_png(&out.join("reference.png"), image.size, &image.ao)?;
+    let projection = camera.projection(image.size[0] as f32 / image.size[1] as f32, &scene.bounds);
+    let gbuffer = write_gbuffer(
+        out,
+        image.size,
+        &image.linear_depth,
+        &image.normals,
+        &projection,
+        camera.view_from_world(),
+    )?;
+    write_json(&out.join("reference.json"), &ReferenceInfo::new(&options))?;
+    let rays = f64::from(image.size[0]) * f64::from(image.size[1]) * f64::from(options.spp);
+    println!(
+        "traced `{}` from camera `{}` at {}x{}, {} rays per pixel, radius {}, falloff {} in {:.1} s \
+         ({:.2} M rays/s): wrote reference.exr, reference.png, {}, reference.json to {}",
+        scene.name,
+        camera.name,
+        image.size[0],
+        image.size[1],
+        options.spp,
+        options.radius,
+        options.falloff.name(),
+        elapsed.as_secs_f64(),
+        rays / elapsed.as_secs_f64() / 1e6,
+        gbuffer.join(", "),
+        out.display()
+    );
+    println!(
+        "{}",
+        crate::render::ao_summary(&image.ao, &image.linear_depth)
+    );
+    Ok(())
+}

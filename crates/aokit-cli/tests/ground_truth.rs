@@ -1,0 +1,462 @@
+//! `aokit reference`, `aokit ao` and `aokit compare`, run in fresh temporary directories.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn aokit(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_aokit"))
+        .args(args)
+        .current_dir(dir)
+        // A cache of the test's own, so a run never reuses another's references.
+        .env("AOKIT_CACHE", dir.join("cache"))
+        .output()
+        .expect("run aokit")
+}
+
+fn ok(dir: &Path, args: &[&str]) -> String {
+    let out = aokit(dir, args);
+    assert!(
+        out.status.success(),
+        "aokit {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+fn exr(path: &Path) -> Vec<f32> {
+    aokit_eval::read_scalar_exr(path).unwrap().data
+}
+
+#[test]
+fn reference_writes_the_ground_truth_and_the_gbuffer_deterministically() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let args = |out: &'static str, seed: &'static str| {
+        [
+            "reference",
+            "--scene",
+            "room",
+            "--size",
+            "48x32",
+            "--spp",
+            "32",
+            "--seed",
+            seed,
+            "--out",
+            out,
+        ]
+    };
+    let stdout = ok(d, &args("a", "5"));
+    assert!(stdout.contains("rays per pixel"), "{stdout}");
+    for file in [
+        "reference.exr",
+        "reference.png",
+        "depth.exr",
+        "normal.exr",
+        "camera.json",
+        "reference.json",
+    ] {
+        assert!(d.join("a").join(file).is_file(), "{file} missing");
+    }
+    let info: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("a/reference.json")).unwrap())
+            .unwrap();
+    assert_eq!(info["spp"], 32);
+    assert_eq!(info["falloff"], "none");
+    let a = exr(&d.join("a/reference.exr"));
+    assert_eq!(a.len(), 48 * 32);
+    assert!(a.iter().all(|v| (0.0..=1.0).contains(v)));
+    assert!(a.iter().any(|&v| v < 0.5), "the room has dark corners");
+
+    ok(d, &args("b", "5"));
+    assert_eq!(a, exr(&d.join("b/reference.exr")), "same seed, same image");
+    ok(d, &args("c", "6"));
+    assert_ne!(
+        a,
+        exr(&d.join("c/reference.exr")),
+        "another seed, other noise"
+    );
+
+    // The raster's G-buffer of the same view holds the same depth.
+    ok(
+        d,
+        &[
+            "render",
+            "--scene",
+            "room",
+            "--size",
+            "48x32",
+            "--gbuffer",
+            "--out",
+            "r",
+        ],
+    );
+    let raster = aokit_eval::read_depth(&d.join("r/depth.exr")).unwrap().data;
+    let traced = aokit_eval::read_depth(&d.join("a/depth.exr")).unwrap().data;
+    let agree = raster
+        .iter()
+        .zip(&traced)
+        .filter(|(r, t)| (*r - *t).abs() <= 1e-4 * r.max(**t))
+        .count();
+    assert!(
+        agree * 1000 >= raster.len() * 999,
+        "{agree} of {} agree",
+        raster.len()
+    );
+}
+
+#[test]
+fn ao_on_exported_passes_matches_render_itself() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    ok(
+        d,
+        &[
+            "render",
+            "--scene",
+            "stairs",
+            "--size",
+            "80x48",
+            "--radius",
+            "0.5",
+            "--gbuffer",
+            "--out",
+            "g",
+        ],
+    );
+    let stdout = ok(
+        d,
+        &[
+            "ao",
+            "--depth",
+            "g/depth.exr",
+            "--normals",
+            "g/normal.exr",
+            "--camera",
+            "g/camera.json",
+            "--radius",
+            "0.5",
+            "--out",
+            "a",
+        ],
+    );
+    assert!(stdout.contains("normals from file"), "{stdout}");
+    let rendered = exr(&d.join("g/ao.exr"));
+    let recomputed = exr(&d.join("a/ao.exr"));
+    // Exported depth is the pipeline's own linear depth, and oct32 normals survive the round
+    // trip through float: the AO is the same to the bit.
+    assert_eq!(rendered, recomputed);
+    assert!(d.join("a/ao.png").is_file());
+
+    // Without normals they are reconstructed from depth, and AO stays close.
+    let stdout = ok(
+        d,
+        &[
+            "ao",
+            "--depth",
+            "g/depth.exr",
+            "--camera",
+            "g/camera.json",
+            "--radius",
+            "0.5",
+            "--out",
+            "n",
+        ],
+    );
+    assert!(stdout.contains("reconstructed from depth"), "{stdout}");
+    let reconstructed = exr(&d.join("n/ao.exr"));
+    let mean_difference = rendered
+        .iter()
+        .zip(&reconstructed)
+        .map(|(a, b)| (a - b).abs())
+        .sum::<f32>()
+        / rendered.len() as f32;
+    assert!(mean_difference < 0.05, "mean difference {mean_difference}");
+}
+
+/// Writes `values` (H x W float32) as .npy version 1.0.
+fn write_npy(path: &Path, shape: &[usize], values: &[f32]) {
+    let dims = shape.iter().map(|d| format!("{d}, ")).collect::<String>();
+    let mut header = format!("{{'descr': '<f4', 'fortran_order': False, 'shape': ({dims}), }}");
+    while (10 + header.len() + 1) % 64 != 0 {
+        header.push(' ');
+    }
+    header.push('\n');
+    let mut bytes = b"\x93NUMPY\x01\x00".to_vec();
+    bytes.extend((header.len() as u16).to_le_bytes());
+    bytes.extend(header.as_bytes());
+    for v in values {
+        bytes.extend(v.to_le_bytes());
+    }
+    std::fs::write(path, bytes).unwrap();
+}
+
+#[test]
+fn ao_reads_numpy_depth_with_infinite_background_and_ndc_depth() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    ok(
+        d,
+        &[
+            "render",
+            "--scene",
+            "room",
+            "--size",
+            "64x40",
+            "--gbuffer",
+            "--out",
+            "g",
+        ],
+    );
+    let depth = aokit_eval::read_depth(&d.join("g/depth.exr")).unwrap().data;
+    let infinite_sky: Vec<f32> = depth
+        .iter()
+        .map(|&z| if z > 0.0 { z } else { f32::INFINITY })
+        .collect();
+    write_npy(&d.join("depth.npy"), &[40, 64], &infinite_sky);
+    ok(
+        d,
+        &[
+            "ao",
+            "--depth",
+            "depth.npy",
+            "--camera",
+            "g/camera.json",
+            "--out",
+            "npy",
+        ],
+    );
+    let ao = exr(&d.join("npy/ao.exr"));
+    assert!(ao.iter().all(|v| v.is_finite() && (0.0..=1.0).contains(v)));
+
+    // The same depth as depth-buffer values (reverse-Z, infinite far: ndc = near / depth).
+    let camera: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("g/camera.json")).unwrap()).unwrap();
+    let near = camera["near"].as_f64().unwrap() as f32;
+    let ndc: Vec<f32> = depth
+        .iter()
+        .map(|&z| if z > 0.0 { near / z } else { 0.0 })
+        .collect();
+    write_npy(&d.join("ndc.npy"), &[40, 64, 1], &ndc);
+    ok(
+        d,
+        &[
+            "ao",
+            "--depth",
+            "ndc.npy",
+            "--depth-kind",
+            "ndc",
+            "--camera",
+            "g/camera.json",
+            "--out",
+            "ndc",
+        ],
+    );
+    let from_ndc = exr(&d.join("ndc/ao.exr"));
+    let worst = ao
+        .iter()
+        .zip(&from_ndc)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0f32, f32::max);
+    assert!(worst < 0.05, "linear and NDC depth give AO {worst} apart");
+}
+
+#[test]
+fn ao_refuses_bad_passes_with_the_reason() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    ok(
+        d,
+        &[
+            "render",
+            "--scene",
+            "open",
+            "--size",
+            "32x24",
+            "--gbuffer",
+            "--out",
+            "g",
+        ],
+    );
+    std::fs::write(d.join("junk.exr"), b"not an exr").unwrap();
+    std::fs::write(d.join("camera-bad.json"), b"{\"width\": 3}").unwrap();
+    write_npy(&d.join("small.npy"), &[2, 2], &[1.0; 4]);
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["ao", "--depth", "missing.exr", "--camera", "g/camera.json"],
+            "missing.exr",
+        ),
+        (
+            &["ao", "--depth", "junk.exr", "--camera", "g/camera.json"],
+            "junk.exr",
+        ),
+        (
+            &[
+                "ao",
+                "--depth",
+                "g/depth.exr",
+                "--camera",
+                "camera-bad.json",
+            ],
+            "camera-bad.json",
+        ),
+        (
+            &["ao", "--depth", "small.npy", "--camera", "g/camera.json"],
+            "2x2",
+        ),
+        (
+            &[
+                "ao",
+                "--depth",
+                "g/depth.exr",
+                "--normals",
+                "small.npy",
+                "--camera",
+                "g/camera.json",
+            ],
+            "small.npy",
+        ),
+        (&["reference", "--spp", "0"], "rays per pixel"),
+        (&["reference", "--falloff", "cubic"], "cubic"),
+        (
+            &["compare", "--inputs", "g", "--methods", "gtao"],
+            "reference.exr",
+        ),
+    ];
+    for (args, expected) in cases {
+        let out = aokit(d, args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains(expected),
+            "{args:?}: expected `{expected}` in: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn compare_scores_gtao_against_a_cached_reference_and_writes_the_report() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let args = [
+        "compare",
+        "--scene",
+        "room",
+        "--size",
+        "64x40",
+        "--spp",
+        "64",
+        "--presets",
+        "low,high",
+        "--timing-frames",
+        "2",
+        "--out",
+        "cmp",
+    ];
+    let first = aokit(d, &args);
+    assert!(
+        first.status.success(),
+        "{}",
+        String::from_utf8_lossy(&first.stderr)
+    );
+    assert!(String::from_utf8_lossy(&first.stderr).contains("traced"));
+    for file in ["metrics.csv", "metrics.md", "metrics.json", "report.html"] {
+        assert!(d.join("cmp").join(file).is_file(), "{file} missing");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("cmp/metrics.json")).unwrap())
+            .unwrap();
+    let results = json["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    for r in results {
+        assert_eq!(r["method"], "gtao");
+        let mae = r["all"]["mae"].as_f64().unwrap();
+        assert!(mae > 0.0 && mae < 0.3, "MAE {mae}");
+        assert!(r["edges"]["pixels"].as_u64().unwrap() > 0);
+    }
+    let csv = std::fs::read_to_string(d.join("cmp/metrics.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 3, "{csv}");
+    let html = std::fs::read_to_string(d.join("cmp/report.html")).unwrap();
+    assert!(html.contains("data:image/png;base64,") && html.contains("<svg"));
+    for image in [
+        "room-front-reference.png",
+        "room-front-gtao-low.png",
+        "room-front-gtao-high-error.png",
+    ] {
+        assert!(
+            d.join("cmp/images").join(image).is_file(),
+            "{image} missing"
+        );
+    }
+
+    // The second run finds the reference in the cache, and scores identically.
+    let second = aokit(d, &[&args[..args.len() - 1], &["cmp2"]].concat());
+    assert!(String::from_utf8_lossy(&second.stderr).contains("cached"));
+    let again: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("cmp2/metrics.json")).unwrap())
+            .unwrap();
+    for (a, b) in results.iter().zip(again["results"].as_array().unwrap()) {
+        assert_eq!(a["all"], b["all"]);
+    }
+}
+
+#[test]
+fn compare_on_exported_passes_scores_like_compare_on_the_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // `aokit reference` writes passes and reference.exr side by side: the --inputs layout.
+    ok(
+        d,
+        &[
+            "reference",
+            "--scene",
+            "stairs",
+            "--size",
+            "64x40",
+            "--spp",
+            "64",
+            "--out",
+            "ref",
+        ],
+    );
+    ok(
+        d,
+        &[
+            "compare",
+            "--inputs",
+            "ref",
+            "--presets",
+            "medium",
+            "--out",
+            "in",
+        ],
+    );
+    ok(
+        d,
+        &[
+            "compare",
+            "--scene",
+            "stairs",
+            "--size",
+            "64x40",
+            "--spp",
+            "64",
+            "--presets",
+            "medium",
+            "--out",
+            "sc",
+        ],
+    );
+    let mae = |path: &str| -> f64 {
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(d.join(path)).unwrap()).unwrap();
+        json["results"][0]["all"]["mae"].as_f64().unwrap()
+    };
+    let (inputs, scene) = (mae("in/metrics.json"), mae("sc/metrics.json"));
+    // The passes differ only in their normals: geometric from the tracer, shading from the
+    // raster; on the stairs' flat faces those are the same.
+    assert!(
+        (inputs - scene).abs() < 0.01,
+        "--inputs MAE {inputs}, scene MAE {scene}"
+    );
+}
