@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Regenerates docs/quality.md and its images: every method against the ray-traced reference on
+# the built-in scenes and the four Sponza cameras. Takes a few minutes on 2 cores (the
+# references are cached; later runs only rerun the methods).
+#
+#   bash scripts/quality.sh [METHODS]        # METHODS: comma-separated, default: all of them
+set -euo pipefail
+cd "$(dirname "$0")/.."
+methods=${1:-all}
+out=target/quality
+rm -rf "$out"
+cargo run --quiet --release -p aokit-cli -- compare \
+    --view room --view stairs --view thin \
+    --view scenes/sponza.obj@atrium --view scenes/sponza.obj@arcade \
+    --view scenes/sponza.obj@gallery --view scenes/sponza.obj@floor \
+    --methods "$methods" --presets low,medium,high,ultra \
+    --size 480x270 --spp 512 --out "$out" >/dev/null
+
+images=docs/images/quality
+rm -rf "$images"
+mkdir -p "$images"
+shown=(stairs-side thin-front sponza-atrium)
+for view in "${shown[@]}"; do
+    cp "$out/images/$view-reference.png" "$images/"
+    cp "$out/images/$view"-*-high.png "$out/images/$view"-*-high-error.png "$images/"
+done
+
+{
+    cat <<'HEAD'
+# Quality: every method against the ray-traced reference
+
+Each method's raw AO (no denoising) is scored against `aokit reference` on the same pixels
+(see [reference.md](reference.md)): ambient occlusion with the same radius, no falloff, 512
+cosine-weighted rays per pixel, whose own noise (standard error at most 0.022 per pixel, far
+less on average) is small next to the errors below. Edge pixels are those within 2 pixels of a
+depth edge (a 5% depth step, or the sky), where halos and missing contact shadows live.
+
+GPU times here come from whatever adapter made the table (named below); on a software rasteriser
+they only rank presets against each other.
+
+Regenerate this page with `bash scripts/quality.sh`. It writes `target/quality/report.html`, the
+full report with every image and error map, and copies a few of them here.
+
+HEAD
+    # The report's own title goes; its sections move one level down under this page's.
+    tail -n +2 "$out/metrics.md" | sed 's/^## /### /'
+    echo
+    echo "## Pictures (high preset)"
+    echo
+    echo "Error maps: blue = too dark (over-occludes), red = too bright, white = right, grey = no surface; saturated at +-0.25."
+    echo
+    for view in "${shown[@]}"; do
+        echo "### $view"
+        echo
+        printf '| reference |'
+        for f in "$images/$view"-*-high.png; do printf ' %s |' "$(basename "$f" .png | sed "s/^$view-//")"; done
+        echo
+        printf '|---|'
+        for f in "$images/$view"-*-high.png; do printf -- '---|'; done
+        echo
+        printf '| ![](images/quality/%s-reference.png) |' "$view"
+        for f in "$images/$view"-*-high.png; do printf ' ![](images/quality/%s) |' "$(basename "$f")"; done
+        echo
+        printf '| |'
+        for f in "$images/$view"-*-high.png; do printf ' ![](images/quality/%s-error.png) |' "$(basename "$f" .png)"; done
+        echo
+        echo
+    done
+} > docs/quality.md
+echo "wrote docs/quality.md and $images/"
