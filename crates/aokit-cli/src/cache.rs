@@ -17,7 +17,7 @@ use crate::export::{create_dir, write_gbuffer, write_json};
 use crate::reference::{ReferenceInfo, trace};
 
 /// Bump when the tracer's output changes for the same inputs, so old entries are not reused.
-const TRACER_VERSION: u32 = 1;
+const TRACER_VERSION: u32 = 2;
 
 /// The cache directory: `--cache`, else `$AOKIT_CACHE`, else `$XDG_CACHE_HOME/aokit`, else
 /// `~/.cache/aokit`.

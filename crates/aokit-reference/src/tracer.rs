@@ -16,8 +16,8 @@ use crate::ReferenceError;
 pub struct Hit {
     /// Distance along the (unit) ray direction.
     pub t: f32,
-    /// The hit point, interpolated on the triangle rather than stepped along the ray, so that
-    /// it lies on the surface to single precision.
+    /// The hit point, stepped along the ray and then moved onto the triangle's plane, so that
+    /// it lies on the surface to single precision however far the ray travelled.
     pub point: Vec3,
     /// Unit geometric normal, turned to face the ray's origin.
     pub normal: Vec3,
@@ -111,9 +111,9 @@ impl Tracer {
             return None;
         }
         let tri = &self.triangles[hit.primitive_id as usize];
-        let [u, v] = tri.compute_barycentric(&ray).to_array();
-        let point = tri.v0 * (1.0 - u - v) + tri.v1 * u + tri.v2 * v;
         let normal = Vec3::from(tri.compute_normal());
+        let stepped = origin + hit.t * direction;
+        let point = stepped - normal * normal.dot(stepped - Vec3::from(tri.v0));
         let normal = if normal.dot(direction) > 0.0 {
             -normal
         } else {
@@ -121,7 +121,7 @@ impl Tracer {
         };
         Some(Hit {
             t: hit.t,
-            point: point.into(),
+            point,
             normal,
         })
     }
@@ -176,6 +176,7 @@ mod tests {
             .unwrap();
         assert_eq!(hit.t, 5.0);
         assert_eq!(hit.normal, Vec3::Z);
+        assert_eq!(hit.point, Vec3::ZERO);
         // From behind, the normal turns to face the ray.
         let back = tracer
             .closest_hit(Vec3::new(0.0, 0.0, -5.0), Vec3::Z, 0.0, f32::INFINITY)

@@ -5,7 +5,7 @@
 //! four of those. The stratified sequence does better than independent rays, never worse, so a
 //! failure means a biased integrator, not bad luck.
 
-use aokit_reference::{AoOptions, Falloff, PixelSampler, Tracer};
+use aokit_reference::{AoOptions, Falloff, Lens, PixelCamera, PixelSampler, Tracer};
 use glam::Vec3;
 
 /// Points averaged per estimate, each with its own scrambling, so that the test sees the
@@ -141,4 +141,47 @@ fn the_same_seed_gives_the_same_estimate_and_another_seed_another() {
     };
     assert_eq!(at(1), at(1));
     assert_ne!(at(1), at(2));
+}
+
+#[test]
+fn whole_images_between_two_planes_match_the_closed_form_at_every_pixel() {
+    // Primary hits go through the same path as any scene's: a camera between a floor and a
+    // ceiling 10^4 wide (two triangles each, so hit points must be exact far from the vertices)
+    // looks down at the floor. Every floor pixel has AO = (h / R)^2.
+    let (h, radius) = (1.0f32, 2.0f32);
+    let (mut p, mut i) = (Vec::new(), Vec::new());
+    square(&mut p, &mut i, 1, 0.0, 1e4);
+    square(&mut p, &mut i, 1, h, 1e4);
+    let tracer = Tracer::new(&p, &i).unwrap();
+    let camera = PixelCamera {
+        size: [24, 16],
+        lens: Lens::Perspective {
+            fov_y: 100f32.to_radians(),
+        },
+        view_from_world: glam::camera::rh::view::look_at_mat4(
+            Vec3::new(3.0, 0.5, -7.0),
+            Vec3::new(4.0, 0.0, -6.0),
+            Vec3::Y,
+        ),
+        near: 0.01,
+        far: None,
+    };
+    let options = AoOptions {
+        spp: 4096,
+        ..options(radius, Falloff::None)
+    };
+    let image = tracer.render(&camera, &options, &|_| {}).unwrap();
+    let expected = between_planes(f64::from(h / radius), Falloff::None);
+    let per_pixel = 4.0 * (expected * (1.0 - expected) / 4096.0).sqrt();
+    let mut floor_pixels = 0;
+    for (k, (&ao, &depth)) in image.ao.iter().zip(&image.linear_depth).enumerate() {
+        assert!(depth > 0.0, "pixel {k} sees nothing");
+        // The upper part of the view sees the ceiling, also (h / R)^2 by symmetry.
+        assert!(
+            (f64::from(ao) - expected).abs() < per_pixel,
+            "pixel {k}: AO {ao}, closed form {expected}"
+        );
+        floor_pixels += usize::from(image.normals[k].y.abs() > 0.0);
+    }
+    assert_eq!(floor_pixels, image.ao.len());
 }
