@@ -22,6 +22,7 @@ use crate::export::create_dir;
 use crate::passes::{self, DepthKind, NormalSpace};
 use crate::reference::ReferenceInfo;
 use crate::render::{open_gpu, parse_size};
+use crate::settings_args::OverrideArgs;
 
 #[derive(Args, Debug)]
 pub struct CompareArgs {
@@ -46,9 +47,13 @@ pub struct CompareArgs {
     /// Presets to score, comma-separated.
     #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
     pub presets: Vec<Preset>,
-    /// AO radius (default: the scene's suggested radius, else 1).
+    /// AO radius (default: the scene's suggested radius, else 1); the reference uses it too.
     #[arg(long)]
     pub radius: Option<f32>,
+    /// Laid over every method's preset before scoring (keys of other methods are ignored by
+    /// each method); `radius` must come from --radius, which the reference shares.
+    #[command(flatten)]
+    pub overrides: OverrideArgs,
     /// Reference rays per pixel.
     #[arg(long, default_value_t = 512)]
     pub spp: u32,
@@ -95,11 +100,21 @@ fn methods(names: &[String]) -> Result<Vec<Method>> {
     Ok(methods)
 }
 
-fn settings_for(method: Method, preset: Preset, radius: f32) -> AoSettings {
-    AoSettings {
+fn settings_for(
+    args: &CompareArgs,
+    method: Method,
+    preset: Preset,
+    radius: f32,
+) -> Result<AoSettings> {
+    let base = AoSettings {
         radius,
         ..AoSettings::preset(method, preset)
+    };
+    let settings = args.overrides.apply(&base, None)?;
+    if settings.radius != radius {
+        bail!("set the radius with --radius, so that the reference is traced with it too");
     }
+    Ok(settings)
 }
 
 fn median(mut values: Vec<f64>) -> Option<f64> {
@@ -167,13 +182,13 @@ fn score_scene_view(
         falloff: Falloff::None,
     };
     let reference = cache::reference(cache_dir, scene, camera, args.size, &options)?;
-    let first = settings_for(methods[0], args.presets[0], radius);
+    let first = settings_for(args, methods[0], args.presets[0], radius)?;
     let mut renderer = Renderer::new(gpu, scene, &first)?;
     let timed = renderer.enable_timing(gpu);
     let mut results = Vec::new();
     for &method in methods {
         for &preset in &args.presets {
-            let settings = settings_for(method, preset, radius);
+            let settings = settings_for(args, method, preset, radius)?;
             renderer.set_settings(gpu, &settings)?;
             let frame = renderer.render(gpu, camera, args.size, 0)?;
             let mut times = Vec::new();
@@ -236,13 +251,13 @@ fn score_inputs(
             .collect(),
         normals: Vec::new(),
     };
-    let first = settings_for(methods[0], args.presets[0], radius);
+    let first = settings_for(args, methods[0], args.presets[0], radius)?;
     let mut external = ExternalAo::new(gpu, &first, &loaded.passes())?;
     let timed = external.enable_timing(gpu);
     let mut results = Vec::new();
     for &method in methods {
         for &preset in &args.presets {
-            let settings = settings_for(method, preset, radius);
+            let settings = settings_for(args, method, preset, radius)?;
             external.set_settings(gpu, &settings)?;
             let ao = external.run(gpu, 0)?;
             let mut times = Vec::new();

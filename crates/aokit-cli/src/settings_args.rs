@@ -18,6 +18,13 @@ pub struct SettingsArgs {
     /// AO radius in world units (default: the scene's suggested radius, else 1).
     #[arg(long)]
     pub radius: Option<f32>,
+    #[command(flatten)]
+    pub overrides: OverrideArgs,
+}
+
+/// A settings file and `--set` paths, laid over settings built elsewhere.
+#[derive(Args, Debug, Clone, Default)]
+pub struct OverrideArgs {
     /// TOML file with any subset of the settings; applied after the preset.
     #[arg(long, value_name = "FILE.toml")]
     pub settings: Option<PathBuf>,
@@ -35,7 +42,14 @@ impl SettingsArgs {
         if let Some(radius) = suggested_radius {
             settings.radius = radius;
         }
-        let mut table = to_table(&settings)?;
+        self.overrides.apply(&settings, self.radius)
+    }
+}
+
+impl OverrideArgs {
+    /// `base` with the file, then `radius` when given, then each `--set`, checked.
+    pub fn apply(&self, base: &AoSettings, radius: Option<f32>) -> Result<AoSettings> {
+        let mut table = to_table(base)?;
         if let Some(path) = &self.settings {
             let text = std::fs::read_to_string(path)
                 .with_context(|| format!("cannot read settings file {}", path.display()))?;
@@ -44,7 +58,7 @@ impl SettingsArgs {
             merge(&mut table, patch, "")
                 .with_context(|| format!("in settings file {}", path.display()))?;
         }
-        if let Some(radius) = self.radius {
+        if let Some(radius) = radius {
             table.insert("radius".into(), toml::Value::Float(radius.into()));
         }
         for assignment in &self.set {
@@ -151,8 +165,10 @@ mod tests {
             method: None,
             preset: None,
             radius: None,
-            settings: None,
-            set: set.iter().map(|s| s.to_string()).collect(),
+            overrides: OverrideArgs {
+                settings: None,
+                set: set.iter().map(|s| s.to_string()).collect(),
+            },
         }
     }
 
@@ -200,7 +216,7 @@ mod tests {
         std::fs::write(&file, "radius = 3.0\n[gtao]\nsteps_per_side = 7\n").unwrap();
         let mut a = args(&[]);
         a.preset = Some("low".into());
-        a.settings = Some(file.clone());
+        a.overrides.settings = Some(file.clone());
         let s = a.resolve(Some(0.5)).unwrap();
         assert_eq!(
             (s.radius, s.gtao.steps_per_side, s.gtao.slice_count),
@@ -208,7 +224,7 @@ mod tests {
         );
         a.radius = Some(4.0);
         assert_eq!(a.resolve(Some(0.5)).unwrap().radius, 4.0);
-        a.set = vec!["radius=5".into()];
+        a.overrides.set = vec!["radius=5".into()];
         assert_eq!(a.resolve(Some(0.5)).unwrap().radius, 5.0);
         std::fs::write(&file, "[gtao]\nslicecount = 7\n").unwrap();
         let err = format!("{:#}", a.resolve(None).unwrap_err());

@@ -75,7 +75,9 @@ impl ExternalAo {
         gpu: &GpuContext,
         settings: &AoSettings,
     ) -> Result<(), RenderError> {
-        Ok(self.pipeline.set_settings(&gpu.queue, settings)?)
+        Ok(self
+            .pipeline
+            .set_settings(&gpu.device, &gpu.queue, settings)?)
     }
 
     /// Times the AO passes of later runs; `false` when the device has no timestamps.

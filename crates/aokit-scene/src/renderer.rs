@@ -1,6 +1,6 @@
 //! Renders a scene through the AO pipeline and reads the results back.
 
-use aokit::gpu::{create_texture_2d, read_texture, read_texture_f32};
+use aokit::gpu::{create_texture_2d, read_texture, read_texture_f32, read_texture_rgba16f};
 use aokit::{
     AoError, AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, PassTime, Projection,
 };
@@ -29,6 +29,8 @@ pub struct Frame {
     pub linear_depth: Vec<f32>,
     /// View-space unit normals, zero where nothing was drawn.
     pub normals: Vec<Vec3>,
+    /// View-space bent normals, when the settings ask for them.
+    pub bent_normals: Option<Vec<Vec3>>,
 }
 
 /// Why a frame could not be rendered.
@@ -101,7 +103,7 @@ impl Renderer {
         gpu: &GpuContext,
         settings: &AoSettings,
     ) -> Result<(), RenderError> {
-        Ok(self.ao.set_settings(&gpu.queue, settings)?)
+        Ok(self.ao.set_settings(&gpu.device, &gpu.queue, settings)?)
     }
 
     /// The projection `camera` gets at `size`, near and far planes fitted to the scene; the
@@ -184,6 +186,11 @@ impl Renderer {
         queue.submit([encoder.finish()]);
 
         let ao = read_texture_f32(device, queue, outputs.ao)?;
+        let bent_normals = outputs
+            .bent_normals
+            .map(|texture| read_texture_rgba16f(device, queue, texture))
+            .transpose()?
+            .map(|texels| texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect());
         let linear_depth = read_texture_f32(device, queue, outputs.linear_depth)?;
         let lit = read_texture(device, queue, &lit)?;
         let packed: Vec<u32> =
@@ -207,6 +214,7 @@ impl Renderer {
             lit,
             linear_depth,
             normals,
+            bent_normals,
         })
     }
 }

@@ -371,3 +371,51 @@ pub fn read_texture_f32(
     let bytes = read_texture(device, queue, texture)?;
     Ok(bytemuck::pod_collect_to_vec(&bytes))
 }
+
+/// Reads back an `Rgba16Float` texture (the bent normals) as `f32` texels.
+pub fn read_texture_rgba16f(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+) -> Result<Vec<[f32; 4]>, GpuError> {
+    if texture.format() != wgpu::TextureFormat::Rgba16Float {
+        return Err(GpuError::Readback(format!(
+            "expected an Rgba16Float texture, got {:?}",
+            texture.format()
+        )));
+    }
+    let bytes = read_texture(device, queue, texture)?;
+    let halves: Vec<u16> = bytemuck::pod_collect_to_vec(&bytes);
+    Ok(halves
+        .chunks_exact(4)
+        .map(|t| [0, 1, 2, 3].map(|i| f16_to_f32(t[i])))
+        .collect())
+}
+
+/// IEEE 754 binary16 to `f32`, exactly (every half is an `f32`).
+fn f16_to_f32(bits: u16) -> f32 {
+    let sign = if bits & 0x8000 != 0 { -1.0 } else { 1.0 };
+    let exponent = i32::from((bits >> 10) & 0x1f);
+    let mantissa = f32::from(bits & 0x3ff);
+    sign * match exponent {
+        0 => mantissa * 2f32.powi(-24),
+        31 if mantissa == 0.0 => f32::INFINITY,
+        31 => f32::NAN,
+        _ => (1.0 + mantissa / 1024.0) * 2f32.powi(exponent - 15),
+    }
+}
+
+#[cfg(test)]
+mod half_tests {
+    use super::f16_to_f32;
+
+    #[test]
+    fn halves_convert_exactly() {
+        assert_eq!(f16_to_f32(0x3c00), 1.0);
+        assert_eq!(f16_to_f32(0xc000), -2.0);
+        assert_eq!(f16_to_f32(0x3555), 0.333_251_95);
+        assert_eq!(f16_to_f32(0x0001), 2f32.powi(-24));
+        assert_eq!(f16_to_f32(0x7c00), f32::INFINITY);
+        assert!(f16_to_f32(0x7e00).is_nan());
+    }
+}

@@ -27,5 +27,8 @@ pub use gpu::{AdapterKind, GpuContext, GpuError};
 pub use inputs::{AoInputs, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
-pub use settings::{AoSettings, GtaoSettings, Method, Preset, SettingsError};
+pub use settings::{
+    AoSettings, GtaoSettings, HbaoSettings, Method, Preset, SettingsError, SsaoSettings,
+    VbaoSettings,
+};
 pub use timing::PassTime;

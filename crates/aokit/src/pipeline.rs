@@ -4,10 +4,10 @@ use crate::error::AoError;
 use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
-use crate::passes::gtao::{AO_FORMAT, GtaoPass};
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
+use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
-use crate::settings::{AoSettings, Method};
+use crate::settings::AoSettings;
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
 
@@ -20,10 +20,11 @@ struct Targets {
     ao_view: wgpu::TextureView,
     reconstructed_normals: wgpu::Texture,
     reconstructed_normals_view: wgpu::TextureView,
+    bent_normals: Option<(wgpu::Texture, wgpu::TextureView)>,
 }
 
 impl Targets {
-    fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
+    fn new(device: &wgpu::Device, size: [u32; 2], bent_normals: bool) -> Self {
         let usage = wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
@@ -31,7 +32,13 @@ impl Targets {
         let linear_depth = make("aokit linear depth", LINEAR_DEPTH_FORMAT);
         let ao = make("aokit ao", AO_FORMAT);
         let normals = make("aokit reconstructed normals", NORMALS_FORMAT);
+        let bent_normals = bent_normals.then(|| {
+            let texture = make("aokit bent normals", BENT_NORMALS_FORMAT);
+            let view = texture.create_view(&Default::default());
+            (texture, view)
+        });
         Self {
+            bent_normals,
             reconstructed_normals_view: normals.create_view(&Default::default()),
             reconstructed_normals: normals,
             size,
@@ -55,6 +62,11 @@ pub struct AoOutputs<'a> {
     pub linear_depth: &'a wgpu::Texture,
     /// The oct32 normals reconstructed from depth, when the inputs had none.
     pub reconstructed_normals: Option<&'a wgpu::Texture>,
+    /// Bent normals when [`AoSettings::bent_normals`] is on: `Rgba16Float`, view-space unit
+    /// vector in xyz (the mean unoccluded direction), AO in w.
+    pub bent_normals: Option<&'a wgpu::Texture>,
+    /// A view of [`AoOutputs::bent_normals`] for binding.
+    pub bent_normals_view: Option<&'a wgpu::TextureView>,
 }
 
 /// The AO pipeline for one view.
@@ -77,7 +89,7 @@ pub struct AoPipeline {
     view_uniforms: wgpu::Buffer,
     linear_depth: LinearDepthPass,
     normals_from_depth: NormalsFromDepthPass,
-    gtao: GtaoPass,
+    method: MethodPass,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
 }
@@ -91,17 +103,15 @@ impl AoPipeline {
     ) -> Result<Self, AoError> {
         settings.validate()?;
         let view_uniforms = create_uniform_buffer::<ViewUniforms>(device, "aokit view");
-        let pipeline = Self {
+        Ok(Self {
             settings: *settings,
             view_uniforms,
             linear_depth: LinearDepthPass::new(device),
             normals_from_depth: NormalsFromDepthPass::new(device),
-            gtao: GtaoPass::new(device),
+            method: MethodPass::new(device, queue, settings),
             targets: None,
             timer: None,
-        };
-        pipeline.gtao.set_settings(queue, settings);
-        Ok(pipeline)
+        })
     }
 
     /// Times every pass with GPU timestamps from now on. Returns `false`, and changes nothing,
@@ -127,17 +137,18 @@ impl AoPipeline {
         &self.settings
     }
 
-    /// Replaces the settings; only uniform buffers change.
+    /// Replaces the settings. Only the settings buffer changes, unless the method is one not
+    /// used before (its kernel compiles once) or bent normals are switched (their texture is
+    /// made or dropped at the next `encode`).
     pub fn set_settings(
         &mut self,
+        device: &wgpu::Device,
         queue: &wgpu::Queue,
         settings: &AoSettings,
     ) -> Result<(), AoError> {
         settings.validate()?;
         self.settings = *settings;
-        match settings.method {
-            Method::Gtao => self.gtao.set_settings(queue, settings),
-        }
+        self.method.set_settings(device, queue, settings);
         Ok(())
     }
 
@@ -156,8 +167,14 @@ impl AoPipeline {
         if size[0] > max || size[1] > max {
             return Err(AoError::TooLarge { size, max });
         }
-        if self.targets.as_ref().map(|t| t.size) != Some(size) {
-            self.targets = Some(Targets::new(device, size));
+        let bent = self.settings.bent_normals;
+        if self
+            .targets
+            .as_ref()
+            .map(|t| (t.size, t.bent_normals.is_some()))
+            != Some((size, bent))
+        {
+            self.targets = Some(Targets::new(device, size, bent));
         }
         let targets = self.targets.as_ref().expect("targets were just created");
         queue.write_buffer(
@@ -194,14 +211,14 @@ impl AoPipeline {
                 &targets.reconstructed_normals_view
             }
         };
-        match self.settings.method {
-            Method::Gtao => self.gtao.encode(
-                &mut ctx,
-                &targets.linear_depth_view,
-                normals,
-                &targets.ao_view,
-            ),
-        }
+        self.method.encode(
+            &mut ctx,
+            self.settings.method,
+            &targets.linear_depth_view,
+            normals,
+            &targets.ao_view,
+            targets.bent_normals.as_ref().map(|(_, view)| view),
+        );
         if let Some(timer) = &self.timer {
             timer.resolve(encoder);
         }
@@ -213,6 +230,8 @@ impl AoPipeline {
                 .normals
                 .is_none()
                 .then_some(&targets.reconstructed_normals),
+            bent_normals: targets.bent_normals.as_ref().map(|(texture, _)| texture),
+            bent_normals_view: targets.bent_normals.as_ref().map(|(_, view)| view),
         })
     }
 }

@@ -5,24 +5,54 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The AO method a pipeline runs.
+/// The AO method a pipeline runs. docs/methods.md has each one's formula and failure modes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Method {
+    /// Crytek's 2007 SSAO: points in a sphere around the pixel tested against the depth buffer.
+    SsaoCrytek,
+    /// Normal-oriented hemisphere SSAO: cosine-weighted points tested against the depth buffer.
+    Ssao,
+    /// Horizon-based AO (Bavoil and Sainz 2008): per screen direction, the rise of the horizon
+    /// above the tangent plane.
+    Hbao,
+    /// HBAO+'s normal-based estimator: each sample occludes by its elevation above the tangent
+    /// plane.
+    HbaoPlus,
     /// Ground-truth based AO (Jimenez et al. 2016): cosine-weighted horizon integral per slice.
     #[default]
     Gtao,
+    /// Visibility bitmask AO (Therrien, Levesque and Gilet 2023): occluders of finite thickness
+    /// mark sectors of each slice.
+    Vbao,
 }
 
 impl Method {
     /// Every method, in the order the CLI lists them.
-    pub const ALL: [Method; 1] = [Method::Gtao];
+    pub const ALL: [Method; 6] = [
+        Method::SsaoCrytek,
+        Method::Ssao,
+        Method::Hbao,
+        Method::HbaoPlus,
+        Method::Gtao,
+        Method::Vbao,
+    ];
 
     /// The name used on the command line and in settings files.
     pub fn name(self) -> &'static str {
         match self {
+            Method::SsaoCrytek => "ssao-crytek",
+            Method::Ssao => "ssao",
+            Method::Hbao => "hbao",
+            Method::HbaoPlus => "hbao-plus",
             Method::Gtao => "gtao",
+            Method::Vbao => "vbao",
         }
+    }
+
+    /// Whether the method integrates over slices and so can return bent normals.
+    pub fn has_bent_normals(self) -> bool {
+        matches!(self, Method::Gtao | Method::Vbao)
     }
 }
 
@@ -86,7 +116,87 @@ fn find_by_name<T: Copy>(
         })
 }
 
-/// GTAO-specific sampling counts.
+/// Depth samples per pixel of each preset, the same for every method so that presets compare
+/// methods at equal cost. They grow by about 2x (4, 8, 18, 54) from a count where the noise
+/// still shows structure to one where it has converged for comparisons.
+fn preset_samples(preset: Preset) -> u32 {
+    match preset {
+        Preset::Low => 4,
+        Preset::Medium => 8,
+        Preset::High => 18,
+        Preset::Ultra => 54,
+    }
+}
+
+/// Slices and steps per side of the slice-based methods (GTAO, VBAO) for a preset. Slices cost
+/// more than steps but remove more noise (seed 000 observes 4x4 beats 2x8 at equal cost), so
+/// presets grow slices first.
+fn preset_slices(preset: Preset) -> (u32, u32) {
+    match preset {
+        Preset::Low => (1, 2),
+        Preset::Medium => (2, 2),
+        Preset::High => (3, 3),
+        Preset::Ultra => (9, 3),
+    }
+}
+
+/// Sample count of the point-sampling methods (`ssao-crytek`, `ssao`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SsaoSettings {
+    /// Points tested against the depth buffer per pixel.
+    pub sample_count: u32,
+}
+
+impl Default for SsaoSettings {
+    fn default() -> Self {
+        Self::preset(Preset::default())
+    }
+}
+
+impl SsaoSettings {
+    /// Sample count of a preset.
+    pub fn preset(preset: Preset) -> Self {
+        Self {
+            sample_count: preset_samples(preset),
+        }
+    }
+}
+
+/// Ray-marching counts of `hbao` and `hbao-plus`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct HbaoSettings {
+    /// Screen-space directions over the full circle.
+    pub direction_count: u32,
+    /// Depth samples along each direction.
+    pub step_count: u32,
+}
+
+impl Default for HbaoSettings {
+    fn default() -> Self {
+        Self::preset(Preset::default())
+    }
+}
+
+impl HbaoSettings {
+    /// Counts of a preset: directions times steps equals the preset's samples; directions grow
+    /// first because an empty direction costs a whole sector of the circle.
+    pub fn preset(preset: Preset) -> Self {
+        let (direction_count, step_count) = match preset {
+            Preset::Low => (2, 2),
+            Preset::Medium => (4, 2),
+            Preset::High => (6, 3),
+            Preset::Ultra => (9, 6),
+        };
+        Self {
+            direction_count,
+            step_count,
+        }
+    }
+}
+
+/// GTAO's sampling and its thickness heuristic.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct GtaoSettings {
@@ -99,6 +209,10 @@ pub struct GtaoSettings {
     /// plain average is noisy even on open ground; the ratio is exactly 1 there and converges to
     /// the same value as more slices are taken.
     pub normalize_slices: bool,
+    /// The GTAO paper's thickness heuristic, in [0, 1]: how far the horizon falls back towards a
+    /// sample that lies below it, so that an occluder the march has passed stops counting, as if
+    /// objects were about as thick as they are wide. 0 keeps the highest horizon (a height field).
+    pub thickness: f32,
 }
 
 impl Default for GtaoSettings {
@@ -108,19 +222,51 @@ impl Default for GtaoSettings {
 }
 
 impl GtaoSettings {
-    /// Sample counts of a preset. Slices cost more than steps but remove more noise (seed 000
-    /// observes 4x4 beats 2x8 at equal cost), so presets grow slices first.
+    /// Sample counts of a preset.
     pub fn preset(preset: Preset) -> Self {
-        let (slice_count, steps_per_side) = match preset {
-            Preset::Low => (1, 2),
-            Preset::Medium => (2, 2),
-            Preset::High => (3, 3),
-            Preset::Ultra => (9, 3),
-        };
+        let (slice_count, steps_per_side) = preset_slices(preset);
         Self {
             slice_count,
             steps_per_side,
             normalize_slices: true,
+            thickness: 0.0,
+        }
+    }
+}
+
+/// The visibility bitmask method's sampling and occluder thickness.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct VbaoSettings {
+    /// Slices per pixel, as GTAO's.
+    pub slice_count: u32,
+    /// Depth samples on each side of the pixel per slice.
+    pub steps_per_side: u32,
+    /// Thickness of every occluder behind its visible surface, as a fraction of the radius.
+    pub thickness: f32,
+    /// Extra thickness per unit of the occluder's view depth, so that distant occluders, whose
+    /// depth is less certain and whose backs are further from their fronts in screen space, are
+    /// thicker: `thickness * radius + thickness_growth * depth`. 0 keeps it constant.
+    pub thickness_growth: f32,
+}
+
+impl Default for VbaoSettings {
+    fn default() -> Self {
+        Self::preset(Preset::default())
+    }
+}
+
+impl VbaoSettings {
+    /// Sample counts of a preset.
+    pub fn preset(preset: Preset) -> Self {
+        let (slice_count, steps_per_side) = preset_slices(preset);
+        Self {
+            slice_count,
+            steps_per_side,
+            // 0.6 of the radius: thick enough that walls and boxes occlude as solids, thin enough
+            // that a pole in front of a wall leaves the wall lit (docs/methods.md has the sweep).
+            thickness: 0.6,
+            thickness_growth: 0.0,
         }
     }
 }
@@ -149,8 +295,33 @@ pub struct AoSettings {
     pub intensity: f32,
     /// Exponent applied last: values above 1 darken and add contrast.
     pub power: f32,
-    /// GTAO sampling.
+    /// Largest screen radius in pixels: near the camera the world radius covers much of the
+    /// screen, where samples spread thin and leave the cache (seed 004's Max Radius Pixels).
+    pub max_radius_px: f32,
+    /// Self-occlusion bias of the point-sampling methods, as a fraction of the radius: a sample
+    /// must lie this far behind the depth buffer to count as occluded.
+    pub bias: f32,
+    /// Angle bias of the horizon methods, radians: horizons must rise this far above the tangent
+    /// plane to occlude, which hides the false occlusion of tessellated curved surfaces.
+    pub angle_bias: f32,
+    /// View depth beyond which there is no AO (seed 004's Max Distance); 0: no limit.
+    pub max_distance: f32,
+    /// World distance before `max_distance` over which AO fades out (seed 004's Distance
+    /// Falloff); 0 stops it hard.
+    pub distance_falloff: f32,
+    /// Also output bent normals (the mean unoccluded direction), for GTSO specular occlusion and
+    /// bent-normal lighting. Only the slice-based methods, `gtao` and `vbao`, compute them.
+    pub bent_normals: bool,
+    /// `ssao-crytek` sampling.
+    pub ssao_crytek: SsaoSettings,
+    /// `ssao` sampling.
+    pub ssao: SsaoSettings,
+    /// `hbao` and `hbao-plus` sampling.
+    pub hbao: HbaoSettings,
+    /// `gtao` sampling and thickness.
     pub gtao: GtaoSettings,
+    /// `vbao` sampling and thickness.
+    pub vbao: VbaoSettings,
 }
 
 impl Default for AoSettings {
@@ -171,28 +342,48 @@ pub struct SettingsError {
     pub expected: &'static str,
 }
 
-/// Most slices or steps a kernel accepts: beyond this the cost is far past any real-time budget
-/// and the estimate has long converged.
+/// Most samples, slices, directions or steps a kernel accepts: beyond this the cost is far past
+/// any real-time budget and the estimate has long converged.
 pub const MAX_SAMPLE_COUNT: u32 = 64;
 
 impl AoSettings {
-    /// A method at a preset quality, with a radius of 1 world unit.
+    /// A method at a preset quality, with a radius of 1 world unit. Every method's own sampling
+    /// is set to the preset, so switching `method` later keeps the quality level.
     pub fn preset(method: Method, preset: Preset) -> Self {
         Self {
             method,
             radius: 1.0,
-            // A short fade hides the disc edge of the radius without weakening contact shadows.
-            falloff: 0.2,
+            // A hard cut: AO is defined by what lies within the radius, and the fade only moved
+            // every slice method further from the reference (docs/methods.md has the sweep).
+            falloff: 0.0,
             intensity: 1.0,
             power: 1.0,
+            // Past 256 pixels (a quarter of a 1080p screen) AO no longer reads as contact
+            // shadowing, and samples that far apart miss the texture cache.
+            max_radius_px: 256.0,
+            // 2% of the radius lifts samples off a plane tessellated or stored at 16-24 bits.
+            bias: 0.02,
+            // About 6 degrees, the tangent elevation HBAO+'s default N.V bias of 0.1 implies.
+            angle_bias: 0.1,
+            max_distance: 0.0,
+            distance_falloff: 0.0,
+            bent_normals: false,
+            ssao_crytek: SsaoSettings::preset(preset),
+            ssao: SsaoSettings::preset(preset),
+            hbao: HbaoSettings::preset(preset),
             gtao: GtaoSettings::preset(preset),
+            vbao: VbaoSettings::preset(preset),
         }
     }
 
     /// Depth samples the AO kernel takes per pixel: the cost that does not depend on the GPU.
     pub fn samples_per_pixel(&self) -> u32 {
         match self.method {
+            Method::SsaoCrytek => self.ssao_crytek.sample_count,
+            Method::Ssao => self.ssao.sample_count,
+            Method::Hbao | Method::HbaoPlus => self.hbao.direction_count * self.hbao.step_count,
             Method::Gtao => 2 * self.gtao.slice_count * self.gtao.steps_per_side,
+            Method::Vbao => 2 * self.vbao.slice_count * self.vbao.steps_per_side,
         }
     }
 
@@ -200,17 +391,61 @@ impl AoSettings {
     pub fn validate(&self) -> Result<(), SettingsError> {
         positive("radius", self.radius)?;
         in_unit_range("falloff", self.falloff)?;
-        if !(self.intensity.is_finite() && self.intensity >= 0.0) {
+        at_least("intensity", self.intensity, 0.0)?;
+        positive("power", self.power)?;
+        at_least("max_radius_px", self.max_radius_px, 1.0)?;
+        in_unit_range("bias", self.bias)?;
+        if !(0.0..std::f32::consts::FRAC_PI_2).contains(&self.angle_bias) {
             return Err(SettingsError {
-                field: "intensity",
-                value: self.intensity.to_string(),
-                expected: "a finite number >= 0",
+                field: "angle_bias",
+                value: self.angle_bias.to_string(),
+                expected: "an angle in [0, pi/2) radians",
             });
         }
-        positive("power", self.power)?;
+        at_least("max_distance", self.max_distance, 0.0)?;
+        at_least("distance_falloff", self.distance_falloff, 0.0)?;
+        if self.max_distance > 0.0 && self.distance_falloff > self.max_distance {
+            return Err(SettingsError {
+                field: "distance_falloff",
+                value: self.distance_falloff.to_string(),
+                expected: "a distance in [0, max_distance]",
+            });
+        }
+        if self.bent_normals && !self.method.has_bent_normals() {
+            return Err(SettingsError {
+                field: "bent_normals",
+                value: format!("true with method {}", self.method.name()),
+                expected: "false, or a method with slices (gtao, vbao)",
+            });
+        }
+        count("ssao_crytek.sample_count", self.ssao_crytek.sample_count)?;
+        count("ssao.sample_count", self.ssao.sample_count)?;
+        count("hbao.direction_count", self.hbao.direction_count)?;
+        count("hbao.step_count", self.hbao.step_count)?;
         count("gtao.slice_count", self.gtao.slice_count)?;
         count("gtao.steps_per_side", self.gtao.steps_per_side)?;
+        in_unit_range("gtao.thickness", self.gtao.thickness)?;
+        count("vbao.slice_count", self.vbao.slice_count)?;
+        count("vbao.steps_per_side", self.vbao.steps_per_side)?;
+        positive("vbao.thickness", self.vbao.thickness)?;
+        at_least("vbao.thickness_growth", self.vbao.thickness_growth, 0.0)?;
         Ok(())
+    }
+}
+
+fn at_least(field: &'static str, value: f32, min: f32) -> Result<(), SettingsError> {
+    if value.is_finite() && value >= min {
+        Ok(())
+    } else {
+        Err(SettingsError {
+            field,
+            value: value.to_string(),
+            expected: if min == 0.0 {
+                "a finite number >= 0"
+            } else {
+                "a finite number >= 1"
+            },
+        })
     }
 }
 
@@ -255,15 +490,32 @@ mod tests {
     use super::*;
 
     #[test]
-    fn presets_are_valid_and_grow_in_cost() {
+    fn presets_are_valid_grow_in_cost_and_cost_the_same_for_every_method() {
         let mut last = 0;
         for preset in Preset::ALL {
-            let s = AoSettings::preset(Method::Gtao, preset);
-            s.validate().unwrap();
-            let cost = s.samples_per_pixel();
+            let cost = AoSettings::preset(Method::Gtao, preset).samples_per_pixel();
             assert!(cost > last, "{preset:?}");
             last = cost;
+            for method in Method::ALL {
+                let s = AoSettings::preset(method, preset);
+                s.validate().unwrap();
+                assert_eq!(s.samples_per_pixel(), cost, "{method:?} {preset:?}");
+            }
         }
+    }
+
+    #[test]
+    fn bent_normals_need_a_slice_method_and_fades_need_room() {
+        let mut s = AoSettings::preset(Method::Ssao, Preset::High);
+        s.bent_normals = true;
+        assert_eq!(s.validate().unwrap_err().field, "bent_normals");
+        s.method = Method::Vbao;
+        s.validate().unwrap();
+        s.max_distance = 10.0;
+        s.distance_falloff = 20.0;
+        assert_eq!(s.validate().unwrap_err().field, "distance_falloff");
+        s.distance_falloff = 5.0;
+        s.validate().unwrap();
     }
 
     #[test]

@@ -6,12 +6,19 @@
 
 use wgpu::naga;
 
+use crate::settings::Method;
+
 /// Camera conventions, the `ViewUniforms` binding and position reconstruction.
 pub const VIEW: &str = include_str!("../shaders/common/view.wgsl");
 /// Normal encodings (`pack_oct32`, `unpack_oct32`, ...).
 pub const ENCODING: &str = include_str!("../shaders/common/encoding.wgsl");
 /// Per-pixel noise.
 pub const NOISE: &str = include_str!("../shaders/common/noise.wgsl");
+/// The interface of the AO method kernels: `AoUniforms`, their bindings, the shaded surface and
+/// the shaping of the result.
+pub const AO: &str = include_str!("../shaders/common/ao.wgsl");
+/// Slices of the hemisphere through the view vector, for the slice-based methods.
+pub const SLICE: &str = include_str!("../shaders/common/slice.wgsl");
 
 /// One WGSL program: the snippets it needs followed by its own file.
 #[derive(Clone, Copy, Debug)]
@@ -44,14 +51,60 @@ pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
     ],
 };
 
-/// The GTAO kernel.
-pub const GTAO: ShaderSource = ShaderSource {
-    name: "gtao",
-    parts: &[VIEW, ENCODING, NOISE, include_str!("../shaders/gtao.wgsl")],
-};
+/// A method kernel: the shared snippets, any of its own, then its file.
+macro_rules! method_kernel {
+    ($name:literal $(, $snippet:expr)*) => {
+        ShaderSource {
+            name: $name,
+            parts: &[
+                VIEW,
+                ENCODING,
+                NOISE,
+                AO,
+                $($snippet,)*
+                include_str!(concat!("../shaders/", $name, ".wgsl")),
+            ],
+        }
+    };
+}
+
+/// Crytek's sphere-sampling SSAO.
+pub const SSAO_CRYTEK: ShaderSource = method_kernel!("ssao_crytek");
+/// Normal-oriented hemisphere SSAO.
+pub const SSAO: ShaderSource = method_kernel!("ssao");
+/// Horizon-based AO.
+pub const HBAO: ShaderSource = method_kernel!("hbao", SLICE);
+/// HBAO+'s normal-based estimator.
+pub const HBAO_PLUS: ShaderSource = method_kernel!("hbao_plus", SLICE);
+/// Ground-truth based AO.
+pub const GTAO: ShaderSource = method_kernel!("gtao", SLICE);
+/// Visibility bitmask AO.
+pub const VBAO: ShaderSource = method_kernel!("vbao", SLICE);
+
+/// The kernel of `method`.
+pub fn method(method: Method) -> ShaderSource {
+    match method {
+        Method::SsaoCrytek => SSAO_CRYTEK,
+        Method::Ssao => SSAO,
+        Method::Hbao => HBAO,
+        Method::HbaoPlus => HBAO_PLUS,
+        Method::Gtao => GTAO,
+        Method::Vbao => VBAO,
+    }
+}
 
 /// Every program the library compiles.
-pub const ALL: &[ShaderSource] = &[LINEAR_DEPTH, IMPORT_DEPTH, NORMALS_FROM_DEPTH, GTAO];
+pub const ALL: &[ShaderSource] = &[
+    LINEAR_DEPTH,
+    IMPORT_DEPTH,
+    NORMALS_FROM_DEPTH,
+    SSAO_CRYTEK,
+    SSAO,
+    HBAO,
+    HBAO_PLUS,
+    GTAO,
+    VBAO,
+];
 
 impl ShaderSource {
     /// The assembled WGSL text.
@@ -168,9 +221,9 @@ mod tests {
                 "shaders/{pass}.wgsl is not in shader::ALL, so nothing validates it"
             );
         }
-        for snippet in [VIEW, ENCODING, NOISE] {
+        for snippet in [VIEW, ENCODING, NOISE, AO, SLICE] {
             assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
         }
-        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 3);
+        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 5);
     }
 }

@@ -4,7 +4,7 @@ use bytemuck::{Pod, Zeroable};
 use glam::{Vec2, Vec4};
 
 use crate::projection::Projection;
-use crate::settings::AoSettings;
+use crate::settings::{AoSettings, Method};
 
 /// Mirrors `ViewUniforms` in `shaders/common/view.wgsl`.
 #[repr(C)]
@@ -43,37 +43,97 @@ impl ViewUniforms {
     }
 }
 
-/// Mirrors `GtaoUniforms` in `shaders/gtao.wgsl`.
+/// Mirrors `AoUniforms` in `shaders/common/ao.wgsl`: the settings of whichever method runs.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub(crate) struct GtaoUniforms {
+pub(crate) struct AoUniforms {
     pub radius: f32,
     pub falloff_mul: f32,
     pub falloff_add: f32,
     pub intensity: f32,
     pub power: f32,
-    pub slice_count: u32,
-    pub steps_per_side: u32,
-    pub normalize_slices: u32,
+    pub max_radius_px: f32,
+    pub bias: f32,
+    pub angle_bias: f32,
+    pub fade_mul: f32,
+    pub fade_add: f32,
+    pub thickness: f32,
+    pub thickness_growth: f32,
+    pub count: u32,
+    pub steps: u32,
+    pub flags: u32,
 }
 
-/// Shortest fade the kernel uses, as a fraction of the radius: `falloff = 0` (a hard cut) becomes
+/// `AoUniforms::flags` bits, mirrored as constants in `common/ao.wgsl`.
+pub(crate) mod flags {
+    /// Divide slice integrals by their unoccluded integrals (GTAO).
+    pub const NORMALIZE_SLICES: u32 = 1;
+    /// Write bent normals.
+    pub const BENT_NORMALS: u32 = 2;
+}
+
+/// Shortest fade the kernels use, as a fraction of the radius: `falloff = 0` (a hard cut) becomes
 /// this so the weight stays a finite linear ramp; the difference is below any sample spacing.
 const MIN_FALLOFF: f32 = 1e-4;
 
-impl GtaoUniforms {
+impl AoUniforms {
     pub fn new(settings: &AoSettings) -> Self {
         let radius = settings.radius;
         let range = settings.falloff.max(MIN_FALLOFF) * radius;
+        // AO weight over view depth: saturate(depth * fade_mul + fade_add), 1 everywhere
+        // without a maximum distance; a zero-length fade becomes a step one thousandth as long.
+        let max = settings.max_distance;
+        let (fade_mul, fade_add) = if max > 0.0 {
+            let fade = settings.distance_falloff.max(1e-3 * max);
+            (-1.0 / fade, max / fade)
+        } else {
+            (0.0, 1.0)
+        };
+        let (count, steps, thickness, thickness_growth) = match settings.method {
+            Method::SsaoCrytek => (settings.ssao_crytek.sample_count, 1, 0.0, 0.0),
+            Method::Ssao => (settings.ssao.sample_count, 1, 0.0, 0.0),
+            Method::Hbao | Method::HbaoPlus => (
+                settings.hbao.direction_count,
+                settings.hbao.step_count,
+                0.0,
+                0.0,
+            ),
+            Method::Gtao => (
+                settings.gtao.slice_count,
+                settings.gtao.steps_per_side,
+                settings.gtao.thickness,
+                0.0,
+            ),
+            Method::Vbao => (
+                settings.vbao.slice_count,
+                settings.vbao.steps_per_side,
+                settings.vbao.thickness * radius,
+                settings.vbao.thickness_growth,
+            ),
+        };
+        let mut bits = 0;
+        if settings.gtao.normalize_slices {
+            bits |= flags::NORMALIZE_SLICES;
+        }
+        if settings.bent_normals {
+            bits |= flags::BENT_NORMALS;
+        }
         Self {
             radius,
             falloff_mul: -1.0 / range,
             falloff_add: radius / range,
             intensity: settings.intensity,
             power: settings.power,
-            slice_count: settings.gtao.slice_count,
-            steps_per_side: settings.gtao.steps_per_side,
-            normalize_slices: u32::from(settings.gtao.normalize_slices),
+            max_radius_px: settings.max_radius_px,
+            bias: settings.bias * radius,
+            angle_bias: settings.angle_bias,
+            fade_mul,
+            fade_add,
+            thickness,
+            thickness_growth,
+            count,
+            steps,
+            flags: bits,
         }
     }
 }
@@ -106,25 +166,51 @@ mod tests {
     }
 
     #[test]
-    fn gtao_uniforms_match_wgsl() {
-        let fields = crate::field_offsets!(GtaoUniforms {
+    fn ao_uniforms_match_wgsl_in_every_method() {
+        let fields = crate::field_offsets!(AoUniforms {
             radius,
             falloff_mul,
             falloff_add,
             intensity,
             power,
-            slice_count,
-            steps_per_side,
-            normalize_slices,
+            max_radius_px,
+            bias,
+            angle_bias,
+            fade_mul,
+            fade_add,
+            thickness,
+            thickness_growth,
+            count,
+            steps,
+            flags,
         });
-        shader::check_layout(
-            &shader::GTAO,
-            "GtaoUniforms",
-            fields,
-            size_of::<GtaoUniforms>(),
-        )
-        .unwrap();
+        for method in crate::Method::ALL {
+            shader::check_layout(
+                &shader::method(method),
+                "AoUniforms",
+                fields,
+                size_of::<AoUniforms>(),
+            )
+            .unwrap();
+        }
     }
+
+    #[test]
+    fn distance_fade_is_one_before_the_falloff_and_zero_past_the_maximum() {
+        let settings = AoSettings {
+            max_distance: 20.0,
+            distance_falloff: 5.0,
+            ..AoSettings::default()
+        };
+        let u = AoUniforms::new(&settings);
+        let fade = |d: f32| (d * u.fade_mul + u.fade_add).clamp(0.0, 1.0);
+        assert_eq!(fade(10.0), 1.0);
+        assert!((fade(17.5) - 0.5).abs() < 1e-6);
+        assert_eq!(fade(20.0), 0.0);
+        let none = AoUniforms::new(&AoSettings::default());
+        assert_eq!((none.fade_mul, none.fade_add), (0.0, 1.0));
+    }
+
     #[test]
     fn falloff_weight_is_one_inside_and_zero_at_the_radius() {
         let mut settings = AoSettings {
@@ -132,14 +218,14 @@ mod tests {
             falloff: 0.25,
             ..AoSettings::default()
         };
-        let u = GtaoUniforms::new(&settings);
+        let u = AoUniforms::new(&settings);
         let weight = |d: f32| (d * u.falloff_mul + u.falloff_add).clamp(0.0, 1.0);
         assert_eq!(weight(1.0), 1.0);
         assert_eq!(weight(1.5), 1.0);
         assert!((weight(1.75) - 0.5).abs() < 1e-6);
         assert_eq!(weight(2.0), 0.0);
         settings.falloff = 0.0;
-        let u = GtaoUniforms::new(&settings);
+        let u = AoUniforms::new(&settings);
         let weight = |d: f32| (d * u.falloff_mul + u.falloff_add).clamp(0.0, 1.0);
         assert_eq!(weight(1.999), 1.0);
         assert_eq!(weight(2.0), 0.0);

@@ -48,3 +48,11 @@ fn view_direction(position: vec3<f32>) -> vec3<f32> {
 fn pixels_at_depth(world_length: f32, linear_depth: f32) -> f32 {
     return world_length * view.pixels_per_unit / mix(linear_depth, 1.0, view.orthographic);
 }
+
+// Pixel position (in pixels) where the view-space point `position` projects; the inverse of
+// view_position. Perspective points must lie in front of the eye (position.z < 0).
+fn pixel_of(position: vec3<f32>) -> vec2<f32> {
+    let scale = mix(-position.z, 1.0, view.orthographic);
+    let ndc = position.xy / (view.ndc_to_view * scale);
+    return vec2<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * view.size;
+}

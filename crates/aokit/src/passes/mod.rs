@@ -1,7 +1,7 @@
 //! The compute passes, each a plain struct with `new` and `encode`, and the helpers they share.
 
-pub mod gtao;
 pub mod linear_depth;
+pub mod method;
 pub mod normals_from_depth;
 
 use crate::shader::ShaderSource;

@@ -1,0 +1,159 @@
+// The interface every AO method kernel shares (mirrors `AoUniforms` in uniforms.rs): its settings,
+// its inputs and outputs, the surface at the pixel, and the final shaping of the result.
+
+struct AoUniforms {
+    // World-space radius.
+    radius: f32,
+    // Sample weight = saturate(distance * falloff_mul + falloff_add): 1 inside, 0 at the radius.
+    falloff_mul: f32,
+    falloff_add: f32,
+    intensity: f32,
+    power: f32,
+    // Upper clamp of the screen radius, pixels.
+    max_radius_px: f32,
+    // Point methods' self-occlusion bias, world units.
+    bias: f32,
+    // Horizon methods' angle bias, radians.
+    angle_bias: f32,
+    // AO weight over view depth: saturate(depth * fade_mul + fade_add).
+    fade_mul: f32,
+    fade_add: f32,
+    // GTAO: horizon fall-back blend; VBAO: occluder thickness in world units.
+    thickness: f32,
+    // VBAO: thickness added per unit of occluder depth.
+    thickness_growth: f32,
+    // Samples, directions or slices.
+    count: u32,
+    // Steps per direction or per side.
+    steps: u32,
+    flags: u32,
+}
+
+const FLAG_NORMALIZE_SLICES: u32 = 1u;
+const FLAG_BENT_NORMALS: u32 = 2u;
+
+@group(0) @binding(1) var<uniform> ao: AoUniforms;
+@group(0) @binding(2) var linear_depth: texture_2d<f32>;
+@group(0) @binding(3) var normals: texture_2d<u32>;
+@group(0) @binding(4) var ao_out: texture_storage_2d<r32float, write>;
+@group(0) @binding(5) var point_clamp: sampler;
+// View-space bent normal in xyz and AO in w, when FLAG_BENT_NORMALS is set (a 1x1 stand-in
+// otherwise, never written).
+@group(0) @binding(6) var bent_out: texture_storage_2d<rgba16float, write>;
+
+const PI: f32 = 3.14159265;
+const HALF_PI: f32 = 1.57079633;
+const TWO_PI: f32 = 6.28318531;
+
+// The shaded point of one pixel.
+struct Surface {
+    pixel: vec2<u32>,
+    // Pixel centre, in pixels.
+    center: vec2<f32>,
+    depth: f32,
+    // View-space position, unit vector towards the eye, unit normal.
+    p: vec3<f32>,
+    v: vec3<f32>,
+    n: vec3<f32>,
+    // The AO radius on screen, clamped to max_radius_px.
+    radius_px: f32,
+}
+
+fn load_surface(pixel: vec2<u32>) -> Surface {
+    var s: Surface;
+    s.pixel = pixel;
+    s.center = vec2<f32>(pixel) + 0.5;
+    s.depth = textureLoad(linear_depth, pixel, 0).r;
+    s.p = view_position(s.center, s.depth);
+    s.v = view_direction(s.p);
+    s.n = unpack_oct32(textureLoad(normals, pixel, 0).r);
+    s.radius_px = min(pixels_at_depth(ao.radius, s.depth), ao.max_radius_px);
+    return s;
+}
+
+// No surface, or a radius under one pixel: nothing in the depth buffer can occlude.
+fn nothing_to_sample(s: Surface) -> bool {
+    return s.depth == NO_SURFACE || s.radius_px < 1.0;
+}
+
+// Relative depth spread above which a 2x2 footprint is taken to straddle a depth edge. A plane
+// seen 2 degrees from grazing spreads about 10% per pixel at 60 degrees field of view.
+const DEPTH_EDGE: f32 = 0.1;
+
+// The surface seen near a continuous pixel position.
+struct SeenSurface {
+    // Linear depth, NO_SURFACE for none.
+    depth: f32,
+    // Where it was seen, in pixels: the position asked for when `exact`, else a texel centre.
+    at: vec2<f32>,
+    exact: bool,
+}
+
+// The surface seen at continuous pixel position `q`. Inside one surface, 1 / depth (perspective)
+// or depth (orthographic) is affine in screen space across a plane, so interpolating it
+// bilinearly gives the depth exactly at `q`, on a plane seen at any angle; reading the nearest
+// texel instead makes planes seen at grazing angles occlude themselves. Across a depth edge
+// interpolation would invent a surface between foreground and background, so there the nearest
+// texel is returned with its centre.
+fn surface_at(q: vec2<f32>) -> SeenSurface {
+    // The 2x2 texels around `q`, gathered at their shared corner: a coordinate there cannot
+    // round into a neighbouring footprint the way `q` itself can near texel centres, so `f`
+    // weights exactly the texels read. In the outermost half texel the footprint stays inside
+    // the image and `f` extrapolates, which is exact on a plane where clamping is not. Gather
+    // order: x = (left, bottom), y = (right, bottom), z = (right, top), w = (left, top), with
+    // "top" the smaller row index.
+    let corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
+    let depths = textureGather(0, linear_depth, point_clamp, corner * view.inv_size);
+    let f = q - 0.5 - (corner - 1.0);
+    let lowest = min(min(depths.x, depths.y), min(depths.z, depths.w));
+    let highest = max(max(depths.x, depths.y), max(depths.z, depths.w));
+    if lowest > 0.0 && highest <= lowest * (1.0 + DEPTH_EDGE) {
+        let ortho = view.orthographic > 0.5;
+        let w = select(1.0 / depths, depths, ortho);
+        let b = mix(mix(w.w, w.z, f.x), mix(w.x, w.y, f.x), f.y);
+        return SeenSurface(select(1.0 / b, b, ortho), q, true);
+    }
+    let right = f.x >= 0.5;
+    let bottom = f.y >= 0.5;
+    let depth = select(select(depths.w, depths.z, right), select(depths.x, depths.y, right), bottom);
+    let texel = corner + select(vec2<f32>(-0.5), vec2<f32>(0.5), vec2<bool>(right, bottom));
+    return SeenSurface(depth, texel, false);
+}
+
+// Linear depth of the surface seen at continuous pixel position `q` (see surface_at),
+// NO_SURFACE off screen.
+fn depth_at(q: vec2<f32>) -> f32 {
+    if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
+        return NO_SURFACE;
+    }
+    return surface_at(q).depth;
+}
+
+// A sample's weight by its distance from the shaded point: 1 inside, fading to 0 at the radius.
+fn falloff_weight(distance: f32) -> f32 {
+    return saturate(distance * ao.falloff_mul + ao.falloff_add);
+}
+
+// Shapes visibility into the stored AO: intensity, power, then the distance fade.
+fn shape_ao(visibility: f32, depth: f32) -> f32 {
+    let shaped = pow(saturate(1.0 - ao.intensity * (1.0 - saturate(visibility))), ao.power);
+    return mix(1.0, shaped, saturate(depth * ao.fade_mul + ao.fade_add));
+}
+
+fn store_ao(s: Surface, visibility: f32, bent: vec3<f32>) {
+    let value = shape_ao(visibility, s.depth);
+    textureStore(ao_out, s.pixel, vec4<f32>(value, 0.0, 0.0, 0.0));
+    if (ao.flags & FLAG_BENT_NORMALS) != 0u {
+        let b = select(s.n, normalize(bent), dot(bent, bent) > 1e-12);
+        textureStore(bent_out, s.pixel, vec4<f32>(b, value));
+    }
+}
+
+// AO 1 and the normal as bent normal, for pixels with nothing to sample.
+fn store_unoccluded(s: Surface) {
+    textureStore(ao_out, s.pixel, vec4<f32>(1.0, 0.0, 0.0, 0.0));
+    if (ao.flags & FLAG_BENT_NORMALS) != 0u {
+        let n = select(vec3<f32>(0.0), s.n, s.depth != NO_SURFACE);
+        textureStore(bent_out, s.pixel, vec4<f32>(n, 1.0));
+    }
+}

@@ -1,0 +1,108 @@
+// Slices, shared by the slice-based methods (GTAO, VBAO): half-planes through the view vector V
+// at a screen angle, samples placed exactly in them, and the cosine-weighted arc integral.
+
+// acos from a first-order polynomial times sqrt (Eberly 2014, as the GTAO paper uses it): at most
+// 0.009 rad off, and no transcendental call. Errors vanish to first order in the result because
+// the cosine weight is zero at the hemisphere's edge, where clamped horizons sit. Cosines a
+// rounding step past 1 are taken as 1.
+fn fast_acos(x: f32) -> f32 {
+    let a = min(abs(x), 1.0);
+    let r = (HALF_PI - 0.156583 * a) * sqrt(1.0 - a);
+    return select(PI - r, r, x >= 0.0);
+}
+
+// Integral of cos(theta - n) |sin(theta)| from 0 to h (for h < 0 the same expression is the
+// integral from h to 0): the cosine-weighted visible arc on one side of V.
+fn arc_integral(h: f32, n: f32) -> f32 {
+    return 0.25 * (-cos(2.0 * h - n) + cos(n) + 2.0 * h * sin(n));
+}
+
+// Offset from `p` to the surface seen at continuous pixel position `q`, placed in the slice
+// plane; w = 0 when there is no surface there.
+//
+// A sample must lie in the slice: texel centres sit up to half a texel off it, and on surfaces
+// seen at grazing angles that sideways step is long in view space and runs towards the eye, so an
+// open plane would occlude itself. surface_at interpolates inside one surface, which places the
+// sample exactly on the slice. Across a depth edge it returns the nearest texel instead, which is
+// slid within the pixel's tangent plane into the slice: that keeps its height above the plane,
+// the part that occludes.
+fn slice_sample(q: vec2<f32>, p: vec3<f32>, axis: vec3<f32>, slide: vec3<f32>) -> vec4<f32> {
+    let seen = surface_at(q);
+    if seen.depth == NO_SURFACE {
+        return vec4<f32>(0.0);
+    }
+    let offset = view_position(seen.at, seen.depth) - p;
+    if seen.exact {
+        return vec4<f32>(offset, 1.0);
+    }
+    return vec4<f32>(offset - dot(offset, axis) * slide, 1.0);
+}
+
+// One slice of a pixel's hemisphere.
+struct Slice {
+    // Screen direction, pixel y down.
+    omega: vec2<f32>,
+    // Unit direction in the slice plane orthogonal to V, towards +omega.
+    tangent: vec3<f32>,
+    // Unit normal of the slice plane.
+    axis: vec3<f32>,
+    // Length of the normal projected onto the slice plane: the slice's weight.
+    n_len: f32,
+    // Signed angle of the projected normal from V, positive towards +omega.
+    angle_n: f32,
+    // The tangent-plane direction that leaves the slice (see slice_sample).
+    slide: vec3<f32>,
+}
+
+fn make_slice(s: Surface, phi: f32) -> Slice {
+    var slice: Slice;
+    slice.omega = vec2<f32>(cos(phi), sin(phi));
+    // The same direction in view space (y up).
+    let direction = vec3<f32>(slice.omega.x, -slice.omega.y, 0.0);
+    slice.tangent = normalize(direction - dot(direction, s.v) * s.v);
+    slice.axis = normalize(cross(slice.tangent, s.v));
+    let n_axis = dot(s.n, slice.axis);
+    let n_proj = s.n - slice.axis * n_axis;
+    slice.n_len = length(n_proj);
+    let cos_n = saturate(dot(n_proj, s.v) / max(slice.n_len, 1e-6));
+    slice.angle_n = select(-1.0, 1.0, dot(n_proj, slice.tangent) >= 0.0) * fast_acos(cos_n);
+    // Its axis component is 1 - n_axis^2. Where the slice is nearly tangent the slide would be
+    // long, but such slices carry a weight |n_p| = sqrt(1 - n_axis^2) of at most 0.03.
+    slice.slide = (slice.axis - s.n * n_axis) / max(1.0 - n_axis * n_axis, 1e-3);
+    return slice;
+}
+
+// Distance in pixels of step `step` of `steps` from the pixel: quadratic spacing puts more
+// samples near the pixel, where occluders matter most, and starting one pixel out keeps the
+// pixel from sampling itself.
+fn step_distance(step: u32, steps: u32, jitter: f32, radius_px: f32) -> f32 {
+    let t = (f32(step) + jitter) / f32(steps);
+    return 1.0 + t * t * (radius_px - 1.0);
+}
+
+// The sample of a step on one side of a slice (side = +1 towards +omega, -1 away): the offset
+// from the shaded point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen, no
+// surface, or slid past the pixel onto the other half of the slice).
+fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f32> {
+    let q = s.center + side * slice.omega * distance_px;
+    if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
+        return vec4<f32>(0.0);
+    }
+    let sample = slice_sample(q, s.p, slice.axis, slice.slide);
+    if sample.w == 0.0 || side * dot(sample.xyz, slice.tangent) <= 0.0 {
+        return vec4<f32>(0.0);
+    }
+    return sample;
+}
+
+// The bent-normal vector of the slices' unoccluded hemispheres, replaced by its expectation.
+//
+// A few slices' full hemispheres do not sum to a vector along the normal (their weight
+// |sin theta| is about V), so on open ground the raw sum tilts with the slice angles. The
+// slice-based methods therefore add up only what each slice loses to occluders (its bent vector
+// minus its unoccluded one, exact per slice) and add this: the cosine-weighted mean direction of
+// a whole hemisphere is 2/3 of the normal, times the slices' unoccluded integral. Open ground
+// then gets exactly the normal, and the estimate converges to the same value.
+fn open_bent(n: vec3<f32>, unoccluded: f32) -> vec3<f32> {
+    return (2.0 / 3.0) * unoccluded * n;
+}

@@ -1,0 +1,55 @@
+// Horizon-based AO (Bavoil and Sainz 2008, "Image-Space Horizon-Based Ambient Occlusion"), as
+// seed 000 builds it after NVIDIA's DirectX 11 sample: the depth buffer is a height field; along
+// a few screen directions the horizon's elevation above the tangent plane says how much sky that
+// direction has lost.
+//
+//   AO = 1 - 1/N sum over directions of sum over rising samples W(r) (sin h_k - sin h_{k-1})
+//
+// with h_0 = t, the tangent angle (biased by angle_bias), and W(r) = 1 - r^2 / R^2 the per-sample
+// attenuation. Only a sample that raises the horizon adds, and only by how much it raises it,
+// which keeps distant occluders from switching on abruptly. Elevations are measured from the
+// plane perpendicular to V, the vector to the eye. Samples sit exactly on each direction's slice
+// (see slice_sample), so a plane seen at a grazing angle does not occlude itself; the angle bias
+// is left for tessellated curved surfaces, whose interpolated normals tilt off their facets.
+
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if any(id.xy >= vec2<u32>(view.size)) {
+        return;
+    }
+    let surface = load_surface(id.xy);
+    if nothing_to_sample(surface) {
+        store_unoccluded(surface);
+        return;
+    }
+    let noise = pixel_noise(id.xy, view.frame_index);
+    // Never more steps than pixels in the radius: they would sample the same texels. Steps
+    // run from one pixel out (the pixel itself says nothing) to the radius, jittered.
+    let steps = max(1u, min(ao.steps, u32(surface.radius_px)));
+    let step_px = (surface.radius_px - 1.0) / f32(steps);
+    let r2 = ao.radius * ao.radius;
+    var occlusion = 0.0;
+    for (var d = 0u; d < ao.count; d++) {
+        let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(ao.count));
+        // The tangent's elevation above the plane perpendicular to V, inside the slice: the
+        // projected normal lies at angle n from V, so the tangent on the +omega side lies at
+        // n + pi/2 from V, an elevation of -n.
+        let tangent_angle = min(-slice.angle_n + ao.angle_bias, HALF_PI);
+        var last_sin = sin(tangent_angle);
+        var direction_occlusion = 0.0;
+        for (var k = 0u; k < steps; k++) {
+            let sample = side_sample(surface, slice, 1.0, 1.0 + step_px * (f32(k) + noise.y));
+            if sample.w == 0.0 {
+                continue;
+            }
+            let d2 = dot(sample.xyz, sample.xyz);
+            let sin_h = dot(sample.xyz, surface.v) * inverseSqrt(d2);
+            if d2 < r2 && sin_h > last_sin {
+                direction_occlusion += (1.0 - d2 / r2) * (sin_h - last_sin);
+                last_sin = sin_h;
+            }
+        }
+        occlusion += direction_occlusion;
+    }
+    store_ao(surface, 1.0 - occlusion / f32(ao.count), surface.n);
+}

@@ -1,0 +1,131 @@
+// Visibility bitmask ambient occlusion (Therrien, Levesque and Gilet 2023, "Screen Space
+// Indirect Lighting with Visibility Bitmask"), on GTAO's slices.
+//
+// A horizon method treats the depth buffer as a height field: whatever rises above the horizon
+// hides everything behind it. Here every sample is an occluder of finite thickness instead: it
+// hides the angles between its front face (the depth buffer) and its back face (the same point
+// `thickness` further along its view ray). Each slice keeps 32 sectors of the normal's hemisphere
+// as bits; a sample sets the bits its span covers, and light passes through the gaps, behind
+// thin pillars and fences. Samples on one continuous surface also occlude the angles between
+// them (see side_bits), so solids stay as dark as GTAO makes them with few samples.
+
+const SECTORS: u32 = 32u;
+
+// Antiderivative of cos(t - n) |sin t| that is 0 at t = 0: arc_integral signed by the side.
+fn arc_measure(t: f32, n: f32) -> f32 {
+    return select(-1.0, 1.0, t >= 0.0) * arc_integral(t, n);
+}
+
+// Antiderivatives of cos(t) and sin(t) times cos(t - n) |sin t| (see bent_in_slice in gtao),
+// signed by the side like arc_measure, for the mean unoccluded direction.
+fn bent_measure(t: f32, n: f32) -> vec2<f32> {
+    let cn = cos(n);
+    let sn = sin(n);
+    let c = cos(t);
+    let s = sin(t);
+    let a = (-cn * c * c * c + sn * s * s * s) / 3.0 + cn / 3.0;
+    let b = cn * s * s * s / 3.0 + sn * (c * c * c / 3.0 - c) + 2.0 * sn / 3.0;
+    return select(-1.0, 1.0, t >= 0.0) * vec2<f32>(a, b);
+}
+
+// Sector bits that the angle span [a, b] (radians from V) touches, sectors being equal angles of
+// the hemisphere [lo, lo + pi]. Rounding outwards, as the paper does, makes every sample occlude
+// at least one sector: with a few samples per slice that balances the light that leaks between
+// them.
+fn span_bits(a: f32, b: f32, lo: f32) -> u32 {
+    let first = i32(floor((min(a, b) - lo) / PI * f32(SECTORS)));
+    let last = i32(ceil((max(a, b) - lo) / PI * f32(SECTORS))) - 1;
+    let start = clamp(first, 0, i32(SECTORS));
+    let end = clamp(last + 1, 0, i32(SECTORS));
+    if end <= start {
+        return 0u;
+    }
+    let count = u32(end - start);
+    return select((1u << count) - 1u, 0xffffffffu, count == SECTORS) << u32(start);
+}
+
+// Occluded sectors from the samples on one side of a slice (side = +1 or -1).
+//
+// With a few samples per side, spans of finite thickness leave gaps in front of solid surfaces:
+// the foot of a wall between a floor sample and a wall sample stays open. Where two consecutive
+// samples (the first with the shaded point) lie less than a thickness apart in depth, the
+// surface between them is taken as continuous and the angles between them are occluded too, as
+// a height field would have it; a depth jump of more than a thickness, a thin object in front of
+// what lies behind it, keeps its gaps.
+fn side_bits(s: Surface, slice: Slice, side: f32, jitter: f32, lo: f32) -> u32 {
+    var bits = 0u;
+    // The hemisphere's edge on this side, and the shaded point as the chain's first link.
+    var previous_angle = slice.angle_n + side * HALF_PI;
+    var previous_depth = s.depth;
+    for (var step = 0u; step < ao.steps; step++) {
+        let sample = side_sample(s, slice, side, step_distance(step, ao.steps, jitter, s.radius_px));
+        if sample.w == 0.0 || dot(sample.xyz, sample.xyz) >= ao.radius * ao.radius {
+            previous_depth = -1.0;
+            continue;
+        }
+        let front = s.p + sample.xyz;
+        let front_depth = -front.z;
+        let thickness = ao.thickness + ao.thickness_growth * front_depth;
+        // The back face lies further along the ray from the eye through the front face.
+        let back = select(front * ((front_depth + thickness) / front_depth),
+                          front - vec3<f32>(0.0, 0.0, thickness), view.orthographic > 0.5);
+        let to_back = back - s.p;
+        let front_angle = side * fast_acos(dot(sample.xyz, s.v) / length(sample.xyz));
+        let back_angle = side * fast_acos(dot(to_back, s.v) / length(to_back));
+        bits |= span_bits(front_angle, back_angle, lo);
+        if abs(front_depth - previous_depth) < thickness {
+            bits |= span_bits(previous_angle, front_angle, lo);
+        }
+        previous_angle = front_angle;
+        previous_depth = front_depth;
+    }
+    return bits;
+}
+
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if any(id.xy >= vec2<u32>(view.size)) {
+        return;
+    }
+    let surface = load_surface(id.xy);
+    if nothing_to_sample(surface) {
+        store_unoccluded(surface);
+        return;
+    }
+    let noise = pixel_noise(id.xy, view.frame_index);
+    let bent_wanted = (ao.flags & FLAG_BENT_NORMALS) != 0u;
+
+    var visible = 0.0;
+    var unoccluded = 0.0;
+    var bent = vec3<f32>(0.0);
+    for (var i = 0u; i < ao.count; i++) {
+        let slice = make_slice(surface, (f32(i) + noise.x) * PI / f32(ao.count));
+        let n = slice.angle_n;
+        let lo = n - HALF_PI;
+        let occluded = side_bits(surface, slice, 1.0, noise.y, lo)
+            | side_bits(surface, slice, -1.0, noise.y, lo);
+        unoccluded += slice.n_len * (arc_measure(lo + PI, n) - arc_measure(lo, n));
+        if bent_wanted {
+            // Only the occluded part's direction is taken from the slice; see open_bent.
+            let d = bent_measure(lo, n) - bent_measure(lo + PI, n);
+            bent += slice.n_len * (d.x * surface.v + d.y * slice.tangent);
+        }
+        // Integrate the runs of visible sectors in closed form, one run per loop.
+        var open = ~occluded;
+        while open != 0u {
+            let start = countTrailingZeros(open);
+            let run = countTrailingZeros(~(open >> start));
+            let end = start + run;
+            let a = lo + f32(start) * PI / f32(SECTORS);
+            let b = lo + f32(end) * PI / f32(SECTORS);
+            visible += slice.n_len * (arc_measure(b, n) - arc_measure(a, n));
+            if bent_wanted {
+                let d = bent_measure(b, n) - bent_measure(a, n);
+                bent += slice.n_len * (d.x * surface.v + d.y * slice.tangent);
+            }
+            open = select(open & ~(((1u << run) - 1u) << start), open & ~(0xffffffffu << start), end == SECTORS);
+        }
+    }
+    store_ao(surface, select(1.0, visible / unoccluded, unoccluded > 0.0),
+             bent + open_bent(surface.n, unoccluded));
+}

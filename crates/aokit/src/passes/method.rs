@@ -1,0 +1,110 @@
+//! The AO method kernels: linear depth and normals in, AO (and bent normals) out.
+//!
+//! Every method shares one binding layout and one settings buffer (`AoUniforms`), so one pass
+//! runs whichever kernel the settings name. Kernels compile the first time their method is
+//! used and stay compiled, so switching methods at runtime costs a compile only once.
+
+use std::collections::HashMap;
+
+use super::{ComputeKernel, PassContext, bind};
+use crate::gpu::{create_texture_2d, create_uniform_buffer};
+use crate::settings::{AoSettings, Method};
+use crate::shader;
+use crate::uniforms::AoUniforms;
+
+/// Format of the AO the kernels write: 1 = unoccluded.
+pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+/// Format of the bent normals: view-space xyz, AO in w. Half floats hold a unit vector to
+/// about 0.05 degrees, finer than any AO estimate.
+pub const BENT_NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+/// Runs the kernel of the current method.
+pub struct MethodPass {
+    kernels: HashMap<Method, ComputeKernel>,
+    uniforms: wgpu::Buffer,
+    point_clamp: wgpu::Sampler,
+    /// Bound in place of the bent normals when they are off: the kernels never write it.
+    bent_placeholder: wgpu::TextureView,
+}
+
+fn layout() -> [wgpu::BindGroupLayoutEntry; 7] {
+    [
+        bind::uniform(0),
+        bind::uniform(1),
+        bind::texture(2, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::texture(3, wgpu::TextureSampleType::Uint),
+        bind::storage_texture(4, AO_FORMAT),
+        bind::sampler(5, wgpu::SamplerBindingType::NonFiltering),
+        bind::storage_texture(6, BENT_NORMALS_FORMAT),
+    ]
+}
+
+impl MethodPass {
+    /// Creates the shared resources and compiles the kernel of `settings.method`.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &AoSettings) -> Self {
+        // Depths are gathered and loaded, never filtered: clamping repeats edge depths instead
+        // of wrapping to the other side of the image.
+        let point_clamp = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("aokit point clamp"),
+            ..Default::default()
+        });
+        let bent_placeholder = create_texture_2d(
+            device,
+            "aokit bent normals placeholder",
+            [1, 1],
+            BENT_NORMALS_FORMAT,
+            wgpu::TextureUsages::STORAGE_BINDING,
+        )
+        .create_view(&Default::default());
+        let mut pass = Self {
+            kernels: HashMap::new(),
+            uniforms: create_uniform_buffer::<AoUniforms>(device, "aokit method settings"),
+            point_clamp,
+            bent_placeholder,
+        };
+        pass.set_settings(device, queue, settings);
+        pass
+    }
+
+    /// Uploads validated settings, compiling their method's kernel if it is new; they apply to
+    /// every later `encode`.
+    pub fn set_settings(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        settings: &AoSettings,
+    ) {
+        self.kernels.entry(settings.method).or_insert_with(|| {
+            ComputeKernel::new(device, &shader::method(settings.method), &layout())
+        });
+        queue.write_buffer(
+            &self.uniforms,
+            0,
+            bytemuck::bytes_of(&AoUniforms::new(settings)),
+        );
+    }
+
+    /// Records `method`'s kernel, which `set_settings` compiled.
+    pub fn encode(
+        &self,
+        ctx: &mut PassContext<'_>,
+        method: Method,
+        linear_depth: &wgpu::TextureView,
+        normals: &wgpu::TextureView,
+        ao: &wgpu::TextureView,
+        bent_normals: Option<&wgpu::TextureView>,
+    ) {
+        let kernel = &self.kernels[&method];
+        ctx.dispatch(
+            kernel,
+            &[
+                self.uniforms.as_entire_binding(),
+                wgpu::BindingResource::TextureView(linear_depth),
+                wgpu::BindingResource::TextureView(normals),
+                wgpu::BindingResource::TextureView(ao),
+                wgpu::BindingResource::Sampler(&self.point_clamp),
+                wgpu::BindingResource::TextureView(bent_normals.unwrap_or(&self.bent_placeholder)),
+            ],
+        );
+    }
+}
