@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use aokit::{AdapterKind, GpuContext};
+use aokit_scene::composite::SpecularOcclusion;
 use aokit_scene::{Renderer, Scene};
 use clap::Args;
 
@@ -34,6 +35,34 @@ pub struct RenderArgs {
     /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
     #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3)]
     pub sun: Option<glam::Vec3>,
+    /// Multi-bounce AO in lit.png's ambient diffuse light (the default).
+    #[arg(long, overrides_with = "no_multi_bounce")]
+    pub multi_bounce: bool,
+    /// The raw AO in lit.png's ambient diffuse light.
+    #[arg(long, overrides_with = "multi_bounce")]
+    pub no_multi_bounce: bool,
+    /// Specular occlusion in lit.png: none, gtso (bent normals with gtao and vbao) or frostbite
+    /// (default: frostbite).
+    #[arg(long, value_name = "MODE", value_parser = parse_specular_occlusion)]
+    pub specular_occlusion: Option<SpecularOcclusion>,
+    /// Roughness of every surface in lit.png, 0 (mirror) to 1 (default: 0.5).
+    #[arg(long, value_name = "R", value_parser = parse_roughness, allow_negative_numbers = true)]
+    pub roughness: Option<f32>,
+}
+
+fn parse_specular_occlusion(s: &str) -> Result<SpecularOcclusion, String> {
+    s.parse()
+}
+
+fn parse_roughness(s: &str) -> Result<f32, String> {
+    let r: f32 = s
+        .trim()
+        .parse()
+        .map_err(|e| format!("`{s}` is not a number: {e}"))?;
+    if !(0.0..=1.0).contains(&r) {
+        return Err(format!("`{s}` is outside [0, 1]"));
+    }
+    Ok(r)
 }
 
 /// Largest side `--size` accepts: twice the 8192 every wgpu device supports, far past any
@@ -87,6 +116,26 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             bail!("--sun {sun} has no direction");
         }
         renderer.lighting.sun_direction = sun.normalize();
+    }
+    let lighting = &mut renderer.lighting;
+    lighting.multi_bounce = match (args.multi_bounce, args.no_multi_bounce) {
+        (_, true) => false,
+        (true, _) => true,
+        _ => lighting.multi_bounce,
+    };
+    if let Some(mode) = args.specular_occlusion {
+        lighting.specular_occlusion = mode;
+    }
+    if let Some(roughness) = args.roughness {
+        lighting.roughness = roughness;
+    }
+    if lighting.specular_occlusion == SpecularOcclusion::Gtso && !settings.method.has_bent_normals()
+    {
+        eprintln!(
+            "note: {} has no bent normals: gtso uses the surface normal, keeping the AO's \
+             amount but not the direction of the openings",
+            settings.method.name()
+        );
     }
     let frame = renderer.render(&gpu, &camera, args.size, 0)?;
     if frame.ao.iter().any(|v| !v.is_finite()) {

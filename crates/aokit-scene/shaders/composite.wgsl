@@ -1,6 +1,15 @@
-// Lit composite: albedo x (ambient x AO + shadowed sunlight), sky where nothing was drawn.
-// AO darkens only the ambient term: direct light has its own visibility, the shadow map.
+// Lit composite, sky where nothing was drawn; elsewhere, with F the ambient Fresnel term:
+//   albedo x (ambient x (1 - F) x diffuse occlusion + shadowed sunlight)
+//     + ambient x F x specular occlusion
+// AO darkens only the ambient terms: direct light has its own visibility, the shadow map.
+// Diffuse occlusion is the AO, or its multi-bounce form; specular occlusion is 1, GTSO or
+// Frostbite's (functions from aokit's occlusion.wgsl). docs/composite.md has the details.
 // Mirrors `CompositeUniforms`.
+
+// Values of `CompositeUniforms.specular_occlusion`, as `SpecularOcclusion::code` writes them.
+const SO_NONE: u32 = 0u;
+const SO_GTSO: u32 = 1u;
+const SO_FROSTBITE: u32 = 2u;
 
 struct CompositeUniforms {
     // NDC (x, y, depth, 1) to homogeneous view position: the inverse projection.
@@ -10,11 +19,24 @@ struct CompositeUniforms {
     // Unit direction towards the sun, in view space.
     sun_direction: vec4<f32>,
     sun_color: vec4<f32>,
+    // Radiance of the uniform sky that lights the ambient terms.
     ambient_color: vec4<f32>,
     sky_color: vec4<f32>,
+    // F0, reflectance at normal incidence.
+    specular_color: vec4<f32>,
     far_ndc_depth: f32,
     // Distance surfaces are pushed along their normal before the shadow lookup, against acne.
     shadow_normal_offset: f32,
+    // 1 for orthographic, 0 for perspective, for the view direction.
+    orthographic: f32,
+    // Perceptual roughness of every surface.
+    roughness: f32,
+    // 1: diffuse occlusion is multi_bounce_gtao(AO, albedo); 0: the AO.
+    multi_bounce: u32,
+    // One of the SO_* constants.
+    specular_occlusion: u32,
+    // 1 when `bent_normals` holds the AO pipeline's bent normals; 0 when it only fills the slot.
+    has_bent_normals: u32,
 }
 
 @group(0) @binding(0) var<uniform> light: CompositeUniforms;
@@ -25,6 +47,8 @@ struct CompositeUniforms {
 @group(0) @binding(5) var shadow_map: texture_depth_2d;
 @group(0) @binding(6) var shadow_sampler: sampler_comparison;
 @group(0) @binding(7) var lit_out: texture_storage_2d<rgba8unorm, write>;
+// View-space bent normal in xyz.
+@group(0) @binding(8) var bent_normals: texture_2d<f32>;
 
 fn linear_to_srgb(c: vec3<f32>) -> vec3<f32> {
     let low = c * 12.92;
@@ -48,6 +72,15 @@ fn sun_visibility(p: vec3<f32>, n: vec3<f32>) -> f32 {
     return lit / 9.0;
 }
 
+// Fresnel of the ambient reflection: Schlick's approximation at N.V with the grazing value
+// lowered for rough surfaces, whose lobes average in less grazing reflection (Lagarde 2011,
+// "Adopting a physically based shading model"; used for image-based lighting since).
+fn ambient_fresnel(n_dot_v: f32) -> vec3<f32> {
+    let f0 = light.specular_color.rgb;
+    let grazing = max(vec3<f32>(1.0 - saturate(light.roughness)), f0);
+    return f0 + (grazing - f0) * pow(1.0 - n_dot_v, 5.0);
+}
+
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let size = textureDimensions(lit_out);
@@ -66,7 +99,43 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         let occlusion = textureLoad(ao, id.xy, 0).r;
         let n_dot_l = max(dot(n, light.sun_direction.xyz), 0.0);
         let direct = light.sun_color.rgb * n_dot_l * sun_visibility(p, n);
-        color = base * (light.ambient_color.rgb * occlusion + direct);
+
+        // Towards the eye: from the point for perspective, +Z for orthographic cameras.
+        let v = normalize(mix(-p, vec3<f32>(0.0, 0.0, 1.0), light.orthographic));
+        // Silhouette normals can face slightly away from the eye: clamp rather than go negative.
+        let n_dot_v = saturate(dot(n, v));
+        let fresnel = ambient_fresnel(n_dot_v);
+
+        var diffuse_occlusion = vec3<f32>(occlusion);
+        if light.multi_bounce != 0u {
+            diffuse_occlusion = multi_bounce_gtao(occlusion, base);
+        }
+        var specular_occlusion: f32;
+        switch light.specular_occlusion {
+            case SO_GTSO: {
+                // Without the pipeline's bent normals the G-buffer normal stands in: the cone
+                // sizes still follow the AO, the direction of the openings is lost.
+                var bent = n;
+                if light.has_bent_normals != 0u {
+                    bent = textureLoad(bent_normals, id.xy, 0).xyz;
+                }
+                let r = reflect(-v, n);
+                specular_occlusion = specular_occlusion_gtso(bent, r, occlusion, light.roughness);
+            }
+            case SO_FROSTBITE: {
+                let r = light.roughness;
+                specular_occlusion = specular_occlusion_frostbite(n_dot_v, occlusion, r);
+            }
+            case SO_NONE, default: {
+                specular_occlusion = 1.0;
+            }
+        }
+
+        let ambient = light.ambient_color.rgb;
+        // Light the Fresnel term sends into the specular lobe does not also reach the diffuse.
+        let diffuse = base * (ambient * (1.0 - fresnel) * diffuse_occlusion + direct);
+        let specular = ambient * fresnel * specular_occlusion;
+        color = diffuse + specular;
     }
     textureStore(lit_out, id.xy, vec4<f32>(linear_to_srgb(saturate(color)), 1.0));
 }

@@ -1,8 +1,9 @@
-//! The lit composite: albedo x (ambient x AO + direct sunlight).
+//! The lit composite: ambient diffuse and specular light occluded by the AO pipeline's outputs,
+//! plus shadowed sunlight. docs/composite.md has the formula.
 
-use aokit::Projection;
 use aokit::gpu::create_uniform_buffer;
 use aokit::passes::{ComputeKernel, bind};
+use aokit::{AoOutputs, Projection};
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat4, Vec3};
 
@@ -20,10 +21,88 @@ pub struct Lighting {
     pub sun_direction: Vec3,
     /// Sun irradiance.
     pub sun_color: Vec3,
-    /// Uniform sky light, the term AO darkens.
+    /// Radiance of the uniform sky that lights the ambient diffuse and specular terms, the ones
+    /// AO darkens.
     pub ambient_color: Vec3,
     /// Background colour.
     pub sky_color: Vec3,
+    /// Darken ambient diffuse light with [`multi_bounce_gtao`](aokit::occlusion::multi_bounce_gtao)
+    /// of the AO and the albedo instead of the raw AO: occluded directions show nearby lit
+    /// surfaces, not black, so bright surfaces lose less light. On by default, as in renderers
+    /// that ship GTAO; the raw AO is still what the pipeline returns (`ao.png`).
+    pub multi_bounce: bool,
+    /// How the AO occludes the ambient specular term.
+    pub specular_occlusion: SpecularOcclusion,
+    /// Perceptual roughness in `[0, 1]` (GGX `alpha = roughness^2`) of every surface: the
+    /// G-buffer has no roughness channel, so one value serves the whole scene. Values outside
+    /// `[0, 1]` are clamped by the shader.
+    pub roughness: f32,
+    /// Specular reflectance at normal incidence (F0), linear RGB: 0.04 for common dielectrics
+    /// (index of refraction 1.5), the metal's colour for metals.
+    pub specular_color: Vec3,
+}
+
+/// How the composite occludes ambient specular light.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum SpecularOcclusion {
+    /// Not at all: the full ambient reflection everywhere, to see what occlusion removes.
+    None,
+    /// [`specular_occlusion_gtso`](aokit::occlusion::specular_occlusion_gtso): the visibility
+    /// cone around the bent normal intersected with the specular cone. Uses the pipeline's bent
+    /// normals; the [`Renderer`](crate::Renderer) turns them on when the method has them
+    /// ([`Method::has_bent_normals`](aokit::Method::has_bent_normals)). Other methods fall back
+    /// to the G-buffer normal, which keeps the cone sizes but loses the direction of the
+    /// openings.
+    Gtso,
+    /// [`specular_occlusion_frostbite`](aokit::occlusion::specular_occlusion_frostbite): from AO,
+    /// N.V and roughness alone. The default: it works with every method and asks nothing more
+    /// of the AO pipeline, so the composite's settings never change the work that is timed.
+    #[default]
+    Frostbite,
+}
+
+impl SpecularOcclusion {
+    /// Every mode, in the order the CLI lists them.
+    pub const ALL: [SpecularOcclusion; 3] = [
+        SpecularOcclusion::None,
+        SpecularOcclusion::Gtso,
+        SpecularOcclusion::Frostbite,
+    ];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpecularOcclusion::None => "none",
+            SpecularOcclusion::Gtso => "gtso",
+            SpecularOcclusion::Frostbite => "frostbite",
+        }
+    }
+
+    /// The mode's code in `CompositeUniforms.specular_occlusion` (the `SO_*` constants of
+    /// `shaders/composite.wgsl`).
+    fn code(self) -> u32 {
+        match self {
+            SpecularOcclusion::None => 0,
+            SpecularOcclusion::Gtso => 1,
+            SpecularOcclusion::Frostbite => 2,
+        }
+    }
+}
+
+impl std::str::FromStr for SpecularOcclusion {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Self::ALL
+            .into_iter()
+            .find(|mode| mode.name() == s)
+            .ok_or_else(|| {
+                let known: Vec<&str> = Self::ALL.iter().map(|m| m.name()).collect();
+                format!(
+                    "unknown specular occlusion `{s}` (known: {})",
+                    known.join(", ")
+                )
+            })
+    }
 }
 
 impl Default for Lighting {
@@ -36,6 +115,12 @@ impl Default for Lighting {
             // Ambient strong enough that AO reads clearly in shade, where it is all the light.
             ambient_color: Vec3::new(0.62, 0.67, 0.78),
             sky_color: Vec3::new(0.42, 0.55, 0.75),
+            multi_bounce: true,
+            specular_occlusion: SpecularOcclusion::default(),
+            // Between polished and matte, like painted plaster: the specular occlusion modes
+            // differ visibly without the sharp reflections a uniform sky would make look flat.
+            roughness: 0.5,
+            specular_color: Vec3::splat(0.04),
         }
     }
 }
@@ -50,9 +135,15 @@ struct CompositeUniforms {
     sun_color: [f32; 4],
     ambient_color: [f32; 4],
     sky_color: [f32; 4],
+    specular_color: [f32; 4],
     far_ndc_depth: f32,
     shadow_normal_offset: f32,
-    _pad: [f32; 2],
+    orthographic: f32,
+    roughness: f32,
+    multi_bounce: u32,
+    specular_occlusion: u32,
+    has_bent_normals: u32,
+    _pad: u32,
 }
 
 /// Where and how the frame was seen, for the composite.
@@ -88,6 +179,7 @@ impl CompositePass {
                 bind::texture(5, wgpu::TextureSampleType::Depth),
                 bind::sampler(6, wgpu::SamplerBindingType::Comparison),
                 bind::storage_texture(7, LIT_FORMAT),
+                bind::texture(8, float),
             ],
         );
         let shadow_sampler = device.create_sampler(&wgpu::SamplerDescriptor {
@@ -105,7 +197,8 @@ impl CompositePass {
         }
     }
 
-    /// Records the composite into `output` (a [`LIT_FORMAT`] storage texture).
+    /// Records the composite into `output` (a [`LIT_FORMAT`] storage texture), reading the AO
+    /// and, for [`SpecularOcclusion::Gtso`], the bent normals when `ao` has them.
     #[allow(clippy::too_many_arguments)]
     pub fn encode(
         &self,
@@ -115,7 +208,7 @@ impl CompositePass {
         lighting: &Lighting,
         view: &CompositeView<'_>,
         gbuffer: &GBuffer,
-        ao: &wgpu::Texture,
+        ao: &AoOutputs<'_>,
         shadow_map: &wgpu::Texture,
         output: &wgpu::Texture,
     ) {
@@ -135,10 +228,20 @@ impl CompositePass {
             sun_color: lighting.sun_color.extend(0.0).to_array(),
             ambient_color: lighting.ambient_color.extend(0.0).to_array(),
             sky_color: lighting.sky_color.extend(0.0).to_array(),
+            specular_color: lighting.specular_color.extend(0.0).to_array(),
             far_ndc_depth: view.projection.far_ndc_depth(),
             // Two texels clear the map's quantisation on slopes up to about 60 degrees.
             shadow_normal_offset: 2.0 * view.sun.texel_size,
-            _pad: [0.0; 2],
+            orthographic: if view.projection.is_orthographic() {
+                1.0
+            } else {
+                0.0
+            },
+            roughness: lighting.roughness,
+            multi_bounce: lighting.multi_bounce.into(),
+            specular_occlusion: lighting.specular_occlusion.code(),
+            has_bent_normals: ao.bent_normals_view.is_some().into(),
+            _pad: 0,
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
         let color = |t: &wgpu::Texture| t.create_view(&Default::default());
@@ -148,14 +251,16 @@ impl CompositePass {
                 ..Default::default()
             })
         };
-        let (albedo, normals, depth, ao, shadow, output) = (
+        let (albedo, normals, depth, shadow, output) = (
             color(&gbuffer.albedo),
             color(&gbuffer.normals),
             depth_only(&gbuffer.depth),
-            color(ao),
             depth_only(shadow_map),
             color(output),
         );
+        // Without bent normals the AO fills their slot, which takes any unfilterable float
+        // texture; `has_bent_normals` = 0 tells the shader not to read it.
+        let bent_normals = ao.bent_normals_view.unwrap_or(ao.ao_view);
         self.kernel.dispatch(
             device,
             encoder,
@@ -164,10 +269,11 @@ impl CompositePass {
                 wgpu::BindingResource::TextureView(&albedo),
                 wgpu::BindingResource::TextureView(&normals),
                 wgpu::BindingResource::TextureView(&depth),
-                wgpu::BindingResource::TextureView(&ao),
+                wgpu::BindingResource::TextureView(ao.ao_view),
                 wgpu::BindingResource::TextureView(&shadow),
                 wgpu::BindingResource::Sampler(&self.shadow_sampler),
                 wgpu::BindingResource::TextureView(&output),
+                wgpu::BindingResource::TextureView(bent_normals),
             ],
             gbuffer.size,
             None,
@@ -188,8 +294,14 @@ mod tests {
             sun_color,
             ambient_color,
             sky_color,
+            specular_color,
             far_ndc_depth,
             shadow_normal_offset,
+            orthographic,
+            roughness,
+            multi_bounce,
+            specular_occlusion,
+            has_bent_normals,
         });
         aokit::shader::check_layout(
             &shaders::COMPOSITE,
@@ -198,5 +310,42 @@ mod tests {
             std::mem::size_of::<CompositeUniforms>(),
         )
         .unwrap();
+    }
+
+    #[test]
+    fn specular_occlusion_names_round_trip() {
+        for mode in SpecularOcclusion::ALL {
+            assert_eq!(mode.name().parse::<SpecularOcclusion>(), Ok(mode));
+        }
+        let err = "ssgi".parse::<SpecularOcclusion>().unwrap_err();
+        assert!(
+            err.contains("ssgi") && err.contains("none, gtso, frostbite"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn specular_occlusion_codes_match_wgsl() {
+        use wgpu::naga;
+        let module = shaders::COMPOSITE.validate().unwrap();
+        for (mode, name) in [
+            (SpecularOcclusion::None, "SO_NONE"),
+            (SpecularOcclusion::Gtso, "SO_GTSO"),
+            (SpecularOcclusion::Frostbite, "SO_FROSTBITE"),
+        ] {
+            let constant = module
+                .constants
+                .iter()
+                .find(|(_, c)| c.name.as_deref() == Some(name))
+                .unwrap_or_else(|| panic!("composite.wgsl has no constant {name}"))
+                .1;
+            let value = &module.global_expressions[constant.init];
+            let expected = naga::Expression::Literal(naga::Literal::U32(mode.code()));
+            assert!(
+                *value == expected,
+                "{name} is {value:?}, Rust says {}",
+                mode.code()
+            );
+        }
     }
 }

@@ -7,7 +7,7 @@ use aokit::{
 use glam::{Mat4, Vec3};
 
 use crate::camera::Camera;
-use crate::composite::{CompositePass, CompositeView, LIT_FORMAT, Lighting};
+use crate::composite::{CompositePass, CompositeView, LIT_FORMAT, Lighting, SpecularOcclusion};
 use crate::gbuffer::{GBuffer, GBufferPass, GpuMesh};
 use crate::scene::Scene;
 use crate::shadow::{ShadowPass, SunView};
@@ -29,7 +29,8 @@ pub struct Frame {
     pub linear_depth: Vec<f32>,
     /// View-space unit normals, zero where nothing was drawn.
     pub normals: Vec<Vec3>,
-    /// View-space bent normals, when the settings ask for them.
+    /// View-space bent normals, when the settings given to the [`Renderer`] ask for them (not
+    /// when only the composite's GTSO turned them on).
     pub bent_normals: Option<Vec<Vec3>>,
 }
 
@@ -65,7 +66,11 @@ pub struct Renderer {
     shadow_pass: ShadowPass,
     composite: CompositePass,
     ao: AoPipeline,
-    /// Lighting of the lit composite.
+    /// The AO settings as the caller gave them; the pipeline may run them with bent normals on
+    /// (see [`Renderer::pipeline_settings`]).
+    settings: AoSettings,
+    /// Lighting of the lit composite. [`SpecularOcclusion::Gtso`] makes the next frames compute
+    /// bent normals when the method can (see [`Renderer::pipeline_settings`]).
     pub lighting: Lighting,
 }
 
@@ -76,15 +81,34 @@ impl Renderer {
         scene: &Scene,
         settings: &AoSettings,
     ) -> Result<Self, RenderError> {
+        let lighting = Lighting::default();
         Ok(Self {
             mesh: GpuMesh::new(&gpu.device, &scene.mesh),
             bounds: scene.bounds,
             gbuffer_pass: GBufferPass::new(&gpu.device),
             shadow_pass: ShadowPass::new(&gpu.device),
             composite: CompositePass::new(&gpu.device),
-            ao: AoPipeline::new(&gpu.device, &gpu.queue, settings)?,
-            lighting: Lighting::default(),
+            ao: AoPipeline::new(
+                &gpu.device,
+                &gpu.queue,
+                &pipeline_settings(settings, &lighting),
+            )?,
+            settings: *settings,
+            lighting,
         })
+    }
+
+    /// The AO settings as given to [`Renderer::new`] or [`Renderer::set_settings`].
+    pub fn settings(&self) -> &AoSettings {
+        &self.settings
+    }
+
+    /// The settings the AO pipeline runs: [`Renderer::settings`], with
+    /// [`AoSettings::bent_normals`] turned on when the composite uses
+    /// [`SpecularOcclusion::Gtso`] and the method has bent normals. The caller's settings are
+    /// left as they were, and [`Frame::bent_normals`] follows them.
+    pub fn pipeline_settings(&self) -> AoSettings {
+        pipeline_settings(&self.settings, &self.lighting)
     }
 
     /// Times the AO passes of later frames; `false` when the device has no timestamps.
@@ -103,7 +127,13 @@ impl Renderer {
         gpu: &GpuContext,
         settings: &AoSettings,
     ) -> Result<(), RenderError> {
-        Ok(self.ao.set_settings(&gpu.device, &gpu.queue, settings)?)
+        self.ao.set_settings(
+            &gpu.device,
+            &gpu.queue,
+            &pipeline_settings(settings, &self.lighting),
+        )?;
+        self.settings = *settings;
+        Ok(())
     }
 
     /// The projection `camera` gets at `size`, near and far planes fitted to the scene; the
@@ -136,6 +166,11 @@ impl Renderer {
             .map_err(|e| RenderError::Camera(format!("camera `{}`: {e}", camera.name)))?;
         let view_from_world = camera.view_from_world();
         let (device, queue) = (&gpu.device, &gpu.queue);
+        // `lighting` is a public field, changed at any time: follow its need for bent normals.
+        let wanted = self.pipeline_settings();
+        if *self.ao.settings() != wanted {
+            self.ao.set_settings(device, queue, &wanted)?;
+        }
 
         let gbuffer = GBuffer::new(device, size);
         let lit = create_texture_2d(
@@ -179,7 +214,7 @@ impl Renderer {
                 sun: &sun,
             },
             &gbuffer,
-            outputs.ao,
+            &outputs,
             &self.shadow_pass.map,
             &lit,
         );
@@ -188,6 +223,7 @@ impl Renderer {
         let ao = read_texture_f32(device, queue, outputs.ao)?;
         let bent_normals = outputs
             .bent_normals
+            .filter(|_| self.settings.bent_normals)
             .map(|texture| read_texture_rgba16f(device, queue, texture))
             .transpose()?
             .map(|texels| texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect());
@@ -216,5 +252,14 @@ impl Renderer {
             normals,
             bent_normals,
         })
+    }
+}
+
+/// `settings` with bent normals on when `lighting` needs them and the method computes them.
+fn pipeline_settings(settings: &AoSettings, lighting: &Lighting) -> AoSettings {
+    let gtso = lighting.specular_occlusion == SpecularOcclusion::Gtso;
+    AoSettings {
+        bent_normals: settings.bent_normals || (gtso && settings.method.has_bent_normals()),
+        ..*settings
     }
 }

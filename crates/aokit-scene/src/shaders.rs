@@ -1,6 +1,6 @@
-//! The scene renderer's WGSL programs, sharing aokit's normal encoding.
+//! The scene renderer's WGSL programs, sharing aokit's normal encoding and occlusion functions.
 
-use aokit::shader::{ENCODING, ShaderSource};
+use aokit::shader::{ENCODING, OCCLUSION, ShaderSource};
 
 /// G-buffer raster.
 pub const GBUFFER: ShaderSource = ShaderSource {
@@ -11,7 +11,11 @@ pub const GBUFFER: ShaderSource = ShaderSource {
 /// Lit composite.
 pub const COMPOSITE: ShaderSource = ShaderSource {
     name: "composite",
-    parts: &[ENCODING, include_str!("../shaders/composite.wgsl")],
+    parts: &[
+        ENCODING,
+        OCCLUSION,
+        include_str!("../shaders/composite.wgsl"),
+    ],
 };
 
 /// Sun shadow map.

@@ -14,6 +14,7 @@ pub mod error;
 pub mod gpu;
 pub mod inputs;
 pub mod normals;
+pub mod occlusion;
 pub mod passes;
 pub mod pipeline;
 pub mod projection;

@@ -19,6 +19,8 @@ pub const NOISE: &str = include_str!("../shaders/common/noise.wgsl");
 pub const AO: &str = include_str!("../shaders/common/ao.wgsl");
 /// Slices of the hemisphere through the view vector, for the slice-based methods.
 pub const SLICE: &str = include_str!("../shaders/common/slice.wgsl");
+/// Multi-bounce AO and specular occlusion for lighting passes; see [`crate::occlusion`].
+pub const OCCLUSION: &str = include_str!("../shaders/common/occlusion.wgsl");
 
 /// One WGSL program: the snippets it needs followed by its own file.
 #[derive(Clone, Copy, Debug)]
@@ -93,7 +95,14 @@ pub fn method(method: Method) -> ShaderSource {
     }
 }
 
-/// Every program the library compiles.
+/// The shading helpers of [`OCCLUSION`] alone: no entry point, validated so that the snippet
+/// renderers paste into their own shaders is known to compile.
+pub const OCCLUSION_FUNCTIONS: ShaderSource = ShaderSource {
+    name: "occlusion",
+    parts: &[OCCLUSION],
+};
+
+/// Every program the library compiles or validates.
 pub const ALL: &[ShaderSource] = &[
     LINEAR_DEPTH,
     IMPORT_DEPTH,
@@ -104,6 +113,7 @@ pub const ALL: &[ShaderSource] = &[
     HBAO_PLUS,
     GTAO,
     VBAO,
+    OCCLUSION_FUNCTIONS,
 ];
 
 impl ShaderSource {
@@ -221,9 +231,9 @@ mod tests {
                 "shaders/{pass}.wgsl is not in shader::ALL, so nothing validates it"
             );
         }
-        for snippet in [VIEW, ENCODING, NOISE, AO, SLICE] {
+        for snippet in [VIEW, ENCODING, NOISE, AO, SLICE, OCCLUSION] {
             assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
         }
-        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 5);
+        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 6);
     }
 }
