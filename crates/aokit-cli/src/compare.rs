@@ -4,16 +4,18 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow, bail};
-use aokit::{AoSettings, GpuContext, Method, Preset};
+use aokit::projection::pixel_to_ndc;
+use aokit::{AoSettings, GpuContext, Method, Preset, Projection};
 use aokit_eval::report::{MethodResult, Report, ViewResult};
 use aokit_eval::{
     Metrics, compare as score, depth_edge_mask, encode_png_grey, encode_png_rgb, error_map_rgb,
-    legend_rgb, read_scalar_exr, surface_mask,
+    grazing_mask, legend_rgb, read_scalar_exr, surface_mask,
 };
 use aokit_reference::{AoOptions, Falloff, ReferenceImage};
 use aokit_scene::external::ExternalAo;
 use aokit_scene::{Renderer, Scene};
 use clap::Args;
+use glam::{Vec2, Vec3};
 use serde_json::json;
 
 use crate::cache;
@@ -74,6 +76,8 @@ const ERROR_RANGE: f32 = 0.25;
 const EDGE_RELATIVE_DEPTH: f32 = 0.05;
 /// ...and pixels within 2 of one, where halos and missing contact shadows show.
 const EDGE_RADIUS: u32 = 2;
+/// Grazing surfaces: |n . v| below this, within about 17 degrees of edge-on.
+const GRAZING_COS: f32 = 0.3;
 
 /// What every view brings to scoring: the reference and a way to run a method on the same pixels.
 struct Scored {
@@ -126,8 +130,36 @@ fn median(mut values: Vec<f64>) -> Option<f64> {
 }
 
 /// Scores one method's AO against the reference and renders its images.
+/// Surfaces seen within about 17 degrees of edge-on (|n . v| < 0.3), where methods that march in
+/// screen space miss most of the hemisphere. Needs the reference's normals; without them
+/// (passes without normal.exr) nothing is selected.
+fn grazing(reference: &ReferenceImage, projection: &Projection) -> Vec<bool> {
+    let size = Vec2::new(reference.size[0] as f32, reference.size[1] as f32);
+    let to_eye: Vec<[f32; 3]> = reference
+        .linear_depth
+        .iter()
+        .enumerate()
+        .map(|(i, &depth)| {
+            let pixel = Vec2::new(
+                (i % reference.size[0] as usize) as f32,
+                (i / reference.size[0] as usize) as f32,
+            );
+            let p = projection.view_position_from_linear(pixel_to_ndc(pixel, size), depth);
+            let v = if projection.is_orthographic() {
+                Vec3::Z
+            } else {
+                -p
+            };
+            v.normalize_or_zero().to_array()
+        })
+        .collect();
+    let normals: Vec<[f32; 3]> = reference.normals.iter().map(|n| n.to_array()).collect();
+    grazing_mask(&normals, &to_eye, GRAZING_COS)
+}
+
 fn score_method(
     reference: &ReferenceImage,
+    grazing: &[bool],
     ao: &[f32],
     settings: &AoSettings,
     preset: Preset,
@@ -148,6 +180,7 @@ fn score_method(
         preset: preset.name().to_string(),
         all: score(reference.size, ao, &reference.ao, &surface),
         edges: score(reference.size, ao, &reference.ao, &edges),
+        grazing: score(reference.size, ao, &reference.ao, grazing),
         gpu_ms,
         samples_per_pixel: settings.samples_per_pixel(),
         ao_png: encode_png_grey(reference.size, ao)?,
@@ -182,6 +215,8 @@ fn score_scene_view(
         falloff: Falloff::None,
     };
     let reference = cache::reference(cache_dir, scene, camera, args.size, &options)?;
+    let projection = camera.projection(args.size[0] as f32 / args.size[1] as f32, &scene.bounds);
+    let grazing = grazing(&reference, &projection);
     let first = settings_for(args, methods[0], args.presets[0], radius)?;
     let mut renderer = Renderer::new(gpu, scene, &first)?;
     let timed = renderer.enable_timing(gpu);
@@ -198,6 +233,7 @@ fn score_scene_view(
             }
             results.push(score_method(
                 &reference,
+                &grazing,
                 &frame.ao,
                 &settings,
                 preset,
@@ -249,8 +285,9 @@ fn score_inputs(
             .iter()
             .map(|&d| if d.is_finite() && d > 0.0 { d } else { 0.0 })
             .collect(),
-        normals: Vec::new(),
+        normals: loaded.normals.clone().unwrap_or_default(),
     };
+    let grazing = grazing(&reference, &loaded.projection);
     let first = settings_for(args, methods[0], args.presets[0], radius)?;
     let mut external = ExternalAo::new(gpu, &first, &loaded.passes())?;
     let timed = external.enable_timing(gpu);
@@ -267,6 +304,7 @@ fn score_inputs(
             }
             results.push(score_method(
                 &reference,
+                &grazing,
                 &ao,
                 &settings,
                 preset,
@@ -376,6 +414,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 "gpu_ms": m.gpu_ms,
                 "all": metrics_json(&m.all),
                 "edges": metrics_json(&m.edges),
+                "grazing": metrics_json(&m.grazing),
             }));
         }
         views.push(ViewResult {
@@ -413,6 +452,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     };
     write("metrics.csv", report.csv())?;
     write("metrics.md", report.markdown())?;
+    write("metrics-by-method.md", report.markdown_by_method())?;
     write(
         "metrics.json",
         serde_json::to_string_pretty(&json!({ "adapter": gpu.describe(), "results": rows }))?
@@ -421,7 +461,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     write("report.html", report.html())?;
     print!("{}", report.markdown());
     println!(
-        "wrote metrics.csv, metrics.md, metrics.json, report.html and images/ to {}",
+        "wrote metrics.csv, metrics.md, metrics-by-method.md, metrics.json, report.html and images/ to {}",
         out.display()
     );
     Ok(())

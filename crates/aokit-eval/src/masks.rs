@@ -1,11 +1,34 @@
-//! Which pixels to score: surfaces, and the neighbourhoods of depth edges where screen-space AO
-//! goes wrong first (halos, missing contact shadows).
+//! Which pixels to score: surfaces, the neighbourhoods of depth edges where screen-space AO
+//! goes wrong first (halos, missing contact shadows), and surfaces seen nearly edge-on.
 
 /// True where there is a surface: linear depth finite and positive.
 pub fn surface_mask(linear_depth: &[f32]) -> Vec<bool> {
     linear_depth
         .iter()
         .map(|&d| d.is_finite() && d > 0.0)
+        .collect()
+}
+
+/// Surface pixels seen nearly edge-on: where the unit `normals` and the unit directions towards
+/// the eye `to_eye` have `|n . v| < max_cos`. Zero normals (no surface) are never in the mask,
+/// and if the two slices differ in length the mask is all false.
+///
+/// ```
+/// let normals = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0; 3]];
+/// let to_eye = [[0.0, 0.0, 1.0]; 3];
+/// assert_eq!(aokit_eval::grazing_mask(&normals, &to_eye, 0.3), [true, false, false]);
+/// ```
+pub fn grazing_mask(normals: &[[f32; 3]], to_eye: &[[f32; 3]], max_cos: f32) -> Vec<bool> {
+    if normals.len() != to_eye.len() {
+        return vec![false; normals.len()];
+    }
+    normals
+        .iter()
+        .zip(to_eye)
+        .map(|(n, v)| {
+            let facing = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+            n.iter().any(|&c| c != 0.0) && facing.abs() < max_cos
+        })
         .collect()
 }
 

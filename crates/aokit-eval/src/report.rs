@@ -20,6 +20,10 @@ pub struct MethodResult {
     pub all: Metrics,
     /// Scores over pixels near depth edges only.
     pub edges: Metrics,
+    /// Scores over surfaces seen nearly edge-on only (see
+    /// [`grazing_mask`](crate::grazing_mask)), where methods that march in screen space lose
+    /// most of the hemisphere.
+    pub grazing: Metrics,
     /// Median GPU time of the AO passes per frame, when timestamps were available.
     pub gpu_ms: Option<f64>,
     /// AO samples per pixel, a cost measure that needs no GPU timer.
@@ -67,6 +71,12 @@ impl Report {
     /// The title, notes and a GitHub table per view.
     pub fn markdown(&self) -> String {
         markdown::render(self)
+    }
+
+    /// Per method, a GitHub table of its RMSE (and bias) against the reference in every view,
+    /// one row per preset: how a method's error moves with its cost.
+    pub fn markdown_by_method(&self) -> String {
+        markdown::render_by_method(self)
     }
 
     /// One offline HTML page: images embedded as `data:` URIs, inline CSS and SVG, no scripts.

@@ -20,6 +20,7 @@ fn method(name: &str, preset: &str, rmse: f64, gpu_ms: Option<f64>, spp: u32) ->
         preset: preset.to_string(),
         all: metrics(rmse),
         edges: metrics(rmse * 2.0),
+        grazing: metrics(rmse * 3.0),
         gpu_ms,
         samples_per_pixel: spp,
         ao_png: encode_png_grey([2, 2], &[0.0, 0.5, 1.0, 0.25]).unwrap(),
@@ -56,6 +57,7 @@ fn report() -> Report {
                             ..metrics(0.0)
                         },
                         edges: Metrics::EMPTY,
+                        grazing: Metrics::EMPTY,
                         ..method("ssao", "ultra", 0.0, None, 64)
                     },
                 ],
@@ -70,7 +72,7 @@ fn csv_has_header_and_one_row_per_result() {
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(
         lines[0],
-        "view,method,preset,samples_per_pixel,gpu_ms,pixels,mae,rmse,bias,psnr,ssim,edge_pixels,edge_mae,edge_rmse,edge_bias,edge_psnr,edge_ssim"
+        "view,method,preset,samples_per_pixel,gpu_ms,pixels,mae,rmse,bias,psnr,ssim,edge_pixels,edge_mae,edge_rmse,edge_bias,edge_psnr,edge_ssim,grazing_pixels,grazing_mae,grazing_rmse,grazing_bias,grazing_psnr,grazing_ssim"
     );
     assert_eq!(lines.len(), 5);
     assert!(
@@ -84,17 +86,18 @@ fn csv_has_header_and_one_row_per_result() {
         lines[3]
     );
     assert!(
-        lines[4].contains(",inf,") && lines[4].ends_with(",0,NaN,NaN,NaN,NaN,NaN"),
+        lines[4].contains(",inf,")
+            && lines[4].ends_with(",0,NaN,NaN,NaN,NaN,NaN,0,NaN,NaN,NaN,NaN,NaN"),
         "{}",
         lines[4]
     );
     for line in &lines[1..] {
-        // 17 fields once the quoted comma is accounted for.
+        // 23 fields once the quoted comma is accounted for.
         let fields = line
             .replace("\"stairs, \"\"top\"\"\"", "view")
             .split(',')
             .count();
-        assert_eq!(fields, 17, "{line}");
+        assert_eq!(fields, 23, "{line}");
     }
 }
 
@@ -104,7 +107,7 @@ fn markdown_has_a_table_per_view() {
     assert!(md.starts_with("# AO <compare> & friends\n"));
     assert!(md.contains("## room / default") && md.contains("## stairs, \"top\""));
     assert_eq!(md.matches("| Method | Preset |").count(), 2);
-    assert!(md.contains("| gtao | low | 8 | 0.500 | 0.0400 | 0.0500 | -0.0250 | 26.02 | 0.9000 | 0.0800 | 0.1000 |"), "{md}");
+    assert!(md.contains("| gtao | low | 8 | 0.500 | 0.0400 | 0.0500 | -0.0250 | 26.02 | 0.9000 | 0.0800 | 0.1000 | -0.0750 |"), "{md}");
     assert!(md.contains("| hbao | medium | 16 | n/a |"), "{md}");
     assert!(
         md.contains("| inf |") && md.contains("| n/a | n/a |"),
@@ -168,4 +171,19 @@ fn empty_report_still_renders() {
     assert_eq!(report.csv().lines().count(), 1);
     assert!(report.markdown().contains("## nothing"));
     assert!(report.html().contains("No methods were scored."));
+}
+
+#[test]
+fn markdown_by_method_has_a_row_per_preset_and_a_column_per_view() {
+    let md = report().markdown_by_method();
+    assert!(md.contains("## gtao") && md.contains("## hbao") && md.contains("## ssao"));
+    assert!(
+        md.contains("| Preset | Samples/px | room / default | stairs, \"top\" |"),
+        "{md}"
+    );
+    assert!(md.contains("| low | 8 | 0.0500 (-0.025) | n/a |"), "{md}");
+    assert!(
+        md.contains("| medium | 16 | n/a | 0.0300 (-0.015) |"),
+        "{md}"
+    );
 }

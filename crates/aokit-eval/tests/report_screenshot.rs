@@ -10,7 +10,7 @@ use std::time::{Duration, Instant};
 
 use aokit_eval::report::{MethodResult, Report, ViewResult};
 use aokit_eval::{
-    compare, depth_edge_mask, encode_png_grey, encode_png_rgb, error_map_rgb, legend_rgb,
+    Metrics, compare, depth_edge_mask, encode_png_grey, encode_png_rgb, error_map_rgb, legend_rgb,
     surface_mask,
 };
 
@@ -75,6 +75,7 @@ fn synthetic_report() -> Report {
                 preset: preset.to_string(),
                 all: compare(size, &ao, &reference, &surface),
                 edges: compare(size, &ao, &reference, &edges),
+                grazing: Metrics::EMPTY,
                 gpu_ms: None,
                 samples_per_pixel: spp,
                 ao_png: encode_png_grey(size, &ao).unwrap(),

@@ -5,7 +5,8 @@ use super::text::csv_field;
 use crate::metrics::Metrics;
 
 const HEADER: &str = "view,method,preset,samples_per_pixel,gpu_ms,pixels,mae,rmse,bias,psnr,ssim,\
-edge_pixels,edge_mae,edge_rmse,edge_bias,edge_psnr,edge_ssim";
+edge_pixels,edge_mae,edge_rmse,edge_bias,edge_psnr,edge_ssim,\
+grazing_pixels,grazing_mae,grazing_rmse,grazing_bias,grazing_psnr,grazing_ssim";
 
 fn metrics(m: &Metrics) -> String {
     format!(
@@ -19,7 +20,7 @@ pub(super) fn render(report: &Report) -> String {
     for view in &report.views {
         for m in &view.methods {
             out.push_str(&format!(
-                "{},{},{},{},{},{},{}\n",
+                "{},{},{},{},{},{},{},{}\n",
                 csv_field(&view.name),
                 csv_field(&m.method),
                 csv_field(&m.preset),
@@ -27,6 +28,7 @@ pub(super) fn render(report: &Report) -> String {
                 m.gpu_ms.map(|ms| ms.to_string()).unwrap_or_default(),
                 metrics(&m.all),
                 metrics(&m.edges),
+                metrics(&m.grazing),
             ));
         }
     }

@@ -58,12 +58,12 @@ fn table(methods: &[MethodResult]) -> String {
     let mut out = String::from(
         "<table>\n<thead><tr><th>Method</th><th>Preset</th><th>Samples/px</th><th>GPU ms</th><th>MAE</th>\
          <th>RMSE</th><th>Bias</th><th>PSNR dB</th><th>SSIM</th><th>Edge MAE</th><th>Edge RMSE</th>\
-         <th>Edge SSIM</th></tr></thead>\n<tbody>\n",
+         <th>Edge SSIM</th><th>Grazing bias</th></tr></thead>\n<tbody>\n",
     );
     for m in methods {
         out.push_str(&format!(
             "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>\
-             <td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+             <td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
             html(&m.method),
             html(&m.preset),
             m.samples_per_pixel,
@@ -76,6 +76,7 @@ fn table(methods: &[MethodResult]) -> String {
             fixed(m.edges.mae, 4),
             fixed(m.edges.rmse, 4),
             fixed(m.edges.ssim, 4),
+            signed(m.grazing.bias, 4),
         ));
     }
     out.push_str("</tbody>\n</table>\n");
@@ -139,7 +140,8 @@ pub(super) fn render(report: &Report) -> String {
     }
     out.push_str(
         "<p>Metrics compare each method's AO (1 = unoccluded) with the reference over surface pixels; \
-         edge columns use only pixels near depth edges. Bias &gt; 0 means too bright.</p>\n",
+         edge columns use only pixels near depth edges, grazing ones only surfaces seen nearly edge-on. \
+         Bias &gt; 0 means too bright.</p>\n",
     );
     for view in &report.views {
         out.push_str(&view_section(report, view));
