@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates docs/quality.md and its images: every method against the ray-traced reference on
-# the built-in scenes and the four Sponza cameras. Takes a few minutes on 2 cores (the
-# references are cached; later runs only rerun the methods).
+# Regenerates docs/quality.md, the error tables and pictures of docs/methods.md, and their
+# images: every method against the ray-traced reference on the built-in scenes and the four
+# Sponza cameras. Takes a few minutes on 2 cores (the references are cached; later runs only
+# rerun the methods).
 #
 #   bash scripts/quality.sh [METHODS]        # METHODS: comma-separated, default: all of them
 set -euo pipefail
@@ -10,21 +11,24 @@ methods=${1:-all}
 out=target/quality
 rm -rf "$out"
 cargo run --quiet --release -p aokit-cli -- compare \
-    --view room --view stairs --view thin \
+    --view room --view stairs --view thin --view open \
     --view scenes/sponza.obj@atrium --view scenes/sponza.obj@arcade \
     --view scenes/sponza.obj@gallery --view scenes/sponza.obj@floor \
     --methods "$methods" --presets low,medium,high,ultra \
     --size 480x270 --spp 512 --out "$out" >/dev/null
 
+# docs/quality.md: the full tables, and the reference, GTAO and VBAO with their error maps for
+# three views.
 images=docs/images/quality
 rm -rf "$images"
 mkdir -p "$images"
 shown=(stairs-side thin-front sponza-atrium)
 for view in "${shown[@]}"; do
     cp "$out/images/$view-reference.png" "$images/"
-    cp "$out/images/$view"-*-high.png "$out/images/$view"-*-high-error.png "$images/"
+    for method in gtao vbao; do
+        cp "$out/images/$view-$method-high.png" "$out/images/$view-$method-high-error.png" "$images/"
+    done
 done
-
 {
     cat <<'HEAD'
 # Quality: every method against the ray-traced reference
@@ -33,7 +37,8 @@ Each method's raw AO (no denoising) is scored against `aokit reference` on the s
 (see [reference.md](reference.md)): ambient occlusion with the same radius, no falloff, 512
 cosine-weighted rays per pixel, whose own noise (standard error at most 0.022 per pixel, far
 less on average) is small next to the errors below. Edge pixels are those within 2 pixels of a
-depth edge (a 5% depth step, or the sky), where halos and missing contact shadows live.
+depth edge (a 5% depth step, or the sky), where halos and missing contact shadows live; grazing
+pixels are surfaces seen within about 17 degrees of edge-on (`|n . v| < 0.3`).
 
 GPU times here come from whatever adapter made the table (named below); on a software rasteriser
 they only rank presets against each other.
@@ -67,4 +72,40 @@ HEAD
         echo
     done
 } > docs/quality.md
-echo "wrote docs/quality.md and $images/"
+
+# docs/methods.md: each method's error table at every preset, and each method on every
+# built-in scene and one Sponza camera, spliced between the page's markers.
+pictures=docs/images/methods
+rm -rf "$pictures"
+mkdir -p "$pictures"
+views=(room-front stairs-side thin-front open-above sponza-atrium)
+method_list=$(grep '^## ' "$out/metrics-by-method.md" | cut -c4-)
+{
+    printf '| method |'
+    for view in "${views[@]}"; do printf ' %s |' "$view"; done
+    echo
+    printf '|---|'
+    for view in "${views[@]}"; do printf -- '---|'; done
+    echo
+    for method in $method_list; do
+        printf '| `%s` |' "$method"
+        for view in "${views[@]}"; do
+            cp "$out/images/$view-$method-high.png" "$pictures/$view-$method.png"
+            printf ' ![](images/methods/%s-%s.png) |' "$view" "$method"
+        done
+        echo
+    done
+} > "$out/pictures.md"
+splice() { # splice MARKER FILE: replace what lies between <!-- MARKER --> and <!-- /MARKER -->
+    MARKER="$1" FILE="$2" perl -0pi -e '
+        open my $f, "<", $ENV{FILE} or die; local $/; my $body = <$f>;
+        s/(<!-- \Q$ENV{MARKER}\E -->\n).*?(<!-- \/\Q$ENV{MARKER}\E -->)/$1\n$body\n$2/s
+            or die "no marker $ENV{MARKER}\n"' docs/methods.md
+}
+for method in $method_list; do
+    awk -v m="## $method" '$0 == m {on = 1; next} /^## / {on = 0} on' \
+        "$out/metrics-by-method.md" > "$out/errors-$method.md"
+    splice "errors:$method" "$out/errors-$method.md"
+done
+splice pictures "$out/pictures.md"
+echo "wrote docs/quality.md, docs/methods.md's tables, $images/ and $pictures/"

@@ -220,7 +220,7 @@ mod tests {
         let s = a.resolve(Some(0.5)).unwrap();
         assert_eq!(
             (s.radius, s.gtao.steps_per_side, s.gtao.slice_count),
-            (3.0, 7, 1)
+            (3.0, 7, aokit::GtaoSettings::preset(Preset::Low).slice_count)
         );
         a.radius = Some(4.0);
         assert_eq!(a.resolve(Some(0.5)).unwrap().radius, 4.0);

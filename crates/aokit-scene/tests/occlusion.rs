@@ -457,5 +457,8 @@ fn gtso_leaves_an_open_plane_alone_and_darkens_room_corners() {
     );
     assert!(shown_specular_occlusion(&none, i) > 0.99);
     assert!(open_so > 0.95, "open floor specular occlusion {open_so}");
-    assert!(corner_so < 0.5, "corner specular occlusion {corner_so}");
+    assert!(
+        corner_so < open_so - 0.25,
+        "corner specular occlusion {corner_so}, open floor {open_so}"
+    );
 }

@@ -42,17 +42,7 @@ fn bent_in_slice(h_neg: f32, h_pos: f32, n: f32) -> vec2<f32> {
     return vec2<f32>(a.x + a.y - 2.0 * a0, b.x + b.y - 2.0 * b0);
 }
 
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let surface = load_surface(id.xy);
-    if nothing_to_sample(surface) {
-        store_unoccluded(surface);
-        return;
-    }
-    let noise = pixel_noise(id.xy, view.frame_index);
+fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
 
     var visible = 0.0;
     var unoccluded = 0.0;
@@ -63,8 +53,9 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         // Horizons start at the edge of the normal's hemisphere: cos(n + pi/2) = -sin(n) on the
         // +omega side, cos(n - pi/2) = sin(n) on the other.
         let sin_n = sin(n);
-        let cos_pos = search_horizon(surface, slice, 1.0, noise.y, -sin_n);
-        let cos_neg = search_horizon(surface, slice, -1.0, noise.y, sin_n);
+        let jitter = fract(noise.y + f32(i) * GOLDEN_FRACTION);
+        let cos_pos = search_horizon(surface, slice, 1.0, jitter, -sin_n);
+        let cos_neg = search_horizon(surface, slice, -1.0, fract(jitter + 0.5), sin_n);
         // Horizon angles, clamped to the normal's hemisphere.
         let h_pos = n + min(fast_acos(cos_pos) - n, HALF_PI);
         let h_neg = n + max(-fast_acos(cos_neg) - n, -HALF_PI);
@@ -88,5 +79,5 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let count = f32(ao.count);
     let use_ratio = (ao.flags & FLAG_NORMALIZE_SLICES) != 0u && unoccluded > 0.1 * count;
     let visibility = select(visible / count, visible / unoccluded, use_ratio);
-    store_ao(surface, visibility, bent + open_bent(surface.n, unoccluded));
+    return Estimate(visibility, bent + open_bent(surface.n, unoccluded));
 }

@@ -12,21 +12,9 @@
 // (see slice_sample), so a plane seen at a grazing angle does not occlude itself; the angle bias
 // is left for tessellated curved surfaces, whose interpolated normals tilt off their facets.
 
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let surface = load_surface(id.xy);
-    if nothing_to_sample(surface) {
-        store_unoccluded(surface);
-        return;
-    }
-    let noise = pixel_noise(id.xy, view.frame_index);
-    // Never more steps than pixels in the radius: they would sample the same texels. Steps
-    // run from one pixel out (the pixel itself says nothing) to the radius, jittered.
+fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
+    // Never more steps than pixels in the radius: they would sample the same texels.
     let steps = max(1u, min(ao.steps, u32(surface.radius_px)));
-    let step_px = (surface.radius_px - 1.0) / f32(steps);
     let r2 = ao.radius * ao.radius;
     var occlusion = 0.0;
     for (var d = 0u; d < ao.count; d++) {
@@ -38,7 +26,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         var last_sin = sin(tangent_angle);
         var direction_occlusion = 0.0;
         for (var k = 0u; k < steps; k++) {
-            let sample = side_sample(surface, slice, 1.0, 1.0 + step_px * (f32(k) + noise.y));
+            let distance = step_distance(k, steps, noise.y, surface.radius_px);
+            let sample = side_sample(surface, slice, 1.0, distance);
             if sample.w == 0.0 {
                 continue;
             }
@@ -51,5 +40,5 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         }
         occlusion += direction_occlusion;
     }
-    store_ao(surface, 1.0 - occlusion / f32(ao.count), surface.n);
+    return Estimate(1.0 - occlusion / f32(ao.count), surface.n);
 }

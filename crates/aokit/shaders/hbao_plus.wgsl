@@ -9,28 +9,17 @@
 // normal's hemisphere: for a surface seen edge-on, the screen directions all run along the
 // surface and most of the hemisphere above it goes unsampled, so AO fades there.
 
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let surface = load_surface(id.xy);
-    if nothing_to_sample(surface) {
-        store_unoccluded(surface);
-        return;
-    }
-    let noise = pixel_noise(id.xy, view.frame_index);
-    // Never more steps than pixels in the radius: they would sample the same texels. Steps
-    // run from one pixel out (the pixel itself says nothing) to the radius, jittered.
+fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
+    // Never more steps than pixels in the radius: they would sample the same texels.
     let steps = max(1u, min(ao.steps, u32(surface.radius_px)));
-    let step_px = (surface.radius_px - 1.0) / f32(steps);
     let r2 = ao.radius * ao.radius;
     let bias = sin(ao.angle_bias);
     var occlusion = 0.0;
     for (var d = 0u; d < ao.count; d++) {
         let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(ao.count));
         for (var k = 0u; k < steps; k++) {
-            let sample = side_sample(surface, slice, 1.0, 1.0 + step_px * (f32(k) + noise.y));
+            let distance = step_distance(k, steps, noise.y, surface.radius_px);
+            let sample = side_sample(surface, slice, 1.0, distance);
             if sample.w == 0.0 {
                 continue;
             }
@@ -41,5 +30,5 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     // Average over the samples actually taken: a radius under `steps` pixels marches fewer.
     let taken = f32(ao.count * steps);
-    store_ao(surface, 1.0 - occlusion / (taken * (1.0 - bias)), surface.n);
+    return Estimate(1.0 - occlusion / (taken * (1.0 - bias)), surface.n);
 }

@@ -3,17 +3,7 @@
 // with density cos(theta) / pi, the fraction of unoccluded points estimates the cosine-weighted
 // visibility directly.
 
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let surface = load_surface(id.xy);
-    if nothing_to_sample(surface) {
-        store_unoccluded(surface);
-        return;
-    }
-    let noise = pixel_noise(id.xy, view.frame_index);
+fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     // A per-pixel random rotation of the tangent frame about the normal.
     let frame = tangent_frame(surface.n);
     let angle = TWO_PI * noise.x;
@@ -44,5 +34,5 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         let occlusion = select(0.0, falloff_weight(sample_depth - occluder), blocked);
         visible += weight * (1.0 - occlusion);
     }
-    store_ao(surface, select(1.0, visible / total, total > 0.0), surface.n);
+    return Estimate(select(1.0, visible / total, total > 0.0), surface.n);
 }

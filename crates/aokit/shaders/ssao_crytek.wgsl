@@ -3,17 +3,7 @@
 // buffer. Normals are not used. Half of a sphere centred on a flat surface lies behind it, so a
 // flat wall reads about 0.5: the grey look of 2007, kept as it was.
 
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let surface = load_surface(id.xy);
-    if nothing_to_sample(surface) {
-        store_unoccluded(surface);
-        return;
-    }
-    let noise = pixel_noise(id.xy, view.frame_index);
+fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     // A per-pixel rotation of the kernel about the view axis.
     let rotation = vec2<f32>(cos(TWO_PI * noise.x), sin(TWO_PI * noise.x));
     var occlusion = 0.0;
@@ -43,5 +33,5 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         let blocked = occluder + ao.bias < sample_depth;
         occlusion += select(0.0, falloff_weight(sample_depth - occluder), blocked);
     }
-    store_ao(surface, 1.0 - occlusion / f32(ao.count), surface.n);
+    return Estimate(1.0 - occlusion / f32(ao.count), surface.n);
 }

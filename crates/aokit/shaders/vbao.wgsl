@@ -82,17 +82,7 @@ fn side_bits(s: Surface, slice: Slice, side: f32, jitter: f32, lo: f32) -> u32 {
     return bits;
 }
 
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let surface = load_surface(id.xy);
-    if nothing_to_sample(surface) {
-        store_unoccluded(surface);
-        return;
-    }
-    let noise = pixel_noise(id.xy, view.frame_index);
+fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     let bent_wanted = (ao.flags & FLAG_BENT_NORMALS) != 0u;
 
     var visible = 0.0;
@@ -102,8 +92,9 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         let slice = make_slice(surface, (f32(i) + noise.x) * PI / f32(ao.count));
         let n = slice.angle_n;
         let lo = n - HALF_PI;
-        let occluded = side_bits(surface, slice, 1.0, noise.y, lo)
-            | side_bits(surface, slice, -1.0, noise.y, lo);
+        let jitter = fract(noise.y + f32(i) * GOLDEN_FRACTION);
+        let occluded = side_bits(surface, slice, 1.0, jitter, lo)
+            | side_bits(surface, slice, -1.0, fract(jitter + 0.5), lo);
         unoccluded += slice.n_len * (arc_measure(lo + PI, n) - arc_measure(lo, n));
         if bent_wanted {
             // Only the occluded part's direction is taken from the slice; see open_bent.
@@ -126,6 +117,5 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
             open = select(open & ~(((1u << run) - 1u) << start), open & ~(0xffffffffu << start), end == SECTORS);
         }
     }
-    store_ao(surface, select(1.0, visible / unoccluded, unoccluded > 0.0),
-             bent + open_bent(surface.n, unoccluded));
+    return Estimate(select(1.0, visible / unoccluded, unoccluded > 0.0), bent + open_bent(surface.n, unoccluded));
 }

@@ -154,7 +154,6 @@ mod tests {
 
     const GRID: [f32; 11] = [0.0, 0.05, 0.1, 0.2, 0.3, 0.45, 0.5, 0.7, 0.9, 0.99, 1.0];
 
-
     #[test]
     fn multi_bounce_keeps_unoccluded_pixels_and_never_darkens() {
         for albedo in GRID {

@@ -128,15 +128,25 @@ fn preset_samples(preset: Preset) -> u32 {
     }
 }
 
-/// Slices and steps per side of the slice-based methods (GTAO, VBAO) for a preset. Slices cost
-/// more than steps but remove more noise (seed 000 observes 4x4 beats 2x8 at equal cost), so
-/// presets grow slices first.
+/// Slices and steps per side of the slice-based methods (GTAO, VBAO) for a preset: of the
+/// splits of each budget, the one with the lowest mean RMSE against the reference over the
+/// built-in scenes and the Sponza cameras (docs/methods.md). One slice is too noisy; past three,
+/// steps that find far horizons gain more than slices.
 fn preset_slices(preset: Preset) -> (u32, u32) {
     match preset {
-        Preset::Low => (1, 2),
+        Preset::Low => (2, 1),
         Preset::Medium => (2, 2),
         Preset::High => (3, 3),
-        Preset::Ultra => (9, 3),
+        Preset::Ultra => (3, 9),
+    }
+}
+
+/// Step spacing each method measured best with (`AoSettings::step_power`): even for the slice
+/// methods, slightly crowded towards the pixel for HBAO.
+fn preset_step_power(method: Method) -> f32 {
+    match method {
+        Method::Hbao | Method::HbaoPlus => 1.5,
+        Method::SsaoCrytek | Method::Ssao | Method::Gtao | Method::Vbao => 1.0,
     }
 }
 
@@ -180,14 +190,14 @@ impl Default for HbaoSettings {
 }
 
 impl HbaoSettings {
-    /// Counts of a preset: directions times steps equals the preset's samples; directions grow
-    /// first because an empty direction costs a whole sector of the circle.
+    /// Counts of a preset: directions times steps equals the preset's samples, split as
+    /// measured best (lowest mean RMSE against the reference, docs/methods.md).
     pub fn preset(preset: Preset) -> Self {
         let (direction_count, step_count) = match preset {
             Preset::Low => (2, 2),
             Preset::Medium => (4, 2),
-            Preset::High => (6, 3),
-            Preset::Ultra => (9, 6),
+            Preset::High => (3, 6),
+            Preset::Ultra => (6, 9),
         };
         Self {
             direction_count,
@@ -304,6 +314,11 @@ pub struct AoSettings {
     /// Angle bias of the horizon methods, radians: horizons must rise this far above the tangent
     /// plane to occlude, which hides the false occlusion of tessellated curved surfaces.
     pub angle_bias: f32,
+    /// How the marching methods (`hbao`, `hbao-plus`, `gtao`, `vbao`) space their steps between
+    /// one pixel and the radius: `1 + t^step_power * (radius - 1)` pixels for `t` in [0, 1).
+    /// 1 spaces them evenly; 2 (XeGTAO's choice) crowds them near the pixel. Each method's
+    /// preset sets the spacing it measured best with.
+    pub step_power: f32,
     /// View depth beyond which there is no AO (seed 004's Max Distance); 0: no limit.
     pub max_distance: f32,
     /// World distance before `max_distance` over which AO fades out (seed 004's Distance
@@ -365,6 +380,7 @@ impl AoSettings {
             bias: 0.02,
             // About 6 degrees, the tangent elevation HBAO+'s default N.V bias of 0.1 implies.
             angle_bias: 0.1,
+            step_power: preset_step_power(method),
             max_distance: 0.0,
             distance_falloff: 0.0,
             bent_normals: false,
@@ -400,6 +416,13 @@ impl AoSettings {
                 field: "angle_bias",
                 value: self.angle_bias.to_string(),
                 expected: "an angle in [0, pi/2) radians",
+            });
+        }
+        if !(0.25..=4.0).contains(&self.step_power) {
+            return Err(SettingsError {
+                field: "step_power",
+                value: self.step_power.to_string(),
+                expected: "a number in [0.25, 4]",
             });
         }
         at_least("max_distance", self.max_distance, 0.0)?;

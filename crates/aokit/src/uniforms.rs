@@ -62,6 +62,7 @@ pub(crate) struct AoUniforms {
     pub count: u32,
     pub steps: u32,
     pub flags: u32,
+    pub step_power: f32,
 }
 
 /// `AoUniforms::flags` bits, mirrored as constants in `common/ao.wgsl`.
@@ -134,6 +135,7 @@ impl AoUniforms {
             count,
             steps,
             flags: bits,
+            step_power: settings.step_power,
         }
     }
 }
@@ -183,6 +185,7 @@ mod tests {
             count,
             steps,
             flags,
+            step_power,
         });
         for method in crate::Method::ALL {
             shader::check_layout(

@@ -1,7 +1,7 @@
 //! `Report::html`: one offline page.
 
 use super::chart::scatter_svg;
-use super::text::{fixed, gpu_ms, html, signed};
+use super::text::{COLUMNS, fixed, html, row_cells, signed};
 use super::{MethodResult, Report, ViewResult};
 use crate::base64;
 
@@ -55,29 +55,19 @@ fn method_figure(m: &MethodResult) -> String {
 }
 
 fn table(methods: &[MethodResult]) -> String {
-    let mut out = String::from(
-        "<table>\n<thead><tr><th>Method</th><th>Preset</th><th>Samples/px</th><th>GPU ms</th><th>MAE</th>\
-         <th>RMSE</th><th>Bias</th><th>PSNR dB</th><th>SSIM</th><th>Edge MAE</th><th>Edge RMSE</th>\
-         <th>Edge SSIM</th><th>Grazing bias</th></tr></thead>\n<tbody>\n",
+    let cells = |tag: &str, texts: &[String]| -> String {
+        texts
+            .iter()
+            .map(|t| format!("<{tag}>{}</{tag}>", html(t)))
+            .collect()
+    };
+    let headings: Vec<String> = COLUMNS.iter().map(|c| c.to_string()).collect();
+    let mut out = format!(
+        "<table>\n<thead><tr>{}</tr></thead>\n<tbody>\n",
+        cells("th", &headings)
     );
     for m in methods {
-        out.push_str(&format!(
-            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>\
-             <td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
-            html(&m.method),
-            html(&m.preset),
-            m.samples_per_pixel,
-            gpu_ms(m.gpu_ms),
-            fixed(m.all.mae, 4),
-            fixed(m.all.rmse, 4),
-            signed(m.all.bias, 4),
-            fixed(m.all.psnr, 2),
-            fixed(m.all.ssim, 4),
-            fixed(m.edges.mae, 4),
-            fixed(m.edges.rmse, 4),
-            fixed(m.edges.ssim, 4),
-            signed(m.grazing.bias, 4),
-        ));
+        out.push_str(&format!("<tr>{}</tr>\n", cells("td", &row_cells(m))));
     }
     out.push_str("</tbody>\n</table>\n");
     out

@@ -1,7 +1,7 @@
 //! `Report::markdown`.
 
 use super::Report;
-use super::text::{fixed, gpu_ms, markdown_cell, signed};
+use super::text::{COLUMNS, fixed, markdown_cell, row_cells, signed};
 
 pub(super) fn render(report: &Report) -> String {
     let mut out = format!("# {}\n\n", markdown_cell(&report.title));
@@ -23,26 +23,12 @@ pub(super) fn render(report: &Report) -> String {
     );
     for view in &report.views {
         out.push_str(&format!("\n## {}\n\n", markdown_cell(&view.name)));
-        out.push_str(
-            "| Method | Preset | Samples/px | GPU ms | MAE | RMSE | Bias | PSNR dB | SSIM | Edge MAE | Edge RMSE | Grazing bias |\n\
-             |:--|:--|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n",
-        );
+        out.push_str(&format!("| {} |\n|:--|:--|", COLUMNS.join(" | ")));
+        out.push_str(&"--:|".repeat(COLUMNS.len() - 2));
+        out.push('\n');
         for m in &view.methods {
-            out.push_str(&format!(
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
-                markdown_cell(&m.method),
-                markdown_cell(&m.preset),
-                m.samples_per_pixel,
-                gpu_ms(m.gpu_ms),
-                fixed(m.all.mae, 4),
-                fixed(m.all.rmse, 4),
-                signed(m.all.bias, 4),
-                fixed(m.all.psnr, 2),
-                fixed(m.all.ssim, 4),
-                fixed(m.edges.mae, 4),
-                fixed(m.edges.rmse, 4),
-                signed(m.grazing.bias, 4),
-            ));
+            let row: Vec<String> = row_cells(m).iter().map(|c| markdown_cell(c)).collect();
+            out.push_str(&format!("| {} |\n", row.join(" | ")));
         }
     }
     out

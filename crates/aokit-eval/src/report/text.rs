@@ -25,6 +25,42 @@ pub(super) fn gpu_ms(ms: Option<f64>) -> String {
     ms.map_or_else(|| "n/a".to_string(), |ms| fixed(ms, 3))
 }
 
+/// Headings of the metrics table, which the Markdown and HTML tables share.
+pub(super) const COLUMNS: [&str; 13] = [
+    "Method",
+    "Preset",
+    "Samples/px",
+    "GPU ms",
+    "MAE",
+    "RMSE",
+    "Bias",
+    "PSNR dB",
+    "SSIM",
+    "Edge MAE",
+    "Edge RMSE",
+    "Edge SSIM",
+    "Grazing bias",
+];
+
+/// One result as the cells of [`COLUMNS`], formatted but not escaped.
+pub(super) fn row_cells(m: &super::MethodResult) -> [String; 13] {
+    [
+        m.method.clone(),
+        m.preset.clone(),
+        m.samples_per_pixel.to_string(),
+        gpu_ms(m.gpu_ms),
+        fixed(m.all.mae, 4),
+        fixed(m.all.rmse, 4),
+        signed(m.all.bias, 4),
+        fixed(m.all.psnr, 2),
+        fixed(m.all.ssim, 4),
+        fixed(m.edges.mae, 4),
+        fixed(m.edges.rmse, 4),
+        fixed(m.edges.ssim, 4),
+        signed(m.grazing.bias, 4),
+    ]
+}
+
 /// Text safe inside HTML elements and quoted attributes.
 pub(super) fn html(text: &str) -> String {
     let mut out = String::with_capacity(text.len());

@@ -1,5 +1,6 @@
 // The interface every AO method kernel shares (mirrors `AoUniforms` in uniforms.rs): its settings,
-// its inputs and outputs, the surface at the pixel, and the final shaping of the result.
+// its inputs and outputs, the surface at the pixel, the entry point, and the final shaping of
+// the result. A method's file supplies `estimate`.
 
 struct AoUniforms {
     // World-space radius.
@@ -27,6 +28,8 @@ struct AoUniforms {
     // Steps per direction or per side.
     steps: u32,
     flags: u32,
+    // Exponent of the step distribution: 1 even, 2 quadratic.
+    step_power: f32,
 }
 
 const FLAG_NORMALIZE_SLICES: u32 = 1u;
@@ -66,7 +69,12 @@ fn load_surface(pixel: vec2<u32>) -> Surface {
     s.depth = textureLoad(linear_depth, pixel, 0).r;
     s.p = view_position(s.center, s.depth);
     s.v = view_direction(s.p);
-    s.n = unpack_oct32(textureLoad(normals, pixel, 0).r);
+    // A visible surface faces the eye, but normals interpolated across a silhouette, or
+    // reconstructed from depth there, can face away, and a hemisphere about such a normal lies
+    // mostly behind the surface: it would read as fully occluded. Those normals are turned
+    // towards V until they are at most grazing.
+    let n = unpack_oct32(textureLoad(normals, pixel, 0).r);
+    s.n = normalize(n + max(0.0, 0.01 - dot(n, s.v)) * s.v);
     s.radius_px = min(pixels_at_depth(ao.radius, s.depth), ao.max_radius_px);
     return s;
 }
@@ -156,4 +164,26 @@ fn store_unoccluded(s: Surface) {
         let n = select(vec3<f32>(0.0), s.n, s.depth != NO_SURFACE);
         textureStore(bent_out, s.pixel, vec4<f32>(n, 1.0));
     }
+}
+
+// What a method estimates for one pixel.
+struct Estimate {
+    // Cosine-weighted visibility of the hemisphere, 1 = unoccluded.
+    visibility: f32,
+    // Unnormalised mean unoccluded direction, view space (slice methods; others return n).
+    bent: vec3<f32>,
+}
+
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if any(id.xy >= vec2<u32>(view.size)) {
+        return;
+    }
+    let surface = load_surface(id.xy);
+    if nothing_to_sample(surface) {
+        store_unoccluded(surface);
+        return;
+    }
+    let result = estimate(surface, pixel_noise(id.xy, view.frame_index));
+    store_ao(surface, result.visibility, result.bent);
 }

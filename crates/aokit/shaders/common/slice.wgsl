@@ -38,6 +38,11 @@ fn slice_sample(q: vec2<f32>, p: vec3<f32>, axis: vec3<f32>, slide: vec3<f32>) -
     return vec4<f32>(offset - dot(offset, axis) * slide, 1.0);
 }
 
+// Step jitter is stratified across a pixel's slices and sides: slice i shifts it by i times the
+// golden ratio's fraction (a low-discrepancy sequence) and the two sides of a slice are half a
+// step apart, so together they cover the radius more evenly than one shared offset would.
+const GOLDEN_FRACTION: f32 = 0.618034;
+
 // One slice of a pixel's hemisphere.
 struct Slice {
     // Screen direction, pixel y down.
@@ -72,12 +77,12 @@ fn make_slice(s: Surface, phi: f32) -> Slice {
     return slice;
 }
 
-// Distance in pixels of step `step` of `steps` from the pixel: quadratic spacing puts more
-// samples near the pixel, where occluders matter most, and starting one pixel out keeps the
-// pixel from sampling itself.
+// Distance in pixels of step `step` of `steps` from the pixel, jittered, from one pixel out
+// (the pixel itself says nothing) to the radius: `step_power` above 1 crowds samples near the
+// pixel, 1 spaces them evenly.
 fn step_distance(step: u32, steps: u32, jitter: f32, radius_px: f32) -> f32 {
     let t = (f32(step) + jitter) / f32(steps);
-    return 1.0 + t * t * (radius_px - 1.0);
+    return 1.0 + pow(t, ao.step_power) * (radius_px - 1.0);
 }
 
 // The sample of a step on one side of a slice (side = +1 towards +omega, -1 away): the offset
