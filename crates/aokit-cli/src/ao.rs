@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use anyhow::Result;
+use aokit::NormalSource;
 use aokit_eval::{write_exr, write_grey_png};
 use aokit_scene::external;
 use clap::Args;
@@ -55,10 +56,13 @@ pub fn run(args: &AoArgs) -> Result<()> {
         args.depth.display(),
         loaded.size[0],
         loaded.size[1],
-        if loaded.normals.is_some() {
-            "from file"
-        } else {
-            "reconstructed from depth"
+        match (settings.normals.source, loaded.normals.is_some()) {
+            (NormalSource::Buffer, true) => format!(
+                "from file, uploaded as {}",
+                settings.normals.encoding.name()
+            ),
+            (NormalSource::Buffer, false) => "reconstructed from depth".to_string(),
+            (source, _) => format!("reconstructed from depth, {}", source.name()),
         },
         settings.method.name(),
         settings.radius,

@@ -41,6 +41,7 @@ struct CompositeUniforms {
 
 @group(0) @binding(0) var<uniform> light: CompositeUniforms;
 @group(0) @binding(1) var albedo: texture_2d<f32>;
+// The oct32 view-space normals the AO pipeline used.
 @group(0) @binding(2) var normals: texture_2d<u32>;
 @group(0) @binding(3) var depth: texture_depth_2d;
 @group(0) @binding(4) var ao: texture_2d<f32>;

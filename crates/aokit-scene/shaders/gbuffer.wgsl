@@ -1,4 +1,6 @@
-// G-buffer raster: depth, oct32 view-space normals, albedo. Mirrors `GBufferUniforms`.
+// G-buffer raster: depth, view-space normals in the encoding `ENCODING` names, albedo. Mirrors
+// `GBufferUniforms`. Normal targets are R32Uint or a unorm/float format, so there is one fragment
+// entry point per kind of target.
 
 struct GBufferUniforms {
     clip_from_world: mat4x4<f32>,
@@ -8,6 +10,9 @@ struct GBufferUniforms {
 }
 
 @group(0) @binding(0) var<uniform> frame: GBufferUniforms;
+
+// The normal encoding: `NormalEncoding::shader_code`, one of the ENCODING_* constants.
+override ENCODING: u32;
 
 struct VertexIn {
     @location(0) position: vec3<f32>,
@@ -33,13 +38,17 @@ fn vs_main(v: VertexIn) -> VertexOut {
     return out;
 }
 
-struct GBufferOut {
+struct GBufferUintOut {
     @location(0) normal: u32,
     @location(1) albedo: vec4<f32>,
 }
 
-@fragment
-fn fs_main(in: VertexOut) -> GBufferOut {
+struct GBufferFloatOut {
+    @location(0) normal: vec4<f32>,
+    @location(1) albedo: vec4<f32>,
+}
+
+fn shading_normal(in: VertexOut) -> vec3<f32> {
     // Files mix windings and double-sided sheets, so the facing is decided geometrically: the
     // shading normal goes to the side of the surface the eye is on.
     let geometric = cross(dpdx(in.view_position), dpdy(in.view_position));
@@ -49,8 +58,15 @@ fn fs_main(in: VertexOut) -> GBufferOut {
     if dot(n, eye_side) < 0.0 {
         n = -n;
     }
-    var out: GBufferOut;
-    out.normal = pack_oct32(n);
-    out.albedo = vec4<f32>(in.albedo, 1.0);
-    return out;
+    return n;
+}
+
+@fragment
+fn fs_uint(in: VertexOut) -> GBufferUintOut {
+    return GBufferUintOut(encode_normal_uint(shading_normal(in), ENCODING), vec4<f32>(in.albedo, 1.0));
+}
+
+@fragment
+fn fs_float(in: VertexOut) -> GBufferFloatOut {
+    return GBufferFloatOut(encode_normal_float(shading_normal(in), ENCODING), vec4<f32>(in.albedo, 1.0));
 }

@@ -197,8 +197,10 @@ impl CompositePass {
         }
     }
 
-    /// Records the composite into `output` (a [`LIT_FORMAT`] storage texture), reading the AO
-    /// and, for [`SpecularOcclusion::Gtso`], the bent normals when `ao` has them.
+    /// Records the composite into `output` (a [`LIT_FORMAT`] storage texture), reading the AO,
+    /// the normals the AO used (so that shading shows the normal encoding's precision, or the
+    /// reconstruction from depth) and, for [`SpecularOcclusion::Gtso`], the bent normals when
+    /// `ao` has them.
     #[allow(clippy::too_many_arguments)]
     pub fn encode(
         &self,
@@ -251,9 +253,8 @@ impl CompositePass {
                 ..Default::default()
             })
         };
-        let (albedo, normals, depth, shadow, output) = (
+        let (albedo, depth, shadow, output) = (
             color(&gbuffer.albedo),
-            color(&gbuffer.normals),
             depth_only(&gbuffer.depth),
             depth_only(shadow_map),
             color(output),
@@ -267,7 +268,7 @@ impl CompositePass {
             &[
                 self.uniforms.as_entire_binding(),
                 wgpu::BindingResource::TextureView(&albedo),
-                wgpu::BindingResource::TextureView(&normals),
+                wgpu::BindingResource::TextureView(ao.normals_view),
                 wgpu::BindingResource::TextureView(&depth),
                 wgpu::BindingResource::TextureView(ao.ao_view),
                 wgpu::BindingResource::TextureView(&shadow),

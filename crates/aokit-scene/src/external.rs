@@ -1,8 +1,10 @@
 //! AO for G-buffer passes that come from files or another renderer rather than the raster.
 
 use aokit::gpu::{read_texture_f32, upload_texture_2d};
-use aokit::normals::pack_oct32;
-use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, PassTime, Projection};
+use aokit::normals::encode_texels;
+use aokit::{
+    AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, NormalEncoding, PassTime, Projection,
+};
 use glam::Vec3;
 
 use crate::renderer::RenderError;
@@ -20,9 +22,13 @@ pub struct Passes<'a> {
     pub projection: Projection,
 }
 
-/// Passes uploaded once, with a pipeline to run any settings on them.
+/// Passes uploaded once, with a pipeline to run any settings on them. The normals are uploaded
+/// in the settings' [`NormalEncoding`], and again when a later setting changes it, so the AO
+/// shows the encoding's precision as the raster's does.
 pub struct ExternalAo {
     depth: wgpu::Texture,
+    /// The unit normals as given, kept to encode them again for another encoding.
+    source_normals: Option<Vec<Vec3>>,
     normals: Option<wgpu::Texture>,
     projection: Projection,
     pipeline: AoPipeline,
@@ -44,29 +50,42 @@ impl ExternalAo {
             wgpu::TextureFormat::R32Float,
             bytemuck::cast_slice(passes.linear_depth),
         )?;
-        let normals = passes
+        let source_normals: Option<Vec<Vec3>> = passes
             .normals
+            .map(|normals| normals.iter().map(|n| n.normalize_or(Vec3::Z)).collect());
+        let mut external = Self {
+            depth,
+            source_normals,
+            normals: None,
+            projection: passes.projection,
+            pipeline: AoPipeline::new(device, queue, settings)?,
+        };
+        external.upload_normals(gpu, settings.normals.encoding)?;
+        Ok(external)
+    }
+
+    /// Uploads the normals in `encoding`.
+    fn upload_normals(
+        &mut self,
+        gpu: &GpuContext,
+        encoding: NormalEncoding,
+    ) -> Result<(), GpuError> {
+        let size = [self.depth.width(), self.depth.height()];
+        self.normals = self
+            .source_normals
+            .as_deref()
             .map(|normals| {
-                let packed: Vec<u32> = normals
-                    .iter()
-                    .map(|&n| pack_oct32(n.normalize_or(Vec3::Z)))
-                    .collect();
                 upload_texture_2d(
-                    device,
-                    queue,
+                    &gpu.device,
+                    &gpu.queue,
                     "external normals",
-                    passes.size,
-                    wgpu::TextureFormat::R32Uint,
-                    bytemuck::cast_slice(&packed),
+                    size,
+                    encoding.texture_format(),
+                    &encode_texels(encoding, normals),
                 )
             })
             .transpose()?;
-        Ok(Self {
-            depth,
-            normals,
-            projection: passes.projection,
-            pipeline: AoPipeline::new(device, queue, settings)?,
-        })
+        Ok(())
     }
 
     /// Changes the settings for later runs.
@@ -75,9 +94,14 @@ impl ExternalAo {
         gpu: &GpuContext,
         settings: &AoSettings,
     ) -> Result<(), RenderError> {
-        Ok(self
-            .pipeline
-            .set_settings(&gpu.device, &gpu.queue, settings)?)
+        let encoding = settings.normals.encoding;
+        let reencode = encoding != self.pipeline.settings().normals.encoding;
+        self.pipeline
+            .set_settings(&gpu.device, &gpu.queue, settings)?;
+        if reencode {
+            self.upload_normals(gpu, encoding)?;
+        }
+        Ok(())
     }
 
     /// Times the AO passes of later runs; `false` when the device has no timestamps.

@@ -1,7 +1,10 @@
-//! The G-buffer raster pass: depth (D32F), oct32 view-space normals and albedo. No MSAA.
+//! The G-buffer raster pass: depth (D32F), view-space normals in any
+//! [`NormalEncoding`] and albedo. No MSAA.
 
-use aokit::Projection;
+use std::collections::HashMap;
+
 use aokit::gpu::create_texture_2d;
+use aokit::{GpuContext, NormalEncoding, Projection};
 use bytemuck::{Pod, Zeroable};
 use glam::Mat4;
 use wgpu::util::DeviceExt;
@@ -12,8 +15,6 @@ use crate::uniform_block::UniformBlock;
 
 /// Depth format of the G-buffer.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
-/// Normals: oct32-encoded view-space unit vectors.
-pub const NORMAL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
 /// Albedo, stored sRGB so 8 bits keep dark tones.
 pub const ALBEDO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
@@ -102,15 +103,17 @@ pub struct GBuffer {
     pub size: [u32; 2],
     /// Hardware depth, as the projection's convention writes it.
     pub depth: wgpu::Texture,
-    /// oct32 view-space normals.
+    /// View-space normals, in [`GBuffer::encoding`]'s texture format.
     pub normals: wgpu::Texture,
+    /// How [`GBuffer::normals`] is encoded.
+    pub encoding: NormalEncoding,
     /// Albedo.
     pub albedo: wgpu::Texture,
 }
 
 impl GBuffer {
-    /// Allocates the targets.
-    pub fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
+    /// Allocates the targets, with normals in `encoding`.
+    pub fn new(device: &wgpu::Device, size: [u32; 2], encoding: NormalEncoding) -> Self {
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
@@ -118,7 +121,8 @@ impl GBuffer {
         Self {
             size,
             depth: make("gbuffer depth", DEPTH_FORMAT),
-            normals: make("gbuffer normals", NORMAL_FORMAT),
+            normals: make("gbuffer normals", encoding.texture_format()),
+            encoding,
             albedo: make("gbuffer albedo", ALBEDO_FORMAT),
         }
     }
@@ -126,63 +130,88 @@ impl GBuffer {
 
 /// Rasterises a [`GpuMesh`] into a [`GBuffer`].
 pub struct GBufferPass {
-    /// Pipelines for standard (`[0]`) and reverse-Z (`[1]`) depth tests.
-    pipelines: [wgpu::RenderPipeline; 2],
+    module: wgpu::ShaderModule,
+    layout: wgpu::PipelineLayout,
+    /// Per normal encoding, pipelines for standard (`[0]`) and reverse-Z (`[1]`) depth tests,
+    /// made the first time the encoding is drawn.
+    pipelines: HashMap<NormalEncoding, [wgpu::RenderPipeline; 2]>,
     uniforms: UniformBlock<GBufferUniforms>,
 }
 
 impl GBufferPass {
-    /// Compiles the pass.
+    /// Compiles the shader; pipelines are made per normal encoding on first use.
     pub fn new(device: &wgpu::Device) -> Self {
         let uniforms = UniformBlock::new(device, "gbuffer", wgpu::ShaderStages::VERTEX_FRAGMENT);
-        let pipeline_layout = uniforms.pipeline_layout(device, "gbuffer");
-        let module = shaders::GBUFFER.create_module(device);
-        let pipeline = |compare| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("gbuffer"),
-                layout: Some(&pipeline_layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs_main"),
-                    compilation_options: Default::default(),
-                    buffers: &[Some(GpuMesh::layout())],
-                },
-                primitive: wgpu::PrimitiveState {
-                    // Both sides are drawn: scene files hold open sheets and mixed windings.
-                    cull_mode: None,
-                    ..Default::default()
-                },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(compare),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: Default::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some("fs_main"),
-                    compilation_options: Default::default(),
-                    targets: &[Some(NORMAL_FORMAT.into()), Some(ALBEDO_FORMAT.into())],
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
-        };
         Self {
-            pipelines: [
-                pipeline(wgpu::CompareFunction::Less),
-                pipeline(wgpu::CompareFunction::Greater),
-            ],
+            module: shaders::GBUFFER.create_module(device),
+            layout: uniforms.pipeline_layout(device, "gbuffer"),
+            pipelines: HashMap::new(),
             uniforms,
         }
     }
 
+    fn pipelines(
+        &mut self,
+        device: &wgpu::Device,
+        encoding: NormalEncoding,
+    ) -> &[wgpu::RenderPipeline; 2] {
+        let (module, layout) = (&self.module, &self.layout);
+        self.pipelines.entry(encoding).or_insert_with(|| {
+            let constants = [("ENCODING", f64::from(encoding.shader_code()))];
+            let pipeline = |compare| {
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some("gbuffer"),
+                    layout: Some(layout),
+                    vertex: wgpu::VertexState {
+                        module,
+                        entry_point: Some("vs_main"),
+                        compilation_options: Default::default(),
+                        buffers: &[Some(GpuMesh::layout())],
+                    },
+                    primitive: wgpu::PrimitiveState {
+                        // Both sides are drawn: scene files hold open sheets and mixed windings.
+                        cull_mode: None,
+                        ..Default::default()
+                    },
+                    depth_stencil: Some(wgpu::DepthStencilState {
+                        format: DEPTH_FORMAT,
+                        depth_write_enabled: Some(true),
+                        depth_compare: Some(compare),
+                        stencil: Default::default(),
+                        bias: Default::default(),
+                    }),
+                    multisample: Default::default(),
+                    fragment: Some(wgpu::FragmentState {
+                        module,
+                        entry_point: Some(if encoding.is_uint() {
+                            "fs_uint"
+                        } else {
+                            "fs_float"
+                        }),
+                        compilation_options: wgpu::PipelineCompilationOptions {
+                            constants: &constants,
+                            ..Default::default()
+                        },
+                        targets: &[
+                            Some(encoding.texture_format().into()),
+                            Some(ALBEDO_FORMAT.into()),
+                        ],
+                    }),
+                    multiview_mask: None,
+                    cache: None,
+                })
+            };
+            [
+                pipeline(wgpu::CompareFunction::Less),
+                pipeline(wgpu::CompareFunction::Greater),
+            ]
+        })
+    }
+
     /// Records the raster of `mesh` seen through `view_from_world` and `projection`.
     pub fn encode(
-        &self,
-        queue: &wgpu::Queue,
+        &mut self,
+        gpu: &GpuContext,
         encoder: &mut wgpu::CommandEncoder,
         mesh: &GpuMesh,
         view_from_world: Mat4,
@@ -199,7 +228,9 @@ impl GBufferPass {
             },
             _pad: [0.0; 3],
         };
-        self.uniforms.write(queue, &uniforms);
+        self.uniforms.write(&gpu.queue, &uniforms);
+        let pipeline =
+            self.pipelines(&gpu.device, target.encoding)[usize::from(projection.reverse_z)].clone();
         let normals = target.normals.create_view(&Default::default());
         let albedo = target.albedo.create_view(&Default::default());
         let depth = target.depth.create_view(&Default::default());
@@ -229,7 +260,7 @@ impl GBufferPass {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        pass.set_pipeline(&self.pipelines[usize::from(projection.reverse_z)]);
+        pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, self.uniforms.bind_group(), &[]);
         mesh.draw(&mut pass);
     }

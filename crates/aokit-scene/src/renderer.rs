@@ -27,7 +27,10 @@ pub struct Frame {
     pub lit: Vec<u8>,
     /// Linear view depth, 0 where nothing was drawn.
     pub linear_depth: Vec<f32>,
-    /// View-space unit normals, zero where nothing was drawn.
+    /// The view-space unit normals the AO used, zero where nothing was drawn: the G-buffer's,
+    /// decoded from [`NormalsSettings::encoding`](aokit::NormalsSettings::encoding) (so with its
+    /// precision), or reconstructed from depth as
+    /// [`NormalsSettings::source`](aokit::NormalsSettings::source) asks.
     pub normals: Vec<Vec3>,
     /// View-space bent normals, when the settings given to the [`Renderer`] ask for them (not
     /// when only the composite's GTSO turned them on).
@@ -172,7 +175,7 @@ impl Renderer {
             self.ao.set_settings(device, queue, &wanted)?;
         }
 
-        let gbuffer = GBuffer::new(device, size);
+        let gbuffer = GBuffer::new(device, size, self.settings.normals.encoding);
         let lit = create_texture_2d(
             device,
             "lit",
@@ -182,7 +185,7 @@ impl Renderer {
         );
         let mut encoder = device.create_command_encoder(&Default::default());
         self.gbuffer_pass.encode(
-            queue,
+            gpu,
             &mut encoder,
             &self.mesh,
             view_from_world,
@@ -230,7 +233,7 @@ impl Renderer {
         let linear_depth = read_texture_f32(device, queue, outputs.linear_depth)?;
         let lit = read_texture(device, queue, &lit)?;
         let packed: Vec<u32> =
-            bytemuck::pod_collect_to_vec(&read_texture(device, queue, &gbuffer.normals)?);
+            bytemuck::pod_collect_to_vec(&read_texture(device, queue, outputs.normals)?);
         let normals = packed
             .iter()
             .zip(&linear_depth)

@@ -331,10 +331,7 @@ fn reconstructed_normals(gpu: &GpuContext, frame: &Frame) -> Vec<Vec3> {
         )
         .unwrap();
     queue.submit([encoder.finish()]);
-    let texture = outputs
-        .reconstructed_normals
-        .expect("normals were reconstructed");
-    let bytes = aokit::gpu::read_texture(device, queue, texture).unwrap();
+    let bytes = aokit::gpu::read_texture(device, queue, outputs.normals).unwrap();
     bytemuck::pod_collect_to_vec::<u8, u32>(&bytes)
         .into_iter()
         .map(aokit::normals::unpack_oct32)

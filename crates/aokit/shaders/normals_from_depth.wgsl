@@ -1,16 +1,30 @@
-// View-space normals reconstructed from linear depth, for renderers that provide none.
+// View-space normals reconstructed from linear depth, for renderers that provide none or when
+// `normals.source` asks for them. Output is oct32, like a G-buffer's.
 //
-// Per axis, the tangent comes from the side whose two depths continue the centre best: the side
-// whose linear extrapolation to the centre misses least ("accurate" reconstruction, atyuwen 2021,
-// "Accurate Normal Reconstruction from Depth Buffer"). The extrapolation runs on a value that is
-// affine in screen space across a plane (1 / depth for perspective, depth for orthographic), so
-// on a plane the true side extrapolates exactly and a neighbouring object across an edge does
-// not. Output is oct32, like a G-buffer's.
+// Each normal is the cross product of two tangents, one per screen axis, each the offset from the
+// centre's view-space position to one neighbour's. The variants (the `SOURCE` override, the
+// `NormalSource` codes) differ only in which side each axis takes:
+// - naive: the right and lower neighbours (the left and upper ones where those show no surface).
+//   Across a depth edge the tangent spans the gap and the normal tilts towards it.
+// - 3-tap: the neighbour whose depth differs less from the centre's (seed 001's "improved"
+//   reconstruction, after the Wicked Engine article it cites). Right at an edge the far side loses,
+//   but on a slanted plane either side may win and the pick is decided by noise.
+// - 5-tap: the side whose two depths continue the centre best, i.e. whose linear extrapolation to
+//   the centre misses least ("accurate" reconstruction, atyuwen 2021, "Accurate Normal
+//   Reconstruction from Depth Buffer"). The extrapolation runs on a value that is affine in screen
+//   space across a plane (1 / depth for perspective, depth for orthographic), so on a plane the
+//   true side extrapolates exactly and a neighbouring object across an edge does not.
 
 @group(0) @binding(1) var linear_depth: texture_2d<f32>;
 @group(0) @binding(2) var normals_out: texture_storage_2d<r32uint, write>;
 
-// Stands for "no usable extrapolation" in the side comparison.
+// `NormalSource as u32` in Rust (a test compares them).
+const SOURCE_DEPTH_NAIVE: u32 = 1u;
+const SOURCE_DEPTH_3TAP: u32 = 2u;
+const SOURCE_DEPTH_5TAP: u32 = 3u;
+override SOURCE: u32;
+
+// Stands for "no usable neighbour" in the side comparison.
 const UNUSABLE: f32 = 3.0e38;
 
 fn depth_at(pixel: vec2<i32>) -> f32 {
@@ -24,12 +38,20 @@ fn screen_affine(depth: f32) -> f32 {
     return select(1.0 / depth, depth, view.orthographic > 0.5);
 }
 
-// How badly the samples one and two steps away predict the centre; a side with only its near
-// sample ranks behind any side with both, and a side with none is unusable.
-fn extrapolation_error(near: f32, far: f32, center: f32) -> f32 {
+// How badly the side one `step` from `pixel`, whose neighbour has depth `near`, suits the tangent;
+// the lower of the two sides is taken.
+fn side_error(pixel: vec2<i32>, step: vec2<i32>, near: f32, center: f32) -> f32 {
     if near == NO_SURFACE {
         return UNUSABLE;
     }
+    if SOURCE == SOURCE_DEPTH_NAIVE {
+        return select(1.0, 0.0, step.x + step.y > 0);
+    }
+    if SOURCE == SOURCE_DEPTH_3TAP {
+        return abs(near - center);
+    }
+    // A side with only its near sample ranks behind any side with both.
+    let far = depth_at(pixel + 2 * step);
     if far == NO_SURFACE {
         return 0.5 * UNUSABLE;
     }
@@ -41,8 +63,8 @@ fn extrapolation_error(near: f32, far: f32, center: f32) -> f32 {
 fn tangent(pixel: vec2<i32>, axis: vec2<i32>, p: vec3<f32>, depth: f32) -> vec3<f32> {
     let back = depth_at(pixel - axis);
     let ahead = depth_at(pixel + axis);
-    let back_error = extrapolation_error(back, depth_at(pixel - 2 * axis), depth);
-    let ahead_error = extrapolation_error(ahead, depth_at(pixel + 2 * axis), depth);
+    let back_error = side_error(pixel, -axis, back, depth);
+    let ahead_error = side_error(pixel, axis, ahead, depth);
     if min(back_error, ahead_error) == UNUSABLE {
         return vec3<f32>(0.0);
     }

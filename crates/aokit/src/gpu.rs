@@ -393,7 +393,7 @@ pub fn read_texture_rgba16f(
 }
 
 /// IEEE 754 binary16 to `f32`, exactly (every half is an `f32`).
-fn f16_to_f32(bits: u16) -> f32 {
+pub(crate) fn f16_to_f32(bits: u16) -> f32 {
     let sign = if bits & 0x8000 != 0 { -1.0 } else { 1.0 };
     let exponent = i32::from((bits >> 10) & 0x1f);
     let mantissa = f32::from(bits & 0x3ff);
@@ -405,9 +405,48 @@ fn f16_to_f32(bits: u16) -> f32 {
     }
 }
 
+/// `f32` to IEEE 754 binary16, rounded to nearest with ties to even, as GPUs store `f32` values
+/// in half-float textures; beyond the largest half it gives infinity.
+pub(crate) fn f32_to_f16(value: f32) -> u16 {
+    let sign = if value.is_sign_negative() { 0x8000 } else { 0 };
+    let magnitude = value.abs();
+    if magnitude.is_nan() {
+        return sign | 0x7e00;
+    }
+    // 65520 is halfway between the largest half, 65504, and the next step, 2^16.
+    if magnitude >= 65520.0 {
+        return sign | 0x7c00;
+    }
+    // Below 2^-14 halves are subnormal, in steps of 2^-24; a rounding up to 1024 steps yields
+    // the smallest normal's bits, as it should.
+    if magnitude < 2f32.powi(-14) {
+        return sign | (magnitude * 2f32.powi(24)).round_ties_even() as u16;
+    }
+    // 11 significant bits: steps of 2^(exponent - 10). Scaling by a power of two is exact, and a
+    // rounding up to 2048 carries into the exponent through the addition.
+    let exponent = ((magnitude.to_bits() >> 23) & 0xff) as i32 - 127;
+    let steps = (magnitude * 2f32.powi(10 - exponent)).round_ties_even() as u16;
+    sign | ((((exponent + 15) as u16) << 10) + steps - 1024)
+}
+
 #[cfg(test)]
 mod half_tests {
-    use super::f16_to_f32;
+    use super::{f16_to_f32, f32_to_f16};
+
+    #[test]
+    fn floats_round_to_the_nearest_half_and_back() {
+        for bits in (0..0x7c00u16).chain(0x8000..0xfc00) {
+            assert_eq!(f32_to_f16(f16_to_f32(bits)), bits, "{bits:#x}");
+        }
+        // Halfway between 1 and the next half (1 + 2^-10): ties go to the even one, 1.
+        assert_eq!(f32_to_f16(1.0 + 2f32.powi(-11)), 0x3c00);
+        assert_eq!(f32_to_f16(1.0 + 3.0 * 2f32.powi(-11)), 0x3c02);
+        assert_eq!(f32_to_f16(0.1), 0x2e66);
+        assert_eq!(f32_to_f16(-65519.0), 0xfbff);
+        assert_eq!(f32_to_f16(65520.0), 0x7c00);
+        assert_eq!(f32_to_f16(2f32.powi(-25)), 0);
+        assert_eq!(f32_to_f16(3.0 * 2f32.powi(-25)), 2);
+    }
 
     #[test]
     fn halves_convert_exactly() {

@@ -13,6 +13,7 @@
 pub mod error;
 pub mod gpu;
 pub mod inputs;
+pub mod noise;
 pub mod normals;
 pub mod occlusion;
 pub mod passes;
@@ -29,7 +30,8 @@ pub use inputs::{AoInputs, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
-    AoSettings, GtaoSettings, HbaoSettings, Method, Preset, SettingsError, SsaoSettings,
+    AoSettings, GtaoSettings, HbaoSettings, Method, NoiseKind, NoiseSettings, NormalEncoding,
+    NormalSource, NormalsSettings, Preset, SettingsError, SsaoSettings, TemporalOffset,
     VbaoSettings,
 };
 pub use timing::PassTime;

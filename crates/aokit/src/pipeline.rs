@@ -4,10 +4,11 @@ use crate::error::AoError;
 use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
+use crate::passes::decode_normals::DecodeNormalsPass;
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
-use crate::settings::AoSettings;
+use crate::settings::{AoSettings, NormalEncoding, NormalSource};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
 
@@ -18,8 +19,9 @@ struct Targets {
     linear_depth_view: wgpu::TextureView,
     ao: wgpu::Texture,
     ao_view: wgpu::TextureView,
-    reconstructed_normals: wgpu::Texture,
-    reconstructed_normals_view: wgpu::TextureView,
+    /// oct32 normals decoded from the input or reconstructed from depth.
+    normals: wgpu::Texture,
+    normals_view: wgpu::TextureView,
     bent_normals: Option<(wgpu::Texture, wgpu::TextureView)>,
 }
 
@@ -31,7 +33,7 @@ impl Targets {
         let make = |label, format| create_texture_2d(device, label, size, format, usage);
         let linear_depth = make("aokit linear depth", LINEAR_DEPTH_FORMAT);
         let ao = make("aokit ao", AO_FORMAT);
-        let normals = make("aokit reconstructed normals", NORMALS_FORMAT);
+        let normals = make("aokit normals", NORMALS_FORMAT);
         let bent_normals = bent_normals.then(|| {
             let texture = make("aokit bent normals", BENT_NORMALS_FORMAT);
             let view = texture.create_view(&Default::default());
@@ -39,8 +41,8 @@ impl Targets {
         });
         Self {
             bent_normals,
-            reconstructed_normals_view: normals.create_view(&Default::default()),
-            reconstructed_normals: normals,
+            normals_view: normals.create_view(&Default::default()),
+            normals,
             size,
             linear_depth_view: linear_depth.create_view(&Default::default()),
             linear_depth,
@@ -60,8 +62,12 @@ pub struct AoOutputs<'a> {
     pub ao_view: &'a wgpu::TextureView,
     /// Linear view depth, `R32Float`, 0 where nothing was drawn.
     pub linear_depth: &'a wgpu::Texture,
-    /// The oct32 normals reconstructed from depth, when the inputs had none.
-    pub reconstructed_normals: Option<&'a wgpu::Texture>,
+    /// The view-space normals the AO kernels used, oct32 (`R32Uint`, see
+    /// [`normals::unpack_oct32`](crate::normals::unpack_oct32)): the input texture itself when
+    /// it is oct32, else the input decoded or the normals reconstructed from depth.
+    pub normals: &'a wgpu::Texture,
+    /// A view of [`AoOutputs::normals`] for binding.
+    pub normals_view: &'a wgpu::TextureView,
     /// Bent normals when [`AoSettings::bent_normals`] is on: `Rgba16Float`, view-space unit
     /// vector in xyz (the mean unoccluded direction), AO in w.
     pub bent_normals: Option<&'a wgpu::Texture>,
@@ -89,6 +95,10 @@ pub struct AoPipeline {
     view_uniforms: wgpu::Buffer,
     linear_depth: LinearDepthPass,
     normals_from_depth: NormalsFromDepthPass,
+    decode_normals: DecodeNormalsPass,
+    /// A view of the input normals of the last frame, kept for [`AoOutputs::normals_view`] when
+    /// the kernels read them as they are.
+    input_normals_view: Option<wgpu::TextureView>,
     method: MethodPass,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
@@ -108,6 +118,8 @@ impl AoPipeline {
             view_uniforms,
             linear_depth: LinearDepthPass::new(device),
             normals_from_depth: NormalsFromDepthPass::new(device),
+            decode_normals: DecodeNormalsPass::default(),
+            input_normals_view: None,
             method: MethodPass::new(device, queue, settings),
             targets: None,
             timer: None,
@@ -138,8 +150,10 @@ impl AoPipeline {
     }
 
     /// Replaces the settings. Only the settings buffer changes, unless the method is one not
-    /// used before (its kernel compiles once) or bent normals are switched (their texture is
-    /// made or dropped at the next `encode`).
+    /// used before (its kernel compiles once), the noise needs a tile not used before (it is
+    /// generated and uploaded once), bent normals are switched (their texture is made or
+    /// dropped at the next `encode`) or the normals need a decode or reconstruction not used
+    /// before (its kernel compiles once, at the next `encode`).
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
@@ -153,15 +167,17 @@ impl AoPipeline {
     }
 
     /// Records the passes for one frame into `encoder`. Intermediate textures are (re)created
-    /// when the input size changes.
-    pub fn encode(
-        &mut self,
+    /// when the input size changes. The outputs borrow the inputs' textures too: with oct32
+    /// input normals, [`AoOutputs::normals`] is the input texture.
+    pub fn encode<'a>(
+        &'a mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
-        inputs: &AoInputs<'_>,
-    ) -> Result<AoOutputs<'_>, AoError> {
-        let size = inputs.validate()?;
+        inputs: &AoInputs<'a>,
+    ) -> Result<AoOutputs<'a>, AoError> {
+        let encoding = self.settings.normals.encoding;
+        let size = inputs.validate(encoding)?;
         inputs.projection.validate()?;
         let max = device.limits().max_texture_dimension_2d;
         if size[0] > max || size[1] > max {
@@ -199,23 +215,35 @@ impl AoPipeline {
         };
         self.linear_depth
             .encode(&mut ctx, inputs.depth, &targets.linear_depth_view);
-        let given_normals = inputs.normals.map(|n| n.create_view(&Default::default()));
-        let normals = match &given_normals {
-            Some(view) => view,
-            None => {
+        // Input normals the settings use are read as they are when oct32, else decoded; without
+        // them (or when the source is depth) the normals are reconstructed.
+        let source = self.settings.normals.source;
+        self.input_normals_view = inputs
+            .normals
+            .filter(|_| source == NormalSource::Buffer)
+            .map(|n| n.create_view(&Default::default()));
+        let (normals, normals_view) = match (inputs.normals, &self.input_normals_view) {
+            (Some(texture), Some(view)) if encoding == NormalEncoding::Oct32 => (texture, view),
+            (_, Some(view)) => {
+                self.decode_normals
+                    .encode(&mut ctx, encoding, view, &targets.normals_view);
+                (&targets.normals, &targets.normals_view)
+            }
+            (_, None) => {
                 self.normals_from_depth.encode(
                     &mut ctx,
+                    source,
                     &targets.linear_depth_view,
-                    &targets.reconstructed_normals_view,
+                    &targets.normals_view,
                 );
-                &targets.reconstructed_normals_view
+                (&targets.normals, &targets.normals_view)
             }
         };
         self.method.encode(
             &mut ctx,
             self.settings.method,
             &targets.linear_depth_view,
-            normals,
+            normals_view,
             &targets.ao_view,
             targets.bent_normals.as_ref().map(|(_, view)| view),
         );
@@ -226,10 +254,8 @@ impl AoPipeline {
             ao: &targets.ao,
             ao_view: &targets.ao_view,
             linear_depth: &targets.linear_depth,
-            reconstructed_normals: inputs
-                .normals
-                .is_none()
-                .then_some(&targets.reconstructed_normals),
+            normals,
+            normals_view,
             bent_normals: targets.bent_normals.as_ref().map(|(texture, _)| texture),
             bent_normals_view: targets.bent_normals.as_ref().map(|(_, view)| view),
         })

@@ -5,98 +5,201 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The AO method a pipeline runs. docs/methods.md has each one's formula and failure modes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Method {
-    /// Crytek's 2007 SSAO: points in a sphere around the pixel tested against the depth buffer.
-    SsaoCrytek,
-    /// Normal-oriented hemisphere SSAO: cosine-weighted points tested against the depth buffer.
-    Ssao,
-    /// Horizon-based AO (Bavoil and Sainz 2008): per screen direction, the rise of the horizon
-    /// above the tangent plane.
-    Hbao,
-    /// HBAO+'s normal-based estimator: each sample occludes by its elevation above the tangent
-    /// plane.
-    HbaoPlus,
-    /// Ground-truth based AO (Jimenez et al. 2016): cosine-weighted horizon integral per slice.
-    #[default]
-    Gtao,
-    /// Visibility bitmask AO (Therrien, Levesque and Gilet 2023): occluders of finite thickness
-    /// mark sectors of each slice.
-    Vbao,
+/// An enum of settings values with the names the CLI and settings files use: `ALL`, `name()`,
+/// `FromStr` (an error lists the names on offer) and serde by the same names.
+macro_rules! named_enum {
+    (
+        $(#[$meta:meta])*
+        pub enum $name:ident ($what:literal) {
+            $($(#[$variant_meta:meta])* $variant:ident = $text:literal,)+
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+        pub enum $name {
+            $($(#[$variant_meta])* #[serde(rename = $text)] $variant,)+
+        }
+
+        impl $name {
+            /// Every value, in the order help texts list them.
+            pub const ALL: [$name; [$($text),+].len()] = [$($name::$variant),+];
+
+            /// The name used on the command line and in settings files.
+            pub fn name(self) -> &'static str {
+                match self {
+                    $($name::$variant => $text,)+
+                }
+            }
+        }
+
+        impl std::str::FromStr for $name {
+            type Err = String;
+            fn from_str(s: &str) -> Result<Self, String> {
+                find_by_name(&$name::ALL, $name::name, $what, s)
+            }
+        }
+    };
+}
+
+named_enum! {
+    /// The AO method a pipeline runs. docs/methods.md has each one's formula and failure modes.
+    pub enum Method ("method") {
+        /// Crytek's 2007 SSAO: points in a sphere around the pixel tested against the depth
+        /// buffer.
+        SsaoCrytek = "ssao-crytek",
+        /// Normal-oriented hemisphere SSAO: cosine-weighted points tested against the depth
+        /// buffer.
+        Ssao = "ssao",
+        /// Horizon-based AO (Bavoil and Sainz 2008): per screen direction, the rise of the
+        /// horizon above the tangent plane.
+        Hbao = "hbao",
+        /// HBAO+'s normal-based estimator: each sample occludes by its elevation above the
+        /// tangent plane.
+        HbaoPlus = "hbao-plus",
+        /// Ground-truth based AO (Jimenez et al. 2016): cosine-weighted horizon integral per
+        /// slice.
+        #[default]
+        Gtao = "gtao",
+        /// Visibility bitmask AO (Therrien, Levesque and Gilet 2023): occluders of finite
+        /// thickness mark sectors of each slice.
+        Vbao = "vbao",
+    }
 }
 
 impl Method {
-    /// Every method, in the order the CLI lists them.
-    pub const ALL: [Method; 6] = [
-        Method::SsaoCrytek,
-        Method::Ssao,
-        Method::Hbao,
-        Method::HbaoPlus,
-        Method::Gtao,
-        Method::Vbao,
-    ];
-
-    /// The name used on the command line and in settings files.
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::SsaoCrytek => "ssao-crytek",
-            Method::Ssao => "ssao",
-            Method::Hbao => "hbao",
-            Method::HbaoPlus => "hbao-plus",
-            Method::Gtao => "gtao",
-            Method::Vbao => "vbao",
-        }
-    }
-
     /// Whether the method integrates over slices and so can return bent normals.
     pub fn has_bent_normals(self) -> bool {
         matches!(self, Method::Gtao | Method::Vbao)
     }
 }
 
-impl std::str::FromStr for Method {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        find_by_name(&Method::ALL, Method::name, "method", s)
+named_enum! {
+    /// Quality levels, from cheapest to most accurate.
+    pub enum Preset ("preset") {
+        /// Fewest samples: for low-end GPUs.
+        Low = "low",
+        /// A balance for mid-range GPUs.
+        Medium = "medium",
+        /// The default.
+        #[default]
+        High = "high",
+        /// Many samples, for stills and comparisons.
+        Ultra = "ultra",
     }
 }
 
-/// Quality levels, from cheapest to most accurate.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Preset {
-    /// Fewest samples: for low-end GPUs.
-    Low,
-    /// A balance for mid-range GPUs.
-    Medium,
-    /// The default.
-    #[default]
-    High,
-    /// Many samples, for stills and comparisons.
-    Ultra,
+named_enum! {
+    /// How a normal texture stores view-space unit normals: what the pipeline decodes from
+    /// [`AoInputs::normals`](crate::AoInputs::normals), and what the scene renderer writes into
+    /// its G-buffer. docs/normals.md has each one's texture format and measured error.
+    pub enum NormalEncoding ("normal encoding") {
+        /// Octahedral, two 16-bit unorms packed in an `R32Uint` texel.
+        #[default]
+        Oct32 = "oct32",
+        /// Octahedral, 12 bits per coordinate packed in the RGB of an `Rgba8Unorm` texel (the
+        /// packing seed 001 describes).
+        Oct24 = "oct24",
+        /// Octahedral, 8 bits per coordinate in an `Rg8Unorm` texel.
+        Oct16 = "oct16",
+        /// Octahedral, 10 bits per coordinate in the first two channels of `Rgb10a2Unorm`.
+        Oct20 = "oct20",
+        /// Plain xyz, 10 bits each, in `Rgb10a2Unorm`.
+        Rgb10a2 = "rgb10a2",
+        /// Plain xyz in half floats, `Rgba16Float`.
+        Rgba16f = "rgba16f",
+        /// x and y only, z reconstructed as facing the eye, two 16-bit snorms in `R32Uint`.
+        Xy = "xy",
+        /// Spherical angles, two 16-bit unorms in `R32Uint`.
+        Spherical = "spherical",
+        /// Stereographic projection, two 16-bit unorms in `R32Uint`.
+        Stereographic = "stereographic",
+        /// Lambert azimuthal equal-area projection, two 16-bit unorms in `R32Uint`.
+        Lambert = "lambert",
+    }
 }
 
-impl Preset {
-    /// Every preset, cheapest first.
-    pub const ALL: [Preset; 4] = [Preset::Low, Preset::Medium, Preset::High, Preset::Ultra];
+named_enum! {
+    /// Where the AO kernels' normals come from.
+    pub enum NormalSource ("normal source") {
+        /// The normal texture given in the inputs; without one, the best reconstruction from
+        /// depth (`depth-5tap`).
+        #[default]
+        Buffer = "buffer",
+        /// From depth: the cross product of the right and lower neighbours' offsets.
+        DepthNaive = "depth-naive",
+        /// From depth: per axis, the neighbour with the smaller depth difference (seed 001's
+        /// improved method).
+        Depth3tap = "depth-3tap",
+        /// From depth: per axis, the side whose two samples extrapolate the centre best (the
+        /// accurate method).
+        Depth5tap = "depth-5tap",
+    }
+}
 
-    /// The name used on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Preset::Low => "low",
-            Preset::Medium => "medium",
-            Preset::High => "high",
-            Preset::Ultra => "ultra",
+/// Normal storage and source.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct NormalsSettings {
+    /// How the normal texture is encoded.
+    pub encoding: NormalEncoding,
+    /// Where the normals come from.
+    pub source: NormalSource,
+}
+
+named_enum! {
+    /// The per-pixel noise that rotates and jitters every method's samples. docs/noise.md has
+    /// each one's spectrum and the error it leaves.
+    pub enum NoiseKind ("noise kind") {
+        /// Interleaved gradient noise (Jimenez 2014).
+        #[default]
+        Ign = "ign",
+        /// Blue noise made in the project by void-and-cluster (Ulichney 1993), tiled, moved
+        /// each frame by `noise.temporal`.
+        Blue = "blue",
+        /// GTAO's 4x4 spatial pattern with the paper's 6 rotations and 4 offsets over frames.
+        Gtao = "gtao",
+        /// A 4x4 Bayer dither matrix (seed 004's Dither).
+        Bayer = "bayer",
+        /// White noise from a Mersenne Twister in a 4x4 texture (seed 004's Spatial
+        /// Distribution).
+        White = "white",
+        /// The pixel's index along a Hilbert curve driving the R2 sequence.
+        HilbertR2 = "hilbert-r2",
+    }
+}
+
+named_enum! {
+    /// How tiled noise moves from frame to frame.
+    pub enum TemporalOffset ("temporal offset") {
+        /// Adds the frame index times the golden ratio's fraction to each value.
+        #[default]
+        GoldenRatio = "golden-ratio",
+        /// Adds the R2 sequence's frame-th point to the two values.
+        R2 = "r2",
+    }
+}
+
+/// Sampling noise.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct NoiseSettings {
+    /// Which noise.
+    pub kind: NoiseKind,
+    /// Side of the blue-noise tile: 64 or 128.
+    pub blue_size: u32,
+    /// How the tiled kinds (`blue`, `bayer`, `white`, `hilbert-r2`) move each frame; `ign` and
+    /// `gtao` keep their own schedules.
+    pub temporal: TemporalOffset,
+}
+
+impl Default for NoiseSettings {
+    fn default() -> Self {
+        Self {
+            kind: NoiseKind::default(),
+            // 64x64 tiles are invisible at 1080p and a quarter the memory of 128x128.
+            blue_size: 64,
+            temporal: TemporalOffset::default(),
         }
-    }
-}
-
-impl std::str::FromStr for Preset {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        find_by_name(&Preset::ALL, Preset::name, "preset", s)
     }
 }
 
@@ -337,6 +440,10 @@ pub struct AoSettings {
     pub gtao: GtaoSettings,
     /// `vbao` sampling and thickness.
     pub vbao: VbaoSettings,
+    /// Normal encoding and source.
+    pub normals: NormalsSettings,
+    /// Sampling noise.
+    pub noise: NoiseSettings,
 }
 
 impl Default for AoSettings {
@@ -389,6 +496,8 @@ impl AoSettings {
             hbao: HbaoSettings::preset(preset),
             gtao: GtaoSettings::preset(preset),
             vbao: VbaoSettings::preset(preset),
+            normals: NormalsSettings::default(),
+            noise: NoiseSettings::default(),
         }
     }
 
@@ -452,6 +561,13 @@ impl AoSettings {
         count("vbao.steps_per_side", self.vbao.steps_per_side)?;
         positive("vbao.thickness", self.vbao.thickness)?;
         at_least("vbao.thickness_growth", self.vbao.thickness_growth, 0.0)?;
+        if ![64, 128].contains(&self.noise.blue_size) {
+            return Err(SettingsError {
+                field: "noise.blue_size",
+                value: self.noise.blue_size.to_string(),
+                expected: "64 or 128",
+            });
+        }
         Ok(())
     }
 }
@@ -578,6 +694,12 @@ mod tests {
         }
         for p in Preset::ALL {
             assert_eq!(p.name().parse::<Preset>().unwrap(), p);
+        }
+        for e in NormalEncoding::ALL {
+            assert_eq!(e.name().parse::<NormalEncoding>().unwrap(), e);
+        }
+        for k in NoiseKind::ALL {
+            assert_eq!(k.name().parse::<NoiseKind>().unwrap(), k);
         }
         assert!("hbao9".parse::<Method>().unwrap_err().contains("gtao"));
     }

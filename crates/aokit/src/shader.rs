@@ -53,6 +53,42 @@ pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
     ],
 };
 
+/// Binding 1 of `decode_normals` for encodings held in `R32Uint` texels.
+const ENCODED_UINT: &str = "
+@group(0) @binding(1) var encoded: texture_2d<u32>;
+fn load_normal(pixel: vec2<u32>) -> vec3<f32> {
+    return decode_normal_uint(textureLoad(encoded, pixel, 0).r, ENCODING);
+}";
+
+/// Binding 1 of `decode_normals` for encodings held in unorm or float texels.
+const ENCODED_FLOAT: &str = "
+@group(0) @binding(1) var encoded: texture_2d<f32>;
+fn load_normal(pixel: vec2<u32>) -> vec3<f32> {
+    return decode_normal_float(textureLoad(encoded, pixel, 0), ENCODING);
+}";
+
+/// A normal texture in an `R32Uint` encoding other than oct32 to oct32.
+pub const DECODE_NORMALS_UINT: ShaderSource = ShaderSource {
+    name: "decode_normals",
+    parts: &[
+        VIEW,
+        ENCODING,
+        ENCODED_UINT,
+        include_str!("../shaders/decode_normals.wgsl"),
+    ],
+};
+
+/// A normal texture in a unorm or float encoding to oct32.
+pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
+    name: "decode_normals",
+    parts: &[
+        VIEW,
+        ENCODING,
+        ENCODED_FLOAT,
+        include_str!("../shaders/decode_normals.wgsl"),
+    ],
+};
+
 /// A method kernel: the shared snippets, any of its own, then its file.
 macro_rules! method_kernel {
     ($name:literal $(, $snippet:expr)*) => {
@@ -107,6 +143,8 @@ pub const ALL: &[ShaderSource] = &[
     LINEAR_DEPTH,
     IMPORT_DEPTH,
     NORMALS_FROM_DEPTH,
+    DECODE_NORMALS_UINT,
+    DECODE_NORMALS_FLOAT,
     SSAO_CRYTEK,
     SSAO,
     HBAO,
@@ -158,6 +196,19 @@ fn struct_layout(module: &naga::Module, name: &str) -> Option<(Vec<(String, usiz
         )),
         _ => None,
     })
+}
+
+/// The value of the WGSL constant `name` of type `u32`, for tests that prove codes shared
+/// between Rust and WGSL agree.
+pub fn u32_constant(module: &naga::Module, name: &str) -> Option<u32> {
+    let (_, constant) = module
+        .constants
+        .iter()
+        .find(|(_, c)| c.name.as_deref() == Some(name))?;
+    match module.global_expressions[constant.init] {
+        naga::Expression::Literal(naga::Literal::U32(value)) => Some(value),
+        _ => None,
+    }
 }
 
 /// Checks that the WGSL struct `name` in `source` has exactly the members, offsets and size of

@@ -3,6 +3,7 @@
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec2, Vec4};
 
+use crate::noise;
 use crate::projection::Projection;
 use crate::settings::{AoSettings, Method};
 
@@ -63,6 +64,8 @@ pub(crate) struct AoUniforms {
     pub steps: u32,
     pub flags: u32,
     pub step_power: f32,
+    pub noise_kind: u32,
+    pub noise_temporal: u32,
 }
 
 /// `AoUniforms::flags` bits, mirrored as constants in `common/ao.wgsl`.
@@ -136,6 +139,8 @@ impl AoUniforms {
             steps,
             flags: bits,
             step_power: settings.step_power,
+            noise_kind: noise::kind_code(settings.noise.kind),
+            noise_temporal: noise::temporal_code(settings.noise.temporal),
         }
     }
 }
@@ -186,6 +191,8 @@ mod tests {
             steps,
             flags,
             step_power,
+            noise_kind,
+            noise_temporal,
         });
         for method in crate::Method::ALL {
             shader::check_layout(

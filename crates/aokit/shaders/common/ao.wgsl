@@ -30,6 +30,9 @@ struct AoUniforms {
     flags: u32,
     // Exponent of the step distribution: 1 even, 2 quadratic.
     step_power: f32,
+    // NOISE_* and TEMPORAL_* codes of common/noise.wgsl.
+    noise_kind: u32,
+    noise_temporal: u32,
 }
 
 const FLAG_NORMALIZE_SLICES: u32 = 1u;
@@ -43,6 +46,9 @@ const FLAG_BENT_NORMALS: u32 = 2u;
 // View-space bent normal in xyz and AO in w, when FLAG_BENT_NORMALS is set (a 1x1 stand-in
 // otherwise, never written).
 @group(0) @binding(6) var bent_out: texture_storage_2d<rgba16float, write>;
+// The noise tile of `blue` and `white` noise, two values per texel, repeated over the image (a
+// 1x1 stand-in for the kinds computed here).
+@group(0) @binding(7) var noise_tile: texture_2d<f32>;
 
 const PI: f32 = 3.14159265;
 const HALF_PI: f32 = 1.57079633;
@@ -184,6 +190,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         store_unoccluded(surface);
         return;
     }
-    let result = estimate(surface, pixel_noise(id.xy, view.frame_index));
+    let texel = textureLoad(noise_tile, id.xy % textureDimensions(noise_tile), 0).xy;
+    let noise = pixel_noise(id.xy, view.frame_index, ao.noise_kind, ao.noise_temporal, texel);
+    let result = estimate(surface, noise);
     store_ao(surface, result.visibility, result.bent);
 }

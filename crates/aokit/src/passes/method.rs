@@ -7,8 +7,9 @@
 use std::collections::HashMap;
 
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d, create_uniform_buffer};
-use crate::settings::{AoSettings, Method};
+use crate::gpu::{create_texture_2d, create_uniform_buffer, upload_texture_2d};
+use crate::noise;
+use crate::settings::{AoSettings, Method, NoiseKind};
 use crate::shader;
 use crate::uniforms::AoUniforms;
 
@@ -17,6 +18,25 @@ pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 /// Format of the bent normals: view-space xyz, AO in w. Half floats hold a unit vector to
 /// about 0.05 degrees, finer than any AO estimate.
 pub const BENT_NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+/// Format of the noise tiles: two 32-bit floats hold the ranks of a 128x128 tile exactly.
+pub const NOISE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
+
+/// Uploads a noise tile as the `NOISE_FORMAT` texture the kernels read at binding 7.
+pub fn upload_noise_tile(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    tile: &noise::Tile,
+) -> wgpu::Texture {
+    upload_texture_2d(
+        device,
+        queue,
+        "aokit noise tile",
+        [tile.size; 2],
+        NOISE_FORMAT,
+        bytemuck::cast_slice(tile.texels),
+    )
+    .expect("a noise tile holds size * size texels")
+}
 
 /// Runs the kernel of the current method.
 pub struct MethodPass {
@@ -25,9 +45,15 @@ pub struct MethodPass {
     point_clamp: wgpu::Sampler,
     /// Bound in place of the bent normals when they are off: the kernels never write it.
     bent_placeholder: wgpu::TextureView,
+    /// Noise tiles uploaded so far, by kind and side, so that switching back costs nothing.
+    noise_tiles: HashMap<(NoiseKind, u32), wgpu::TextureView>,
+    /// The tile of the current noise kind; `None` for the kinds computed in the shader.
+    noise_tile: Option<(NoiseKind, u32)>,
+    /// Bound in place of a noise tile for the kinds computed in the shader.
+    noise_placeholder: wgpu::TextureView,
 }
 
-fn layout() -> [wgpu::BindGroupLayoutEntry; 7] {
+fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
     [
         bind::uniform(0),
         bind::uniform(1),
@@ -36,6 +62,7 @@ fn layout() -> [wgpu::BindGroupLayoutEntry; 7] {
         bind::storage_texture(4, AO_FORMAT),
         bind::sampler(5, wgpu::SamplerBindingType::NonFiltering),
         bind::storage_texture(6, BENT_NORMALS_FORMAT),
+        bind::texture(7, wgpu::TextureSampleType::Float { filterable: false }),
     ]
 }
 
@@ -48,26 +75,32 @@ impl MethodPass {
             label: Some("aokit point clamp"),
             ..Default::default()
         });
-        let bent_placeholder = create_texture_2d(
-            device,
-            "aokit bent normals placeholder",
-            [1, 1],
-            BENT_NORMALS_FORMAT,
-            wgpu::TextureUsages::STORAGE_BINDING,
-        )
-        .create_view(&Default::default());
+        let placeholder = |label, format, usage| {
+            create_texture_2d(device, label, [1, 1], format, usage).create_view(&Default::default())
+        };
         let mut pass = Self {
             kernels: HashMap::new(),
             uniforms: create_uniform_buffer::<AoUniforms>(device, "aokit method settings"),
             point_clamp,
-            bent_placeholder,
+            bent_placeholder: placeholder(
+                "aokit bent normals placeholder",
+                BENT_NORMALS_FORMAT,
+                wgpu::TextureUsages::STORAGE_BINDING,
+            ),
+            noise_tiles: HashMap::new(),
+            noise_tile: None,
+            noise_placeholder: placeholder(
+                "aokit noise placeholder",
+                NOISE_FORMAT,
+                wgpu::TextureUsages::TEXTURE_BINDING,
+            ),
         };
         pass.set_settings(device, queue, settings);
         pass
     }
 
-    /// Uploads validated settings, compiling their method's kernel if it is new; they apply to
-    /// every later `encode`.
+    /// Uploads validated settings, compiling their method's kernel and making their noise tile
+    /// if either is new; they apply to every later `encode`.
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
@@ -76,6 +109,13 @@ impl MethodPass {
     ) {
         self.kernels.entry(settings.method).or_insert_with(|| {
             ComputeKernel::new(device, &shader::method(settings.method), &layout())
+        });
+        self.noise_tile = noise::tile(&settings.noise).map(|tile| {
+            let key = (settings.noise.kind, tile.size);
+            self.noise_tiles.entry(key).or_insert_with(|| {
+                upload_noise_tile(device, queue, &tile).create_view(&Default::default())
+            });
+            key
         });
         queue.write_buffer(
             &self.uniforms,
@@ -104,6 +144,10 @@ impl MethodPass {
                 wgpu::BindingResource::TextureView(ao),
                 wgpu::BindingResource::Sampler(&self.point_clamp),
                 wgpu::BindingResource::TextureView(bent_normals.unwrap_or(&self.bent_placeholder)),
+                wgpu::BindingResource::TextureView(
+                    self.noise_tile
+                        .map_or(&self.noise_placeholder, |key| &self.noise_tiles[&key]),
+                ),
             ],
         );
     }

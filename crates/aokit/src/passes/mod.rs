@@ -1,5 +1,6 @@
 //! The compute passes, each a plain struct with `new` and `encode`, and the helpers they share.
 
+pub mod decode_normals;
 pub mod linear_depth;
 pub mod method;
 pub mod normals_from_depth;
@@ -52,6 +53,16 @@ impl ComputeKernel {
         source: &ShaderSource,
         entries: &[wgpu::BindGroupLayoutEntry],
     ) -> Self {
+        Self::with_constants(device, source, entries, &[])
+    }
+
+    /// As [`ComputeKernel::new`], with values for the program's `override` constants, by name.
+    pub fn with_constants(
+        device: &wgpu::Device,
+        source: &ShaderSource,
+        entries: &[wgpu::BindGroupLayoutEntry],
+        constants: &[(&str, f64)],
+    ) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some(source.name),
             entries,
@@ -67,7 +78,10 @@ impl ComputeKernel {
             layout: Some(&pipeline_layout),
             module: &module,
             entry_point: Some("main"),
-            compilation_options: Default::default(),
+            compilation_options: wgpu::PipelineCompilationOptions {
+                constants,
+                ..Default::default()
+            },
             cache: None,
         });
         Self {
