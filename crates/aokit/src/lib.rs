@@ -30,8 +30,8 @@ pub use inputs::{AoInputs, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
-    AoSettings, GtaoSettings, HbaoSettings, Method, NoiseKind, NoiseSettings, NormalEncoding,
-    NormalSource, NormalsSettings, Preset, SettingsError, SsaoSettings, TemporalOffset,
-    VbaoSettings,
+    AoSettings, DepthWeight, GtaoSettings, HbaoSettings, Method, NoiseKind, NoiseSettings,
+    NormalEncoding, NormalSource, NormalsSettings, Preset, SettingsError, SpatialSettings,
+    SsaoSettings, TemporalOffset, VbaoSettings,
 };
 pub use timing::PassTime;

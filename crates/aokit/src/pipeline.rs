@@ -8,6 +8,7 @@ use crate::passes::decode_normals::DecodeNormalsPass;
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
+use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
 use crate::settings::{AoSettings, NormalEncoding, NormalSource};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
@@ -23,10 +24,19 @@ struct Targets {
     normals: wgpu::Texture,
     normals_view: wgpu::TextureView,
     bent_normals: Option<(wgpu::Texture, wgpu::TextureView)>,
+    /// The spatial filter's textures, when it is on.
+    spatial: Option<SpatialTargets>,
+}
+
+/// The spatial filter's AO and depth after the horizontal pass, and its filtered AO.
+struct SpatialTargets {
+    packed_view: wgpu::TextureView,
+    ao: wgpu::Texture,
+    ao_view: wgpu::TextureView,
 }
 
 impl Targets {
-    fn new(device: &wgpu::Device, size: [u32; 2], bent_normals: bool) -> Self {
+    fn new(device: &wgpu::Device, size: [u32; 2], bent_normals: bool, spatial: bool) -> Self {
         let usage = wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
@@ -39,8 +49,18 @@ impl Targets {
             let view = texture.create_view(&Default::default());
             (texture, view)
         });
+        let spatial = spatial.then(|| {
+            let ao = make("aokit spatially filtered ao", AO_FORMAT);
+            SpatialTargets {
+                packed_view: make("aokit spatial filter ao and depth", PACKED_FORMAT)
+                    .create_view(&Default::default()),
+                ao_view: ao.create_view(&Default::default()),
+                ao,
+            }
+        });
         Self {
             bent_normals,
+            spatial,
             normals_view: normals.create_view(&Default::default()),
             normals,
             size,
@@ -56,10 +76,17 @@ impl Targets {
 /// different size.
 #[derive(Clone, Copy, Debug)]
 pub struct AoOutputs<'a> {
-    /// Ambient occlusion, `R32Float`, 1 = unoccluded.
+    /// Ambient occlusion, `R32Float`, 1 = unoccluded: [`AoOutputs::raw_ao`] after the spatial
+    /// filter when [`SpatialSettings::enabled`](crate::SpatialSettings::enabled), else that
+    /// texture itself.
     pub ao: &'a wgpu::Texture,
     /// A view of [`AoOutputs::ao`] for binding.
     pub ao_view: &'a wgpu::TextureView,
+    /// The method kernel's AO before any denoising, `R32Float`, for comparing filters or
+    /// feeding your own.
+    pub raw_ao: &'a wgpu::Texture,
+    /// A view of [`AoOutputs::raw_ao`] for binding.
+    pub raw_ao_view: &'a wgpu::TextureView,
     /// Linear view depth, `R32Float`, 0 where nothing was drawn.
     pub linear_depth: &'a wgpu::Texture,
     /// The view-space normals the AO kernels used, oct32 (`R32Uint`, see
@@ -100,6 +127,7 @@ pub struct AoPipeline {
     /// the kernels read them as they are.
     input_normals_view: Option<wgpu::TextureView>,
     method: MethodPass,
+    spatial: SpatialFilterPass,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
 }
@@ -121,6 +149,7 @@ impl AoPipeline {
             decode_normals: DecodeNormalsPass::default(),
             input_normals_view: None,
             method: MethodPass::new(device, queue, settings),
+            spatial: SpatialFilterPass::new(device, queue, &settings.spatial),
             targets: None,
             timer: None,
         })
@@ -151,9 +180,10 @@ impl AoPipeline {
 
     /// Replaces the settings. Only the settings buffer changes, unless the method is one not
     /// used before (its kernel compiles once), the noise needs a tile not used before (it is
-    /// generated and uploaded once), bent normals are switched (their texture is made or
-    /// dropped at the next `encode`) or the normals need a decode or reconstruction not used
-    /// before (its kernel compiles once, at the next `encode`).
+    /// generated and uploaded once), bent normals or the spatial filter are switched (their
+    /// textures are made or dropped at the next `encode`; the filter's kernels compile the first
+    /// time it is on) or the normals need a decode or reconstruction not used before (its kernel
+    /// compiles once, at the next `encode`).
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
@@ -163,6 +193,7 @@ impl AoPipeline {
         settings.validate()?;
         self.settings = *settings;
         self.method.set_settings(device, queue, settings);
+        self.spatial.set_settings(device, queue, &settings.spatial);
         Ok(())
     }
 
@@ -184,13 +215,14 @@ impl AoPipeline {
             return Err(AoError::TooLarge { size, max });
         }
         let bent = self.settings.bent_normals;
+        let spatial = self.settings.spatial.enabled;
         if self
             .targets
             .as_ref()
-            .map(|t| (t.size, t.bent_normals.is_some()))
-            != Some((size, bent))
+            .map(|t| (t.size, t.bent_normals.is_some(), t.spatial.is_some()))
+            != Some((size, bent, spatial))
         {
-            self.targets = Some(Targets::new(device, size, bent));
+            self.targets = Some(Targets::new(device, size, bent, spatial));
         }
         let targets = self.targets.as_ref().expect("targets were just created");
         queue.write_buffer(
@@ -247,12 +279,28 @@ impl AoPipeline {
             &targets.ao_view,
             targets.bent_normals.as_ref().map(|(_, view)| view),
         );
+        let (ao, ao_view) = match &targets.spatial {
+            Some(spatial) => {
+                self.spatial.encode(
+                    &mut ctx,
+                    &targets.ao_view,
+                    &targets.linear_depth_view,
+                    normals_view,
+                    &spatial.packed_view,
+                    &spatial.ao_view,
+                );
+                (&spatial.ao, &spatial.ao_view)
+            }
+            None => (&targets.ao, &targets.ao_view),
+        };
         if let Some(timer) = &self.timer {
             timer.resolve(encoder);
         }
         Ok(AoOutputs {
-            ao: &targets.ao,
-            ao_view: &targets.ao_view,
+            ao,
+            ao_view,
+            raw_ao: &targets.ao,
+            raw_ao_view: &targets.ao_view,
             linear_depth: &targets.linear_depth,
             normals,
             normals_view,

@@ -89,6 +89,32 @@ pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
     ],
 };
 
+/// The spatial filter's tile, weights and entry point; each pass file adds its axis, workgroup
+/// shape and textures.
+const SPATIAL_FILTER: &str = include_str!("../shaders/spatial_filter.wgsl");
+
+/// First pass of the spatial filter: along rows, AO and linear depth in, both packed out.
+pub const SPATIAL_FILTER_HORIZONTAL: ShaderSource = ShaderSource {
+    name: "spatial_filter_horizontal",
+    parts: &[
+        VIEW,
+        ENCODING,
+        SPATIAL_FILTER,
+        include_str!("../shaders/spatial_filter_horizontal.wgsl"),
+    ],
+};
+
+/// Second pass of the spatial filter: along columns, packed AO and depth in, AO out.
+pub const SPATIAL_FILTER_VERTICAL: ShaderSource = ShaderSource {
+    name: "spatial_filter_vertical",
+    parts: &[
+        VIEW,
+        ENCODING,
+        SPATIAL_FILTER,
+        include_str!("../shaders/spatial_filter_vertical.wgsl"),
+    ],
+};
+
 /// A method kernel: the shared snippets, any of its own, then its file.
 macro_rules! method_kernel {
     ($name:literal $(, $snippet:expr)*) => {
@@ -151,6 +177,8 @@ pub const ALL: &[ShaderSource] = &[
     HBAO_PLUS,
     GTAO,
     VBAO,
+    SPATIAL_FILTER_HORIZONTAL,
+    SPATIAL_FILTER_VERTICAL,
     OCCLUSION_FUNCTIONS,
 ];
 
@@ -168,12 +196,21 @@ impl ShaderSource {
         })
     }
 
+    /// The `@workgroup_size` of the program's compute entry point `main`, from parsing it.
+    pub fn workgroup_size(&self) -> Result<[u32; 3], String> {
+        self.parse(&self.source())?
+            .entry_points
+            .iter()
+            .find(|e| e.name == "main" && e.stage == naga::ShaderStage::Compute)
+            .map(|e| e.workgroup_size)
+            .ok_or_else(|| format!("{}: no compute entry point `main`", self.name))
+    }
+
     /// Parses and validates the program with naga, as wgpu does, without a device. Returns the
     /// module so tests can inspect it (e.g. struct layouts).
     pub fn validate(&self) -> Result<naga::Module, String> {
         let source = self.source();
-        let module = naga::front::wgsl::parse_str(&source)
-            .map_err(|e| format!("{}: {}", self.name, e.emit_to_string(&source)))?;
+        let module = self.parse(&source)?;
         naga::valid::Validator::new(
             naga::valid::ValidationFlags::all(),
             naga::valid::Capabilities::default(),
@@ -181,6 +218,12 @@ impl ShaderSource {
         .validate(&module)
         .map_err(|e| format!("{}: {}", self.name, e.emit_to_string(&source)))?;
         Ok(module)
+    }
+
+    /// `source`, this program's text, parsed by naga's WGSL front end.
+    fn parse(&self, source: &str) -> Result<naga::Module, String> {
+        naga::front::wgsl::parse_str(source)
+            .map_err(|e| format!("{}: {}", self.name, e.emit_to_string(source)))
     }
 }
 
@@ -273,13 +316,15 @@ mod tests {
         let passes: Vec<String> = std::fs::read_dir(&dir)
             .unwrap()
             .filter_map(|e| e.ok()?.file_name().into_string().ok())
-            .filter_map(|name| name.strip_suffix(".wgsl").map(str::to_string))
+            .filter(|name| name.ends_with(".wgsl"))
             .collect();
         assert!(!passes.is_empty());
         for pass in passes {
+            // By content: a pass may be split over files (the spatial filter's core and passes).
+            let text = std::fs::read_to_string(dir.join(&pass)).unwrap();
             assert!(
-                ALL.iter().any(|s| s.name == pass),
-                "shaders/{pass}.wgsl is not in shader::ALL, so nothing validates it"
+                ALL.iter().any(|s| s.parts.contains(&text.as_str())),
+                "shaders/{pass} is in no program of shader::ALL, so nothing validates it"
             );
         }
         for snippet in [VIEW, ENCODING, NOISE, AO, SLICE, OCCLUSION] {

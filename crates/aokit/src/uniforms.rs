@@ -5,7 +5,7 @@ use glam::{Vec2, Vec4};
 
 use crate::noise;
 use crate::projection::Projection;
-use crate::settings::{AoSettings, Method};
+use crate::settings::{AoSettings, Method, SpatialSettings};
 
 /// Mirrors `ViewUniforms` in `shaders/common/view.wgsl`.
 #[repr(C)]
@@ -145,6 +145,30 @@ impl AoUniforms {
     }
 }
 
+/// Mirrors `SpatialUniforms` in `shaders/spatial_filter.wgsl`: the spatial filter's settings,
+/// the sigmas as reciprocals so that the shader multiplies.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub(crate) struct SpatialUniforms {
+    pub radius: u32,
+    pub spatial_scale: f32,
+    pub depth_scale: f32,
+    pub depth_weight: u32,
+    pub normal_power: f32,
+}
+
+impl SpatialUniforms {
+    pub fn new(settings: &SpatialSettings) -> Self {
+        Self {
+            radius: settings.radius,
+            spatial_scale: settings.sigma.recip(),
+            depth_scale: settings.depth_sigma.recip(),
+            depth_weight: settings.depth_weight as u32,
+            normal_power: settings.normal_power,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -200,6 +224,29 @@ mod tests {
                 "AoUniforms",
                 fields,
                 size_of::<AoUniforms>(),
+            )
+            .unwrap();
+        }
+    }
+
+    #[test]
+    fn spatial_uniforms_match_wgsl_in_both_passes() {
+        let fields = crate::field_offsets!(SpatialUniforms {
+            radius,
+            spatial_scale,
+            depth_scale,
+            depth_weight,
+            normal_power,
+        });
+        for pass in [
+            shader::SPATIAL_FILTER_HORIZONTAL,
+            shader::SPATIAL_FILTER_VERTICAL,
+        ] {
+            shader::check_layout(
+                &pass,
+                "SpatialUniforms",
+                fields,
+                size_of::<SpatialUniforms>(),
             )
             .unwrap();
         }

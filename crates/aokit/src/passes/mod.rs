@@ -4,6 +4,7 @@ pub mod decode_normals;
 pub mod linear_depth;
 pub mod method;
 pub mod normals_from_depth;
+pub mod spatial_filter;
 
 use crate::shader::ShaderSource;
 use crate::timing::PassTimer;
@@ -34,20 +35,23 @@ impl PassContext<'_> {
     }
 }
 
-/// Threads per workgroup side; every pass uses 8x8 tiles.
-pub const TILE: u32 = 8;
-
 /// A compute pipeline with its one bind group layout, for one-thread-per-pixel passes whose
-/// entry point is `main` with `@workgroup_size(8, 8)`. Public so that companion crates write
-/// their passes the same way.
+/// entry point is `main`. Public so that companion crates write their passes the same way.
 pub struct ComputeKernel {
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
     label: &'static str,
+    /// Width and height of `main`'s workgroup, read from the WGSL so that the dispatch cannot
+    /// disagree with it.
+    workgroup_size: [u32; 2],
 }
 
 impl ComputeKernel {
     /// Compiles `source` with a bind group layout of `entries` at group 0.
+    ///
+    /// # Panics
+    /// When `source` does not parse or has no compute entry point `main`: shader text is part of
+    /// the program, and every library shader is validated by the tests.
     pub fn new(
         device: &wgpu::Device,
         source: &ShaderSource,
@@ -84,10 +88,12 @@ impl ComputeKernel {
             },
             cache: None,
         });
+        let [width, height, _] = source.workgroup_size().unwrap_or_else(|e| panic!("{e}"));
         Self {
             pipeline,
             layout,
             label: source.name,
+            workgroup_size: [width, height],
         }
     }
 
@@ -96,8 +102,9 @@ impl ComputeKernel {
         self.label
     }
 
-    /// Binds `resources` in order (binding 0, 1, ...) and dispatches one thread per pixel,
-    /// with timestamps around the pass when `timestamps` is given.
+    /// Binds `resources` in order (binding 0, 1, ...) and dispatches one thread per pixel of
+    /// `size` (workgroups of the shader's size, the last row and column partly outside), with
+    /// timestamps around the pass when `timestamps` is given.
     pub fn dispatch(
         &self,
         device: &wgpu::Device,
@@ -125,7 +132,8 @@ impl ComputeKernel {
         });
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &bind_group, &[]);
-        pass.dispatch_workgroups(size[0].div_ceil(TILE), size[1].div_ceil(TILE), 1);
+        let [width, height] = self.workgroup_size;
+        pass.dispatch_workgroups(size[0].div_ceil(width), size[1].div_ceil(height), 1);
     }
 }
 

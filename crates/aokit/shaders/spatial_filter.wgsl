@@ -1,0 +1,117 @@
+// Spatial filter: a separable bilateral blur of the AO (docs/denoise.md), run as two passes, one
+// per axis. A program is this file plus one pass file (spatial_filter_horizontal.wgsl or
+// spatial_filter_vertical.wgsl) that sets `AXIS` and the workgroup shape and defines
+// `load_ao_depth` and `store_filtered` over its own textures.
+//
+// Each workgroup filters a segment of LINE pixels along the axis. Its threads first load the
+// segment and `radius` pixels on each side (the apron) into workgroup memory, LINE texels at a
+// time, so that each texel is read once per workgroup instead of once per tap. Every tap then
+// weighs the neighbour `k` pixels away whose relative depth difference from the centre is `r`:
+//
+//     w = exp(-k^2 / (2 sigma^2)) * exp(-r^2 / (2 depth_sigma^2))     (gaussian)
+//     w = exp(-k^2 / (2 sigma^2)) * (r < depth_sigma)                  (threshold)
+//
+// times max(0, n . n0)^normal_power when that power is above 0. The centre's own weight is 1, so
+// the weight sum never vanishes. Pixels without a surface (sky, outside the image) never
+// contribute, and keep AO 1.
+
+struct SpatialUniforms {
+    // Kernel radius in pixels, 1 to MAX_RADIUS.
+    radius: u32,
+    // 1 / sigma: pixel offsets times this are in units of the spatial standard deviation.
+    spatial_scale: f32,
+    // 1 / depth_sigma: relative depth differences times this are in units of depth_sigma.
+    depth_scale: f32,
+    // DEPTH_GAUSSIAN or DEPTH_THRESHOLD.
+    depth_weight: u32,
+    // Exponent of the normal weight; 0: no normal weight, and no normal loads.
+    normal_power: f32,
+}
+
+@group(0) @binding(1) var<uniform> spatial: SpatialUniforms;
+@group(0) @binding(2) var normals: texture_2d<u32>;
+
+// `DepthWeight as u32` in Rust (a test compares them).
+const DEPTH_GAUSSIAN: u32 = 0u;
+const DEPTH_THRESHOLD: u32 = 1u;
+
+// `MAX_SPATIAL_RADIUS` in Rust (a test compares them).
+const MAX_RADIUS: u32 = 8u;
+
+// Threads per workgroup, one per pixel of the segment: two 32-wide or one 64-wide SIMD group,
+// and long enough that the apron of a radius-8 kernel adds only 25% more loads (an 8x8 tile
+// would load three texels per pixel filtered).
+const LINE: u32 = 64u;
+const TILE: u32 = LINE + 2u * MAX_RADIUS;
+
+var<workgroup> tile_ao_depth: array<vec2<f32>, TILE>;
+var<workgroup> tile_normal: array<vec3<f32>, TILE>;
+
+// The weight of a neighbour `offset` pixels from the centre whose depth is `depth`, against the
+// centre's `centre_depth` (> 0) and normal `n0`.
+fn neighbour_weight(offset: f32, depth: f32, centre_depth: f32, n: vec3<f32>, n0: vec3<f32>) -> f32 {
+    if depth == NO_SURFACE {
+        return 0.0;
+    }
+    // Both differences in units of their sigma. Divided by the centre's depth, not multiplied
+    // by its reciprocal, so that a difference of 0 stays exactly 0.
+    let x = offset * spatial.spatial_scale;
+    let r = abs(depth - centre_depth) / centre_depth * spatial.depth_scale;
+    var w: f32;
+    if spatial.depth_weight == DEPTH_THRESHOLD {
+        w = select(0.0, exp(-0.5 * x * x), r < 1.0);
+    } else {
+        w = exp(-0.5 * (x * x + r * r));
+    }
+    if spatial.normal_power > 0.0 {
+        let facing = max(dot(n, n0), 0.0);
+        // pow(0, p) is left to the implementation; a neighbour facing away weighs nothing.
+        w *= select(0.0, pow(facing, spatial.normal_power), facing > 0.0);
+    }
+    return w;
+}
+
+@compute @workgroup_size(GROUP_WIDTH, GROUP_HEIGHT)
+fn main(
+    @builtin(global_invocation_id) id: vec3<u32>,
+    @builtin(workgroup_id) group: vec3<u32>,
+    @builtin(local_invocation_index) local: u32,
+) {
+    let radius = spatial.radius;
+    let normal_weight = spatial.normal_power > 0.0;
+    let first = vec2<i32>(group.xy * vec2<u32>(GROUP_WIDTH, GROUP_HEIGHT)) - AXIS * i32(radius);
+    for (var i = local; i < LINE + 2u * radius; i += LINE) {
+        let pixel = first + AXIS * i32(i);
+        var texel = vec2<f32>(1.0, NO_SURFACE);
+        var n = vec3<f32>(0.0);
+        if all(pixel >= vec2<i32>(0)) && all(pixel < vec2<i32>(view.size)) {
+            texel = load_ao_depth(vec2<u32>(pixel));
+            if normal_weight {
+                n = unpack_oct32(textureLoad(normals, pixel, 0).r);
+            }
+        }
+        tile_ao_depth[i] = texel;
+        tile_normal[i] = n;
+    }
+    workgroupBarrier();
+
+    if any(id.xy >= vec2<u32>(view.size)) {
+        return;
+    }
+    let centre = local + radius;
+    let depth = tile_ao_depth[centre].y;
+    if depth == NO_SURFACE {
+        store_filtered(id.xy, 1.0, NO_SURFACE);
+        return;
+    }
+    let n0 = tile_normal[centre];
+    var sum = 0.0;
+    var weight_sum = 0.0;
+    for (var k = 0u; k <= 2u * radius; k++) {
+        let texel = tile_ao_depth[local + k];
+        let w = neighbour_weight(f32(k) - f32(radius), texel.y, depth, tile_normal[local + k], n0);
+        sum += w * texel.x;
+        weight_sum += w;
+    }
+    store_filtered(id.xy, sum / weight_sum, depth);
+}

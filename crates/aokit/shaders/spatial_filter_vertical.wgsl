@@ -1,0 +1,17 @@
+// Second pass of the spatial filter (spatial_filter.wgsl): along columns, from the horizontal
+// pass's packed AO and depth to the filtered AO.
+
+const AXIS = vec2<i32>(0, 1);
+const GROUP_WIDTH: u32 = 1u;
+const GROUP_HEIGHT: u32 = LINE;
+
+@group(0) @binding(3) var packed_in: texture_2d<f32>;
+@group(0) @binding(4) var ao_out: texture_storage_2d<r32float, write>;
+
+fn load_ao_depth(pixel: vec2<u32>) -> vec2<f32> {
+    return textureLoad(packed_in, pixel, 0).rg;
+}
+
+fn store_filtered(pixel: vec2<u32>, ao: f32, depth: f32) {
+    textureStore(ao_out, pixel, vec4<f32>(ao, 0.0, 0.0, 0.0));
+}

@@ -1,0 +1,344 @@
+//! The spatial denoiser: a separable bilateral blur of the AO, horizontal then vertical, each
+//! pass a compute kernel that stages its row or column segment in workgroup memory
+//! (`shaders/spatial_filter.wgsl`; formulas and measurements in docs/denoise.md).
+
+use super::method::AO_FORMAT;
+use super::{ComputeKernel, PassContext, bind};
+use crate::gpu::create_uniform_buffer;
+use crate::settings::SpatialSettings;
+use crate::shader;
+use crate::uniforms::SpatialUniforms;
+
+/// Format of the horizontal pass's output: AO in r, linear depth in g, so that the vertical
+/// pass reads one texture. Two halves packed in an `R32Uint` (`Rg16Float` is no storage format
+/// in core WebGPU) scored the same to four decimals and would move 28 bytes a pixel instead of
+/// 36, but a half overflows past a depth of 65504 units, which scenes in millimetres reach
+/// (docs/denoise.md).
+pub const PACKED_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
+
+/// The two kernels of the filter and its settings buffer.
+pub struct SpatialFilterPass {
+    /// Compiled the first time the settings enable the filter.
+    kernels: Option<[ComputeKernel; 2]>,
+    uniforms: wgpu::Buffer,
+}
+
+impl SpatialFilterPass {
+    /// Creates the settings buffer and uploads `settings`, compiling the kernels if they are
+    /// enabled.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
+        let mut pass = Self {
+            kernels: None,
+            uniforms: create_uniform_buffer::<SpatialUniforms>(device, "aokit spatial settings"),
+        };
+        pass.set_settings(device, queue, settings);
+        pass
+    }
+
+    /// Uploads validated settings for later `encode`s, compiling the kernels the first time
+    /// they are enabled.
+    pub fn set_settings(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        settings: &SpatialSettings,
+    ) {
+        if settings.enabled && self.kernels.is_none() {
+            // View, filter settings, normals, and each pass's first input: the AO along rows,
+            // the packed AO and depth along columns.
+            let shared = [
+                bind::uniform(0),
+                bind::uniform(1),
+                bind::texture(2, wgpu::TextureSampleType::Uint),
+                bind::texture(3, wgpu::TextureSampleType::Float { filterable: false }),
+            ];
+            let horizontal = [
+                bind::texture(4, wgpu::TextureSampleType::Float { filterable: false }),
+                bind::storage_texture(5, PACKED_FORMAT),
+            ];
+            let vertical = [bind::storage_texture(4, AO_FORMAT)];
+            self.kernels = Some([
+                ComputeKernel::new(
+                    device,
+                    &shader::SPATIAL_FILTER_HORIZONTAL,
+                    &[&shared[..], &horizontal].concat(),
+                ),
+                ComputeKernel::new(
+                    device,
+                    &shader::SPATIAL_FILTER_VERTICAL,
+                    &[&shared[..], &vertical].concat(),
+                ),
+            ]);
+        }
+        queue.write_buffer(
+            &self.uniforms,
+            0,
+            bytemuck::bytes_of(&SpatialUniforms::new(settings)),
+        );
+    }
+
+    /// Records both passes: `ao` and `linear_depth` (with `normals`, oct32, for the normal
+    /// weight) filtered along rows into `packed` ([`PACKED_FORMAT`]), then along columns into
+    /// `output` (`R32Float`, as the AO kernels write).
+    ///
+    /// # Panics
+    /// When the settings given so far never enabled the filter, so its kernels never compiled.
+    pub fn encode(
+        &self,
+        ctx: &mut PassContext<'_>,
+        ao: &wgpu::TextureView,
+        linear_depth: &wgpu::TextureView,
+        normals: &wgpu::TextureView,
+        packed: &wgpu::TextureView,
+        output: &wgpu::TextureView,
+    ) {
+        let [horizontal, vertical] = self
+            .kernels
+            .as_ref()
+            .expect("the spatial filter runs only after settings enabled it");
+        let view = wgpu::BindingResource::TextureView;
+        ctx.dispatch(
+            horizontal,
+            &[
+                self.uniforms.as_entire_binding(),
+                view(normals),
+                view(ao),
+                view(linear_depth),
+                view(packed),
+            ],
+        );
+        ctx.dispatch(
+            vertical,
+            &[
+                self.uniforms.as_entire_binding(),
+                view(normals),
+                view(packed),
+                view(output),
+            ],
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::Vec3;
+
+    use super::*;
+    use crate::gpu::{create_texture_2d, read_texture_f32, upload_texture_2d};
+    use crate::normals::pack_oct32;
+    use crate::settings::{DepthWeight, MAX_SPATIAL_RADIUS};
+    use crate::uniforms::ViewUniforms;
+    use crate::{GpuContext, Projection};
+
+    /// Neither side a multiple of the 64-pixel segments, so partial workgroups run both ways.
+    const SIZE: [u32; 2] = [100, 70];
+    /// Columns left of this are a near plane, the rest a far one.
+    const STEP_X: u32 = 40;
+
+    #[test]
+    fn constants_match_wgsl() {
+        for pass in [
+            shader::SPATIAL_FILTER_HORIZONTAL,
+            shader::SPATIAL_FILTER_VERTICAL,
+        ] {
+            let module = pass.validate().unwrap();
+            let constant = |name| shader::u32_constant(&module, name);
+            assert_eq!(constant("MAX_RADIUS"), Some(MAX_SPATIAL_RADIUS));
+            assert_eq!(
+                constant("DEPTH_GAUSSIAN"),
+                Some(DepthWeight::Gaussian as u32)
+            );
+            assert_eq!(
+                constant("DEPTH_THRESHOLD"),
+                Some(DepthWeight::Threshold as u32)
+            );
+        }
+        assert_eq!(
+            shader::SPATIAL_FILTER_HORIZONTAL.workgroup_size(),
+            Ok([64, 1, 1])
+        );
+        assert_eq!(
+            shader::SPATIAL_FILTER_VERTICAL.workgroup_size(),
+            Ok([1, 64, 1])
+        );
+    }
+
+    /// One synthetic frame, row by row: AO, linear depth (0: sky) and view-space normals.
+    struct Image {
+        ao: Vec<f32>,
+        depth: Vec<f32>,
+        normals: Vec<Vec3>,
+    }
+
+    /// A value in [0, 1) that looks random from pixel to pixel.
+    fn hash(x: u32, y: u32) -> f32 {
+        let h =
+            (x.wrapping_mul(73_856_093) ^ y.wrapping_mul(19_349_663)).wrapping_mul(2_654_435_761);
+        (h >> 8) as f32 / (1u32 << 24) as f32
+    }
+
+    /// Sky in the top 10 rows and a 3x3 hole; below, a near plane (depth about 2, facing the
+    /// eye) left of `STEP_X` and a slanted far one (depth 6 to 8) right of it, with AO from
+    /// `ao(near, x, y)`.
+    fn image(ao: impl Fn(bool, u32, u32) -> f32) -> Image {
+        let mut image = Image {
+            ao: Vec::new(),
+            depth: Vec::new(),
+            normals: Vec::new(),
+        };
+        for y in 0..SIZE[1] {
+            for x in 0..SIZE[0] {
+                let sky = y < 10 || ((60..63).contains(&x) && (30..33).contains(&y));
+                let near = x < STEP_X;
+                let (depth, normal) = match (sky, near) {
+                    (true, _) => (0.0, Vec3::Z),
+                    (false, true) => (2.0 + 0.002 * y as f32, Vec3::Z),
+                    (false, false) => (6.0 + 0.03 * x as f32, Vec3::new(0.6, 0.0, 0.8)),
+                };
+                image.depth.push(depth);
+                image.ao.push(if sky { 1.0 } else { ao(near, x, y) });
+                image.normals.push(normal);
+            }
+        }
+        image
+    }
+
+    /// The filtered AO of `image`, from both passes on the GPU.
+    fn filter(gpu: &GpuContext, settings: &SpatialSettings, image: &Image) -> Vec<f32> {
+        let (device, queue) = (&gpu.device, &gpu.queue);
+        let upload = |label, format, bytes: &[u8]| {
+            upload_texture_2d(device, queue, label, SIZE, format, bytes)
+                .unwrap()
+                .create_view(&Default::default())
+        };
+        let ao = upload(
+            "ao",
+            wgpu::TextureFormat::R32Float,
+            bytemuck::cast_slice(&image.ao),
+        );
+        let depth = upload(
+            "depth",
+            wgpu::TextureFormat::R32Float,
+            bytemuck::cast_slice(&image.depth),
+        );
+        let packed_normals: Vec<u32> = image.normals.iter().map(|&n| pack_oct32(n)).collect();
+        let normals = upload(
+            "normals",
+            wgpu::TextureFormat::R32Uint,
+            bytemuck::cast_slice(&packed_normals),
+        );
+        let usage = wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
+        let packed = create_texture_2d(device, "packed", SIZE, PACKED_FORMAT, usage);
+        let output = create_texture_2d(device, "output", SIZE, AO_FORMAT, usage);
+        let view_uniforms = create_uniform_buffer::<ViewUniforms>(device, "view");
+        let projection = Projection::perspective(1.0, SIZE[0] as f32 / SIZE[1] as f32, 0.1, None);
+        queue.write_buffer(
+            &view_uniforms,
+            0,
+            bytemuck::bytes_of(&ViewUniforms::new(&projection, SIZE, 0)),
+        );
+        let pass = SpatialFilterPass::new(device, queue, settings);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        pass.encode(
+            &mut PassContext {
+                device,
+                encoder: &mut encoder,
+                view_uniforms: &view_uniforms,
+                size: SIZE,
+                timer: None,
+            },
+            &ao,
+            &depth,
+            &normals,
+            &packed.create_view(&Default::default()),
+            &output.create_view(&Default::default()),
+        );
+        queue.submit([encoder.finish()]);
+        read_texture_f32(device, queue, &output).unwrap()
+    }
+
+    /// The extremes of the kernel: radius 1 and 8, both depth weights, with a normal weight.
+    fn settings() -> Vec<SpatialSettings> {
+        let base = SpatialSettings {
+            enabled: true,
+            ..SpatialSettings::default()
+        };
+        vec![
+            SpatialSettings { radius: 1, ..base },
+            SpatialSettings {
+                radius: 8,
+                sigma: 4.0,
+                ..base
+            },
+            SpatialSettings {
+                radius: 8,
+                sigma: 4.0,
+                depth_weight: DepthWeight::Threshold,
+                ..base
+            },
+            SpatialSettings {
+                radius: 8,
+                normal_power: 4.0,
+                ..base
+            },
+        ]
+    }
+
+    fn gpu() -> GpuContext {
+        GpuContext::headless()
+            .expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
+    }
+
+    fn standard_deviation(values: impl Iterator<Item = f32> + Clone) -> f32 {
+        let n = values.clone().count() as f32;
+        let mean = values.clone().sum::<f32>() / n;
+        (values.map(|v| (v - mean) * (v - mean)).sum::<f32>() / n).sqrt()
+    }
+
+    #[test]
+    fn a_depth_step_is_not_blurred_across_and_sky_stays_one() {
+        let gpu = gpu();
+        let noisy = image(|near, x, y| if near { 0.2 } else { 0.7 } + 0.1 * hash(x, y));
+        for settings in settings() {
+            let filtered = filter(&gpu, &settings, &noisy);
+            let mut sides = [Vec::new(), Vec::new()];
+            for (i, &ao) in filtered.iter().enumerate() {
+                let near = (i as u32 % SIZE[0]) < STEP_X;
+                if noisy.depth[i] == 0.0 {
+                    assert_eq!(ao, 1.0, "{settings:?}: sky pixel {i}");
+                    continue;
+                }
+                let low = if near { 0.2 } else { 0.7 };
+                assert!(
+                    (low - 1e-6..=low + 0.1 + 1e-6).contains(&ao),
+                    "{settings:?}: pixel {i} on the {} side reads {ao}",
+                    if near { "near" } else { "far" }
+                );
+                sides[usize::from(near)].push((ao, noisy.ao[i]));
+            }
+            // And it does blur: each side is smoother than it was.
+            for side in &sides {
+                let after = standard_deviation(side.iter().map(|v| v.0));
+                let before = standard_deviation(side.iter().map(|v| v.1));
+                assert!(after < 0.7 * before, "{settings:?}: {before} -> {after}");
+            }
+        }
+    }
+
+    #[test]
+    fn constant_ao_stays_constant() {
+        let gpu = gpu();
+        let flat = image(|_, _, _| 0.37);
+        for settings in settings() {
+            for (i, &ao) in filter(&gpu, &settings, &flat).iter().enumerate() {
+                let expected = if flat.depth[i] == 0.0 { 1.0 } else { 0.37 };
+                assert!(
+                    (ao - expected).abs() < 1e-6,
+                    "{settings:?}: pixel {i} reads {ao}"
+                );
+            }
+        }
+    }
+}
