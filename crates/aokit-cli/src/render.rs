@@ -5,10 +5,10 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use aokit::{AdapterKind, GpuContext};
 use aokit_scene::composite::SpecularOcclusion;
-use aokit_scene::{Renderer, Scene};
+use aokit_scene::{CameraPath, Renderer, Scene};
 use clap::Args;
 
-use aokit_eval::{write_exr, write_grey_png, write_rgba_png};
+use aokit_eval::{grey_to_rgba, write_exr, write_gif, write_grey_png, write_rgba_png};
 
 use crate::camera_args::CameraArgs;
 use crate::export::{create_dir, write_gbuffer};
@@ -48,6 +48,15 @@ pub struct RenderArgs {
     /// Roughness of every surface in lit.png, 0 (mirror) to 1 (default: 0.5).
     #[arg(long, value_name = "R", value_parser = parse_roughness, allow_negative_numbers = true)]
     pub roughness: Option<f32>,
+    /// Render a sequence of this many frames along --path, each reprojecting the last (the
+    /// temporal filter, when on, accumulates over them): writes frames/ao-NNN.png and
+    /// lit-NNN.png, animated ao.gif and lit.gif, and the last frame as ao.png, ao.exr, lit.png.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub frames: u32,
+    /// How the camera moves over the frames: still, orbit (40 degrees about the target), dolly
+    /// (30% of the way in) or strafe (sideways by 40% of the distance).
+    #[arg(long, value_name = "PATH", default_value = "still")]
+    pub path: CameraPath,
 }
 
 fn parse_specular_occlusion(s: &str) -> Result<SpecularOcclusion, String> {
@@ -137,17 +146,51 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             settings.method.name()
         );
     }
-    let frame = renderer.render(&gpu, &camera, args.size, 0)?;
-    if frame.ao.iter().any(|v| !v.is_finite()) {
-        bail!("the AO pass produced non-finite values: please report this with the command line");
-    }
-
     let out = &args.out;
     create_dir(out)?;
+    let mut previews = (Vec::new(), Vec::new());
+    let mut last = None;
+    for i in 0..args.frames {
+        let t = if args.frames > 1 {
+            i as f32 / (args.frames - 1) as f32
+        } else {
+            0.0
+        };
+        let frame = renderer.render(&gpu, &args.path.at(&camera, t), args.size, i)?;
+        if frame.ao.iter().any(|v| !v.is_finite()) {
+            bail!(
+                "the AO pass produced non-finite values: please report this with the command line"
+            );
+        }
+        if args.frames > 1 {
+            let frames = out.join("frames");
+            create_dir(&frames)?;
+            write_grey_png(
+                &frames.join(format!("ao-{i:03}.png")),
+                frame.size,
+                &frame.ao,
+            )?;
+            write_rgba_png(
+                &frames.join(format!("lit-{i:03}.png")),
+                frame.size,
+                &frame.lit,
+            )?;
+            previews.0.push(grey_to_rgba(&frame.ao));
+            previews.1.push(frame.lit.clone());
+        }
+        last = Some(frame);
+    }
+    let frame = last.expect("at least one frame was rendered");
     write_grey_png(&out.join("ao.png"), frame.size, &frame.ao)?;
     write_exr(&out.join("ao.exr"), frame.size, &[("Y", frame.ao.clone())])?;
     write_rgba_png(&out.join("lit.png"), frame.size, &frame.lit)?;
     let mut written = vec!["ao.png", "ao.exr", "lit.png"];
+    if args.frames > 1 {
+        // 30 frames per second, the pace the sequence would play at.
+        write_gif(&out.join("ao.gif"), frame.size, &previews.0, 33)?;
+        write_gif(&out.join("lit.gif"), frame.size, &previews.1, 33)?;
+        written.extend(["frames/", "ao.gif", "lit.gif"]);
+    }
     if args.gbuffer {
         written.extend(write_gbuffer(
             out,

@@ -215,3 +215,50 @@ fn a_machine_without_an_adapter_gets_an_install_hint() {
         "{stderr}"
     );
 }
+
+#[test]
+fn a_camera_path_writes_frames_and_animated_previews() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit(
+        dir.path(),
+        &[
+            "render",
+            "--size",
+            "48x32",
+            "--frames",
+            "4",
+            "--path",
+            "orbit",
+            "--set",
+            "temporal.enabled=true",
+            "--out",
+            "seq",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let seq = dir.path().join("seq");
+    for file in [
+        "frames/ao-000.png",
+        "frames/lit-003.png",
+        "ao.gif",
+        "lit.gif",
+        "ao.png",
+        "ao.exr",
+    ] {
+        assert!(seq.join(file).is_file(), "{file} missing");
+    }
+    let gif = std::fs::read(seq.join("ao.gif")).unwrap();
+    assert!(gif.starts_with(b"GIF89a"));
+    for (args, expected) in [
+        (&["render", "--frames", "0"][..], "--frames"),
+        (&["render", "--frames", "3", "--path", "spin"][..], "spin"),
+    ] {
+        let out = aokit(dir.path(), args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(
+            text(&out.stderr).contains(expected),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+    }
+}

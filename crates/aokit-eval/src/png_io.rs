@@ -8,7 +8,7 @@ use image::{ExtendedColorType, ImageEncoder};
 use crate::error::{EvalError, Result};
 
 /// Float to 8-bit grey: clamped to [0, 1], NaN as black.
-fn grey_bytes(values: &[f32]) -> Vec<u8> {
+pub(crate) fn grey_bytes(values: &[f32]) -> Vec<u8> {
     values
         .iter()
         .map(|&v| {

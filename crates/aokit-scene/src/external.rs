@@ -123,10 +123,9 @@ impl ExternalAo {
             queue,
             &mut encoder,
             &AoInputs {
-                depth: &self.depth,
                 normals: self.normals.as_ref(),
-                projection: self.projection,
                 frame_index,
+                ..AoInputs::new(&self.depth, self.projection)
             },
         )?;
         queue.submit([encoder.finish()]);

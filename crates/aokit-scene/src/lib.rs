@@ -23,6 +23,7 @@ pub mod external;
 pub mod gbuffer;
 pub mod load;
 pub mod mesh;
+pub mod path;
 pub mod reference;
 pub mod renderer;
 pub mod scene;
@@ -33,5 +34,6 @@ mod uniform_block;
 
 pub use builtin::Builtin;
 pub use camera::{Camera, CameraFile, Lens};
+pub use path::CameraPath;
 pub use renderer::{Frame, RenderError, Renderer};
 pub use scene::{Scene, SceneError};

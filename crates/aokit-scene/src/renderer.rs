@@ -32,6 +32,9 @@ pub struct Frame {
     /// precision), or reconstructed from depth as
     /// [`NormalsSettings::source`](aokit::NormalsSettings::source) asks.
     pub normals: Vec<Vec3>,
+    /// With the temporal filter on, 1 where this frame rejected its history (disocclusions,
+    /// the screen's edges, a reset), 0 where it blended.
+    pub history_rejected: Option<Vec<f32>>,
     /// View-space bent normals, when the settings given to the [`Renderer`] ask for them (not
     /// when only the composite's GTSO turned them on).
     pub bent_normals: Option<Vec<Vec3>>,
@@ -75,6 +78,8 @@ pub struct Renderer {
     /// Lighting of the lit composite. [`SpecularOcclusion::Gtso`] makes the next frames compute
     /// bent normals when the method can (see [`Renderer::pipeline_settings`]).
     pub lighting: Lighting,
+    /// Start the temporal history over at the next frame.
+    reset_history: bool,
 }
 
 impl Renderer {
@@ -98,7 +103,15 @@ impl Renderer {
             )?,
             settings: *settings,
             lighting,
+            reset_history: false,
         })
+    }
+
+    /// Makes the next frame start the temporal filter's history over, as after a camera cut.
+    /// Frames rendered one after the other are otherwise taken as a sequence: each reprojects
+    /// the previous one.
+    pub fn reset_history(&mut self) {
+        self.reset_history = true;
     }
 
     /// The AO settings as given to [`Renderer::new`] or [`Renderer::set_settings`].
@@ -197,10 +210,11 @@ impl Renderer {
             queue,
             &mut encoder,
             &AoInputs {
-                depth: &gbuffer.depth,
                 normals: Some(&gbuffer.normals),
-                projection,
+                view_from_world,
                 frame_index,
+                reset_history: std::mem::take(&mut self.reset_history),
+                ..AoInputs::new(&gbuffer.depth, projection)
             },
         )?;
         let sun = SunView::new(self.lighting.sun_direction, &self.bounds);
@@ -224,6 +238,10 @@ impl Renderer {
         queue.submit([encoder.finish()]);
 
         let ao = read_texture_f32(device, queue, outputs.ao)?;
+        let history_rejected = outputs
+            .history_rejected
+            .map(|texture| read_texture_f32(device, queue, texture))
+            .transpose()?;
         let bent_normals = outputs
             .bent_normals
             .filter(|_| self.settings.bent_normals)
@@ -253,6 +271,7 @@ impl Renderer {
             lit,
             linear_depth,
             normals,
+            history_rejected,
             bent_normals,
         })
     }

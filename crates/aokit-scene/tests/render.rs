@@ -322,12 +322,7 @@ fn reconstructed_normals(gpu: &GpuContext, frame: &Frame) -> Vec<Vec3> {
             device,
             queue,
             &mut encoder,
-            &aokit::AoInputs {
-                depth: &depth,
-                normals: None,
-                projection: frame.projection,
-                frame_index: 0,
-            },
+            &aokit::AoInputs::new(&depth, frame.projection),
         )
         .unwrap();
     queue.submit([encoder.finish()]);
@@ -388,12 +383,7 @@ fn pass_times_are_reported_when_the_adapter_has_timestamps() {
             device,
             queue,
             &mut encoder,
-            &aokit::AoInputs {
-                depth: &depth,
-                normals: None,
-                projection: frame.projection,
-                frame_index: 0,
-            },
+            &aokit::AoInputs::new(&depth, frame.projection),
         )
         .unwrap();
     queue.submit([encoder.finish()]);

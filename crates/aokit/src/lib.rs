@@ -32,6 +32,6 @@ pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
     AoSettings, DepthWeight, GtaoSettings, HbaoSettings, Method, NoiseKind, NoiseSettings,
     NormalEncoding, NormalSource, NormalsSettings, Preset, SettingsError, SpatialSettings,
-    SsaoSettings, TemporalOffset, VbaoSettings,
+    SsaoSettings, TemporalOffset, TemporalSettings, VbaoSettings,
 };
 pub use timing::PassTime;

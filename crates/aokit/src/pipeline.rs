@@ -1,5 +1,7 @@
 //! [`AoPipeline`]: owns the passes and the intermediate textures, and wires them per frame.
 
+use std::collections::HashMap;
+
 use crate::error::AoError;
 use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
@@ -9,6 +11,7 @@ use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
 use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
+use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
 use crate::settings::{AoSettings, NormalEncoding, NormalSource};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
@@ -100,6 +103,10 @@ pub struct AoOutputs<'a> {
     pub bent_normals: Option<&'a wgpu::Texture>,
     /// A view of [`AoOutputs::bent_normals`] for binding.
     pub bent_normals_view: Option<&'a wgpu::TextureView>,
+    /// With the temporal filter on: `R32Float`, 1 where this frame rejected its history
+    /// (disocclusions, the screen's edges, a reset) and showed the current frame alone, 0 where
+    /// it blended. A debug view of where ghosting or fresh noise can show.
+    pub history_rejected: Option<&'a wgpu::Texture>,
 }
 
 /// The AO pipeline for one view.
@@ -111,7 +118,8 @@ pub struct AoOutputs<'a> {
 /// let mut pipeline = AoPipeline::new(device, queue, &AoSettings::default())?;
 /// let mut encoder = device.create_command_encoder(&Default::default());
 /// let outputs = pipeline.encode(device, queue, &mut encoder, &AoInputs {
-///     depth, normals: Some(normals), projection, frame_index: 0,
+///     normals: Some(normals),
+///     ..AoInputs::new(depth, projection)
 /// })?;
 /// // ... bind `outputs.ao_view` in your lighting pass ...
 /// queue.submit([encoder.finish()]);
@@ -128,6 +136,10 @@ pub struct AoPipeline {
     input_normals_view: Option<wgpu::TextureView>,
     method: MethodPass,
     spatial: SpatialFilterPass,
+    /// Compiled the first time the temporal filter is on.
+    temporal: Option<TemporalFilterPass>,
+    /// Each view's temporal history, by [`AoInputs::view_id`].
+    histories: HashMap<u32, Option<History>>,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
 }
@@ -150,6 +162,8 @@ impl AoPipeline {
             input_normals_view: None,
             method: MethodPass::new(device, queue, settings),
             spatial: SpatialFilterPass::new(device, queue, &settings.spatial),
+            temporal: None,
+            histories: HashMap::new(),
             targets: None,
             timer: None,
         })
@@ -194,6 +208,9 @@ impl AoPipeline {
         self.settings = *settings;
         self.method.set_settings(device, queue, settings);
         self.spatial.set_settings(device, queue, &settings.spatial);
+        if let Some(temporal) = &mut self.temporal {
+            temporal.set_settings(&settings.temporal);
+        }
         Ok(())
     }
 
@@ -293,6 +310,38 @@ impl AoPipeline {
             }
             None => (&targets.ao, &targets.ao_view),
         };
+        let mut history_rejected = None;
+        let (ao, ao_view) = if self.settings.temporal.enabled {
+            let history = self.histories.entry(inputs.view_id).or_insert(None);
+            let motion_vectors = inputs
+                .motion_vectors
+                .map(|t| t.create_view(&Default::default()));
+            let temporal = self
+                .temporal
+                .get_or_insert_with(|| TemporalFilterPass::new(device, &self.settings.temporal));
+            temporal.encode(
+                &mut ctx,
+                queue,
+                history,
+                &FrameMotion {
+                    view_from_world: inputs.view_from_world,
+                    projection: inputs.projection,
+                    motion_vectors: motion_vectors.as_ref(),
+                    reset: inputs.reset_history,
+                },
+                ao_view,
+                &targets.linear_depth_view,
+            );
+            let history = history
+                .as_ref()
+                .expect("the temporal filter keeps a history");
+            history_rejected = Some(&history.rejected().0);
+            (&history.ao().0, &history.ao().1)
+        } else {
+            // Off, histories go: when it is turned on again the old frames are stale.
+            self.histories.clear();
+            (ao, ao_view)
+        };
         if let Some(timer) = &self.timer {
             timer.resolve(encoder);
         }
@@ -306,6 +355,7 @@ impl AoPipeline {
             normals_view,
             bent_normals: targets.bent_normals.as_ref().map(|(texture, _)| texture),
             bent_normals_view: targets.bent_normals.as_ref().map(|(_, view)| view),
+            history_rejected,
         })
     }
 }

@@ -238,6 +238,42 @@ pub struct SpatialSettings {
     pub normal_power: f32,
 }
 
+/// The temporal denoiser: each frame's AO blended with its reprojected history (docs/denoise.md).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct TemporalSettings {
+    /// Filter over frames. Off by default, like the spatial filter: the published tables score
+    /// single frames.
+    pub enabled: bool,
+    /// Weight of the history in `[0, 1)`: the noise averages over about `1 / (1 - blend)`
+    /// frames, and a change takes as long to show fully.
+    pub blend: f32,
+    /// History is clipped to the mean of the pixel's 3x3 same-surface neighbours plus or minus
+    /// this many of their standard deviations: smaller rejects stale history sooner (less
+    /// trailing), larger keeps more of it (less flicker).
+    pub variance_gamma: f32,
+    /// Relative depth difference above which the reprojected history shows another surface
+    /// and is not used (a disocclusion).
+    pub depth_threshold: f32,
+}
+
+impl Default for TemporalSettings {
+    fn default() -> Self {
+        Self {
+            enabled: false,
+            // Five frames' worth of history (1 / (1 - 0.8)), a twelfth of a second at 60 Hz: at
+            // 0.9 the history's resampling blur and its older viewpoints cost more accuracy
+            // under camera motion than the extra averaging gains (docs/denoise.md).
+            blend: 0.8,
+            // One standard deviation: the usual clip box of temporal filters.
+            variance_gamma: 1.0,
+            // 5%: wider than a grazing plane changes between neighbouring texels at 60 degrees
+            // field of view, narrower than the gap between an object and what lies behind it.
+            depth_threshold: 0.05,
+        }
+    }
+}
+
 /// Largest [`SpatialSettings::radius`]: the filter's workgroup tile holds the row or column
 /// segment of its 64 threads plus this many pixels on each side.
 pub const MAX_SPATIAL_RADIUS: u32 = 8;
@@ -507,6 +543,8 @@ pub struct AoSettings {
     pub noise: NoiseSettings,
     /// The spatial denoiser.
     pub spatial: SpatialSettings,
+    /// The temporal denoiser.
+    pub temporal: TemporalSettings,
 }
 
 impl Default for AoSettings {
@@ -562,6 +600,7 @@ impl AoSettings {
             normals: NormalsSettings::default(),
             noise: NoiseSettings::default(),
             spatial: SpatialSettings::default(),
+            temporal: TemporalSettings::default(),
         }
     }
 
@@ -640,6 +679,15 @@ impl AoSettings {
             });
         }
         positive("spatial.sigma", self.spatial.sigma)?;
+        if !(0.0..1.0).contains(&self.temporal.blend) {
+            return Err(SettingsError {
+                field: "temporal.blend",
+                value: self.temporal.blend.to_string(),
+                expected: "a weight in [0, 1)",
+            });
+        }
+        positive("temporal.variance_gamma", self.temporal.variance_gamma)?;
+        positive("temporal.depth_threshold", self.temporal.depth_threshold)?;
         positive("spatial.depth_sigma", self.spatial.depth_sigma)?;
         at_least("spatial.normal_power", self.spatial.normal_power, 0.0)?;
         Ok(())

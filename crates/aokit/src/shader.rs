@@ -115,6 +115,12 @@ pub const SPATIAL_FILTER_VERTICAL: ShaderSource = ShaderSource {
     ],
 };
 
+/// The temporal filter.
+pub const TEMPORAL_FILTER: ShaderSource = ShaderSource {
+    name: "temporal_filter",
+    parts: &[VIEW, include_str!("../shaders/temporal_filter.wgsl")],
+};
+
 /// A method kernel: the shared snippets, any of its own, then its file.
 macro_rules! method_kernel {
     ($name:literal $(, $snippet:expr)*) => {
@@ -179,6 +185,7 @@ pub const ALL: &[ShaderSource] = &[
     VBAO,
     SPATIAL_FILTER_HORIZONTAL,
     SPATIAL_FILTER_VERTICAL,
+    TEMPORAL_FILTER,
     OCCLUSION_FUNCTIONS,
 ];
 

@@ -169,6 +169,57 @@ impl SpatialUniforms {
     }
 }
 
+/// Mirrors `TemporalUniforms` in `shaders/temporal_filter.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub(crate) struct TemporalUniforms {
+    pub prev_view_from_view: [[f32; 4]; 4],
+    pub prev_ndc_to_view: [f32; 2],
+    pub prev_orthographic: f32,
+    pub blend: f32,
+    pub variance_gamma: f32,
+    pub depth_threshold: f32,
+    pub flags: u32,
+    pub _pad: u32,
+}
+
+/// `TemporalUniforms::flags` bits, mirrored as constants in `temporal_filter.wgsl`.
+pub(crate) mod temporal_flags {
+    /// A previous frame of the same view exists and may be reprojected.
+    pub const HISTORY: u32 = 1;
+    /// Motion vectors replace the camera reprojection.
+    pub const MOTION_VECTORS: u32 = 2;
+}
+
+impl TemporalUniforms {
+    /// `previous`: the transform from this frame's view space to the previous frame's, and the
+    /// previous projection; `None` starts the history over.
+    pub fn new(
+        settings: &crate::settings::TemporalSettings,
+        previous: Option<(glam::Mat4, Projection)>,
+        motion_vectors: bool,
+    ) -> Self {
+        let (transform, projection) = previous.unzip();
+        let mut flags = 0;
+        if previous.is_some() {
+            flags |= temporal_flags::HISTORY;
+        }
+        if motion_vectors {
+            flags |= temporal_flags::MOTION_VECTORS;
+        }
+        Self {
+            prev_view_from_view: transform.unwrap_or(glam::Mat4::IDENTITY).to_cols_array_2d(),
+            prev_ndc_to_view: projection.map_or([1.0; 2], |p| p.ndc_to_view_scale().to_array()),
+            prev_orthographic: projection.map_or(0.0, |p| f32::from(u8::from(p.is_orthographic()))),
+            blend: settings.blend,
+            variance_gamma: settings.variance_gamma,
+            depth_threshold: settings.depth_threshold,
+            flags,
+            _pad: 0,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -250,6 +301,26 @@ mod tests {
             )
             .unwrap();
         }
+    }
+
+    #[test]
+    fn temporal_uniforms_match_wgsl() {
+        let fields = crate::field_offsets!(TemporalUniforms {
+            prev_view_from_view,
+            prev_ndc_to_view,
+            prev_orthographic,
+            blend,
+            variance_gamma,
+            depth_threshold,
+            flags,
+        });
+        shader::check_layout(
+            &shader::TEMPORAL_FILTER,
+            "TemporalUniforms",
+            fields,
+            size_of::<TemporalUniforms>(),
+        )
+        .unwrap();
     }
 
     #[test]

@@ -233,10 +233,8 @@ fn the_pipeline_decodes_every_format_to_the_cpu_mirrors_normals() {
                 queue,
                 &mut encoder,
                 &AoInputs {
-                    depth: &depth,
                     normals: Some(&normals),
-                    projection: projection(),
-                    frame_index: 0,
+                    ..AoInputs::new(&depth, projection())
                 },
             )
             .unwrap();
@@ -277,10 +275,8 @@ fn a_normal_texture_in_another_format_than_the_encoding_is_refused_naming_both()
     )
     .unwrap();
     let inputs = AoInputs {
-        depth: &depth,
         normals: Some(&normals),
-        projection: projection(),
-        frame_index: 0,
+        ..AoInputs::new(&depth, projection())
     };
     for encoding in NormalEncoding::ALL {
         let result = inputs.validate(encoding);

@@ -5,6 +5,7 @@ pub mod linear_depth;
 pub mod method;
 pub mod normals_from_depth;
 pub mod spatial_filter;
+pub mod temporal_filter;
 
 use crate::shader::ShaderSource;
 use crate::timing::PassTimer;

@@ -1,0 +1,211 @@
+//! The temporal filter: blends each pixel's AO with its reprojected history (see
+//! `shaders/temporal_filter.wgsl`), and the per-view history it keeps.
+
+use glam::Mat4;
+
+use super::{ComputeKernel, PassContext, bind};
+use crate::gpu::{create_texture_2d, create_uniform_buffer};
+use crate::passes::method::AO_FORMAT;
+use crate::projection::Projection;
+use crate::settings::TemporalSettings;
+use crate::shader;
+use crate::uniforms::TemporalUniforms;
+
+/// Format of the history: AO and linear depth, full precision so depth comparisons after many
+/// frames still tell surfaces apart.
+pub const HISTORY_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
+/// Format of the motion vectors a renderer may hand in: pixels from a pixel to where its surface
+/// was in the previous frame.
+pub const MOTION_VECTOR_FORMATS: [wgpu::TextureFormat; 2] = [
+    wgpu::TextureFormat::Rg16Float,
+    wgpu::TextureFormat::Rg32Float,
+];
+
+/// One view's history: last frame's filtered AO and depth, and the camera that saw them.
+pub struct History {
+    size: [u32; 2],
+    /// Ping-pong pair: one is read while the other is written.
+    textures: [(wgpu::Texture, wgpu::TextureView); 2],
+    /// Which of `textures` holds the last frame.
+    latest: usize,
+    /// The camera of the last frame, `None` until a frame was filtered.
+    camera: Option<(Mat4, Projection)>,
+    /// Filtered AO of the last frame, `R32Float`.
+    output: (wgpu::Texture, wgpu::TextureView),
+    /// 1 where the last frame rejected its history, `R32Float`.
+    rejected: (wgpu::Texture, wgpu::TextureView),
+}
+
+impl History {
+    fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
+        let usage = wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
+        let make = |label, format| {
+            let texture = create_texture_2d(device, label, size, format, usage);
+            let view = texture.create_view(&Default::default());
+            (texture, view)
+        };
+        Self {
+            size,
+            textures: [
+                make("aokit history a", HISTORY_FORMAT),
+                make("aokit history b", HISTORY_FORMAT),
+            ],
+            latest: 0,
+            camera: None,
+            output: make("aokit temporal ao", AO_FORMAT),
+            rejected: make("aokit history rejected", AO_FORMAT),
+        }
+    }
+
+    /// The filtered AO.
+    pub fn ao(&self) -> &(wgpu::Texture, wgpu::TextureView) {
+        &self.output
+    }
+
+    /// Where the last frame rejected its history (1) or used it (0).
+    pub fn rejected(&self) -> &(wgpu::Texture, wgpu::TextureView) {
+        &self.rejected
+    }
+}
+
+/// The camera and motion of one frame, as the temporal filter needs them.
+pub struct FrameMotion<'a> {
+    /// World-to-view transform of this frame.
+    pub view_from_world: Mat4,
+    /// Projection of this frame.
+    pub projection: Projection,
+    /// Per-pixel motion to the previous frame, when the renderer has it.
+    pub motion_vectors: Option<&'a wgpu::TextureView>,
+    /// Start over: the history shows something else (a camera cut, a teleport).
+    pub reset: bool,
+}
+
+/// Runs the temporal filter.
+pub struct TemporalFilterPass {
+    settings: TemporalSettings,
+    kernel: ComputeKernel,
+    uniforms: wgpu::Buffer,
+    point_clamp: wgpu::Sampler,
+    /// Bound in place of motion vectors when there are none: never read.
+    motion_placeholder: wgpu::TextureView,
+}
+
+impl TemporalFilterPass {
+    /// Compiles the kernel.
+    pub fn new(device: &wgpu::Device, settings: &TemporalSettings) -> Self {
+        let float = wgpu::TextureSampleType::Float { filterable: false };
+        let kernel = ComputeKernel::new(
+            device,
+            &shader::TEMPORAL_FILTER,
+            &[
+                bind::uniform(0),
+                bind::uniform(1),
+                bind::texture(2, float),
+                bind::texture(3, float),
+                bind::texture(4, float),
+                bind::texture(5, float),
+                bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
+                bind::storage_texture(7, AO_FORMAT),
+                bind::storage_texture(8, HISTORY_FORMAT),
+                bind::storage_texture(9, AO_FORMAT),
+            ],
+        );
+        Self {
+            settings: *settings,
+            kernel,
+            uniforms: create_uniform_buffer::<TemporalUniforms>(device, "aokit temporal settings"),
+            point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some("aokit temporal point clamp"),
+                ..Default::default()
+            }),
+            motion_placeholder: create_texture_2d(
+                device,
+                "aokit motion placeholder",
+                [1, 1],
+                MOTION_VECTOR_FORMATS[0],
+                wgpu::TextureUsages::TEXTURE_BINDING,
+            )
+            .create_view(&Default::default()),
+        }
+    }
+
+    /// Settings for later frames.
+    pub fn set_settings(&mut self, settings: &TemporalSettings) {
+        self.settings = *settings;
+    }
+
+    /// Filters `ao` into `history` (made or remade when missing or of another size), using and
+    /// then replacing the history's previous frame.
+    pub fn encode(
+        &self,
+        ctx: &mut PassContext<'_>,
+        queue: &wgpu::Queue,
+        history: &mut Option<History>,
+        frame: &FrameMotion<'_>,
+        ao: &wgpu::TextureView,
+        linear_depth: &wgpu::TextureView,
+    ) {
+        if history.as_ref().map(|h| h.size) != Some(ctx.size) {
+            *history = Some(History::new(ctx.device, ctx.size));
+        }
+        let history = history.as_mut().expect("history was just made");
+        let previous = history.camera.filter(|_| !frame.reset);
+        let uniforms = TemporalUniforms::new(
+            &self.settings,
+            previous.map(|(view, projection)| {
+                (prev_view_from_view(view, frame.view_from_world), projection)
+            }),
+            frame.motion_vectors.is_some(),
+        );
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        let (read, write) = (history.latest, 1 - history.latest);
+        ctx.dispatch(
+            &self.kernel,
+            &[
+                self.uniforms.as_entire_binding(),
+                wgpu::BindingResource::TextureView(ao),
+                wgpu::BindingResource::TextureView(linear_depth),
+                wgpu::BindingResource::TextureView(&history.textures[read].1),
+                wgpu::BindingResource::TextureView(
+                    frame.motion_vectors.unwrap_or(&self.motion_placeholder),
+                ),
+                wgpu::BindingResource::Sampler(&self.point_clamp),
+                wgpu::BindingResource::TextureView(&history.output.1),
+                wgpu::BindingResource::TextureView(&history.textures[write].1),
+                wgpu::BindingResource::TextureView(&history.rejected.1),
+            ],
+        );
+        history.latest = write;
+        history.camera = Some((frame.view_from_world, frame.projection));
+    }
+}
+
+/// The transform from this frame's view space to the previous frame's, in double precision:
+/// the two world transforms nearly cancel for a slow camera, and `f32` would leave their
+/// rounding as motion.
+fn prev_view_from_view(previous_view_from_world: Mat4, view_from_world: Mat4) -> Mat4 {
+    (previous_view_from_world.as_dmat4() * view_from_world.as_dmat4().inverse()).as_mat4()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn a_still_camera_maps_view_space_to_itself() {
+        let view =
+            glam::camera::rh::view::look_at_mat4(Vec3::new(3.0, 2.0, 9.0), Vec3::ZERO, Vec3::Y);
+        let m = prev_view_from_view(view, view);
+        assert!(m.abs_diff_eq(Mat4::IDENTITY, 1e-6), "{m}");
+        let moved =
+            glam::camera::rh::view::look_at_mat4(Vec3::new(3.5, 2.0, 9.0), Vec3::ZERO, Vec3::Y);
+        let p = Vec3::new(0.2, -0.1, -8.0);
+        let world = view.inverse().transform_point3(p);
+        let expected = moved.transform_point3(world);
+        let got = prev_view_from_view(moved, view).transform_point3(p);
+        assert!((got - expected).length() < 1e-4, "{got} vs {expected}");
+    }
+}
