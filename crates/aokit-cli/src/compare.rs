@@ -13,7 +13,7 @@ use aokit_eval::{
 };
 use aokit_reference::{AoOptions, Falloff, ReferenceImage};
 use aokit_scene::external::ExternalAo;
-use aokit_scene::{Renderer, Scene};
+use aokit_scene::{CameraPath, Renderer, Scene};
 use clap::Args;
 use glam::{Vec2, Vec3};
 use serde_json::json;
@@ -24,6 +24,7 @@ use crate::export::create_dir;
 use crate::passes::{self, DepthKind, NormalSpace};
 use crate::reference::ReferenceInfo;
 use crate::render::{open_gpu, parse_size};
+use crate::sequence::{SequenceFrame, score_sequence};
 use crate::settings_args::OverrideArgs;
 
 #[derive(Args, Debug)]
@@ -65,6 +66,15 @@ pub struct CompareArgs {
     /// Frames timed per method and preset; the median is reported.
     #[arg(long, default_value_t = 5)]
     pub timing_frames: u32,
+    /// Score a sequence of this many frames along --path, each against its own reference (the
+    /// temporal filter, when on, accumulates over them): adds the mean RMSE over the frames,
+    /// the flicker (mean change between frames; all noise with --path still) and the error in
+    /// what each frame newly reveals. Images and the other columns are of the last frame.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub frames: u32,
+    /// How the camera moves over --frames: still, orbit, dolly or strafe (as `aokit render`).
+    #[arg(long, value_name = "PATH", default_value = "still")]
+    pub path: CameraPath,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-compare")]
     pub out: PathBuf,
@@ -181,6 +191,7 @@ fn score_method(
         all: score(reference.size, ao, &reference.ao, &surface),
         edges: score(reference.size, ao, &reference.ao, &edges),
         grazing: score(reference.size, ao, &reference.ao, grazing),
+        sequence: None,
         gpu_ms,
         samples_per_pixel: settings.samples_per_pixel(),
         ao_png: encode_png_grey(reference.size, ao)?,
@@ -214,9 +225,39 @@ fn score_scene_view(
         seed: 0,
         falloff: Falloff::None,
     };
-    let reference = cache::reference(cache_dir, scene, camera, args.size, &options)?;
-    let projection = camera.projection(args.size[0] as f32 / args.size[1] as f32, &scene.bounds);
-    let grazing = grazing(&reference, &projection);
+    let aspect = args.size[0] as f32 / args.size[1] as f32;
+    // The cameras of the frames, and each one's reference (a still path traces one).
+    let cameras: Vec<aokit_scene::Camera> = (0..args.frames)
+        .map(|i| {
+            let t = if args.frames > 1 {
+                i as f32 / (args.frames - 1) as f32
+            } else {
+                0.0
+            };
+            args.path.at(camera, t)
+        })
+        .collect();
+    let mut references: Vec<ReferenceImage> = Vec::new();
+    for (i, c) in cameras.iter().enumerate() {
+        let same = i > 0 && cameras[i - 1] == *c;
+        let reference = if same {
+            references[i - 1].clone()
+        } else {
+            cache::reference(cache_dir, scene, c, args.size, &options)?
+        };
+        references.push(reference);
+    }
+    let last = cameras.len() - 1;
+    let sequence_frames: Vec<SequenceFrame<'_>> = cameras
+        .iter()
+        .zip(&references)
+        .map(|(c, reference)| SequenceFrame {
+            view_from_world: c.view_from_world(),
+            projection: c.projection(aspect, &scene.bounds),
+            reference,
+        })
+        .collect();
+    let grazing = grazing(&references[last], &sequence_frames[last].projection);
     let first = settings_for(args, methods[0], args.presets[0], radius)?;
     let mut renderer = Renderer::new(gpu, scene, &first)?;
     let timed = renderer.enable_timing(gpu);
@@ -225,25 +266,39 @@ fn score_scene_view(
         for &preset in &args.presets {
             let settings = settings_for(args, method, preset, radius)?;
             renderer.set_settings(gpu, &settings)?;
-            let frame = renderer.render(gpu, camera, args.size, 0)?;
+            // Each method and preset starts its own sequence: no history from the last one.
+            renderer.reset_history();
+            let mut frames = Vec::new();
+            for (i, c) in cameras.iter().enumerate() {
+                frames.push(renderer.render(gpu, c, args.size, i as u32)?.ao);
+            }
             let mut times = Vec::new();
             for _ in 0..if timed { args.timing_frames } else { 0 } {
-                renderer.render(gpu, camera, args.size, 0)?;
+                renderer.render(gpu, &cameras[last], args.size, args.frames)?;
                 times.extend(frame_ms(renderer.last_ao_times(gpu))?);
             }
-            results.push(score_method(
-                &reference,
+            let mut result = score_method(
+                &references[last],
                 &grazing,
-                &frame.ao,
+                &frames[last],
                 &settings,
                 preset,
                 median(times),
-            )?);
+            )?;
+            if args.frames > 1 {
+                result.sequence = Some(score_sequence(&sequence_frames, &frames));
+            }
+            results.push(result);
         }
     }
+    let name = format!("{} / {}", scene.name, camera.name);
     Ok(Scored {
-        name: format!("{} / {}", scene.name, camera.name),
-        reference,
+        name: if args.frames > 1 {
+            format!("{name} ({} frames, {})", args.frames, args.path.name())
+        } else {
+            name
+        },
+        reference: references.swap_remove(last),
         results,
     })
 }
@@ -289,6 +344,9 @@ fn score_inputs(
     };
     let grazing = grazing(&reference, &loaded.projection);
     let first = settings_for(args, methods[0], args.presets[0], radius)?;
+    if args.frames > 1 {
+        bail!("--frames needs a scene to move through; --inputs holds one frame");
+    }
     let mut external = ExternalAo::new(gpu, &first, &loaded.passes())?;
     let timed = external.enable_timing(gpu);
     let mut results = Vec::new();
@@ -415,6 +473,12 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 "all": metrics_json(&m.all),
                 "edges": metrics_json(&m.edges),
                 "grazing": metrics_json(&m.grazing),
+                "sequence": m.sequence.as_ref().map(|s| json!({
+                    "frames": s.frames,
+                    "mean_rmse": s.mean_rmse,
+                    "flicker": s.flicker,
+                    "disoccluded": metrics_json(&s.disoccluded),
+                })),
             }));
         }
         views.push(ViewResult {

@@ -8,6 +8,7 @@ mod export;
 mod passes;
 mod reference;
 mod render;
+mod sequence;
 mod settings_args;
 
 use std::process::ExitCode;

@@ -475,3 +475,58 @@ fn compare_on_exported_passes_scores_like_compare_on_the_scene() {
         );
     }
 }
+
+#[test]
+fn compare_scores_sequences_along_camera_paths() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let args = |path: &'static str, out: &'static str| {
+        [
+            "compare",
+            "--scene",
+            "room",
+            "--methods",
+            "gtao",
+            "--presets",
+            "medium",
+            "--size",
+            "48x32",
+            "--spp",
+            "32",
+            "--frames",
+            "4",
+            "--path",
+            path,
+            "--set",
+            "temporal.enabled=true",
+            "--timing-frames",
+            "0",
+            "--out",
+            out,
+        ]
+    };
+    ok(d, &args("still", "still"));
+    ok(d, &args("strafe", "strafe"));
+    let sequence = |dir: &str| -> serde_json::Value {
+        let json: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(d.join(dir).join("metrics.json")).unwrap(),
+        )
+        .unwrap();
+        json["results"][0]["sequence"].clone()
+    };
+    let (still, strafe) = (sequence("still"), sequence("strafe"));
+    assert_eq!(still["frames"], 4);
+    assert_eq!(
+        still["disoccluded"]["pixels"], 0,
+        "a still camera reveals nothing"
+    );
+    assert!(strafe["disoccluded"]["pixels"].as_u64().unwrap() > 0);
+    assert!(still["flicker"].as_f64().unwrap() < strafe["flicker"].as_f64().unwrap());
+    let md = std::fs::read_to_string(d.join("still/metrics.md")).unwrap();
+    assert!(
+        md.contains("Flicker") && md.contains("4 frames, still"),
+        "{md}"
+    );
+    let refused = aokit(d, &["compare", "--inputs", "still", "--frames", "3"]);
+    assert_eq!(refused.status.code(), Some(2));
+}

@@ -33,6 +33,23 @@ impl Metrics {
     };
 }
 
+/// How a method does over a sequence of frames (a camera path or moving objects), each scored
+/// against its own reference.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SequenceMetrics {
+    /// Frames in the sequence.
+    pub frames: u32,
+    /// Mean over the frames of each frame's RMSE against its reference.
+    pub mean_rmse: f64,
+    /// Mean absolute change of AO between consecutive frames over pixels that show a surface in
+    /// both: with a still camera and scene, all of it is noise (flicker).
+    pub flicker: f64,
+    /// Scores over the pixels that each frame newly reveals (their surface was hidden or off
+    /// screen in the frame before), all frames after the first together: where temporal
+    /// filters have no history and trailing shows.
+    pub disoccluded: Metrics,
+}
+
 /// Scores `ao` against `reference` over the pixels where `mask` is true.
 ///
 /// All three slices hold `size[0] * size[1]` values, row-major from the top-left. With no masked

@@ -7,7 +7,7 @@ mod html;
 mod markdown;
 mod text;
 
-use crate::metrics::Metrics;
+use crate::metrics::{Metrics, SequenceMetrics};
 
 /// One method at one preset, scored against a view's reference.
 #[derive(Clone, Debug, PartialEq)]
@@ -24,6 +24,9 @@ pub struct MethodResult {
     /// [`grazing_mask`](crate::grazing_mask)), where methods that march in screen space lose
     /// most of the hemisphere.
     pub grazing: Metrics,
+    /// Scores over a sequence of frames, when the run rendered one; `all`, `edges`, `grazing`
+    /// and the images are then of its last frame.
+    pub sequence: Option<SequenceMetrics>,
     /// Median GPU time of the AO passes per frame, when timestamps were available.
     pub gpu_ms: Option<f64>,
     /// AO samples per pixel, a cost measure that needs no GPU timer.

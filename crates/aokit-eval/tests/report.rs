@@ -21,6 +21,7 @@ fn method(name: &str, preset: &str, rmse: f64, gpu_ms: Option<f64>, spp: u32) ->
         all: metrics(rmse),
         edges: metrics(rmse * 2.0),
         grazing: metrics(rmse * 3.0),
+        sequence: None,
         gpu_ms,
         samples_per_pixel: spp,
         ao_png: encode_png_grey([2, 2], &[0.0, 0.5, 1.0, 0.25]).unwrap(),
@@ -58,6 +59,7 @@ fn report() -> Report {
                         },
                         edges: Metrics::EMPTY,
                         grazing: Metrics::EMPTY,
+                        sequence: None,
                         ..method("ssao", "ultra", 0.0, None, 64)
                     },
                 ],
@@ -72,7 +74,7 @@ fn csv_has_header_and_one_row_per_result() {
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(
         lines[0],
-        "view,method,preset,samples_per_pixel,gpu_ms,pixels,mae,rmse,bias,psnr,ssim,edge_pixels,edge_mae,edge_rmse,edge_bias,edge_psnr,edge_ssim,grazing_pixels,grazing_mae,grazing_rmse,grazing_bias,grazing_psnr,grazing_ssim"
+        "view,method,preset,samples_per_pixel,gpu_ms,pixels,mae,rmse,bias,psnr,ssim,edge_pixels,edge_mae,edge_rmse,edge_bias,edge_psnr,edge_ssim,grazing_pixels,grazing_mae,grazing_rmse,grazing_bias,grazing_psnr,grazing_ssim,frames,mean_rmse,flicker,disoccluded_pixels,disoccluded_mae,disoccluded_rmse,disoccluded_bias,disoccluded_psnr,disoccluded_ssim"
     );
     assert_eq!(lines.len(), 5);
     assert!(
@@ -87,17 +89,17 @@ fn csv_has_header_and_one_row_per_result() {
     );
     assert!(
         lines[4].contains(",inf,")
-            && lines[4].ends_with(",0,NaN,NaN,NaN,NaN,NaN,0,NaN,NaN,NaN,NaN,NaN"),
+            && lines[4].ends_with(",0,NaN,NaN,NaN,NaN,NaN,0,NaN,NaN,NaN,NaN,NaN,,,,,,,,,"),
         "{}",
         lines[4]
     );
     for line in &lines[1..] {
-        // 23 fields once the quoted comma is accounted for.
+        // 32 fields once the quoted comma is accounted for.
         let fields = line
             .replace("\"stairs, \"\"top\"\"\"", "view")
             .split(',')
             .count();
-        assert_eq!(fields, 23, "{line}");
+        assert_eq!(fields, 32, "{line}");
     }
 }
 
@@ -185,5 +187,30 @@ fn markdown_by_method_has_a_row_per_preset_and_a_column_per_view() {
     assert!(
         md.contains("| medium | 16 | n/a | 0.0300 (-0.015) |"),
         "{md}"
+    );
+}
+
+#[test]
+fn sequence_scores_add_columns_only_where_there_are_sequences() {
+    let mut report = report();
+    assert!(!report.markdown().contains("Flicker"));
+    report.views[0].methods[0].sequence = Some(aokit_eval::SequenceMetrics {
+        frames: 8,
+        mean_rmse: 0.0612,
+        flicker: 0.0021,
+        disoccluded: metrics(0.2),
+    });
+    let md = report.markdown();
+    assert!(md.contains("| Flicker |"), "{md}");
+    assert!(md.contains("| 0.0612 | 0.0021 | 0.2000 |"), "{md}");
+    assert!(md.contains("| n/a | n/a | n/a |"), "{md}");
+    assert!(report.html().contains("<th>Flicker</th>"));
+    assert!(
+        report
+            .csv()
+            .lines()
+            .nth(1)
+            .unwrap()
+            .contains(",8,0.0612,0.0021,100,")
     );
 }

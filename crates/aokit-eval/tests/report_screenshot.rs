@@ -76,6 +76,7 @@ fn synthetic_report() -> Report {
                 all: compare(size, &ao, &reference, &surface),
                 edges: compare(size, &ao, &reference, &edges),
                 grazing: Metrics::EMPTY,
+                sequence: None,
                 gpu_ms: None,
                 samples_per_pixel: spp,
                 ao_png: encode_png_grey(size, &ao).unwrap(),

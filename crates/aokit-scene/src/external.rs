@@ -32,6 +32,8 @@ pub struct ExternalAo {
     normals: Option<wgpu::Texture>,
     projection: Projection,
     pipeline: AoPipeline,
+    /// Start the temporal history over at the next run.
+    reset_history: bool,
 }
 
 impl ExternalAo {
@@ -59,6 +61,7 @@ impl ExternalAo {
             normals: None,
             projection: passes.projection,
             pipeline: AoPipeline::new(device, queue, settings)?,
+            reset_history: false,
         };
         external.upload_normals(gpu, settings.normals.encoding)?;
         Ok(external)
@@ -88,7 +91,7 @@ impl ExternalAo {
         Ok(())
     }
 
-    /// Changes the settings for later runs.
+    /// Changes the settings for later runs; the next run starts the temporal history over.
     pub fn set_settings(
         &mut self,
         gpu: &GpuContext,
@@ -101,6 +104,8 @@ impl ExternalAo {
         if reencode {
             self.upload_normals(gpu, encoding)?;
         }
+        // Other settings make other AO: the temporal filter must not blend in the old runs.
+        self.reset_history = true;
         Ok(())
     }
 
@@ -125,6 +130,7 @@ impl ExternalAo {
             &AoInputs {
                 normals: self.normals.as_ref(),
                 frame_index,
+                reset_history: std::mem::take(&mut self.reset_history),
                 ..AoInputs::new(&self.depth, self.projection)
             },
         )?;

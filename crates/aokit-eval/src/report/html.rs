@@ -1,7 +1,7 @@
 //! `Report::html`: one offline page.
 
 use super::chart::scatter_svg;
-use super::text::{COLUMNS, fixed, html, row_cells, signed};
+use super::text::{columns, fixed, has_sequence, html, row_cells, signed};
 use super::{MethodResult, Report, ViewResult};
 use crate::base64;
 
@@ -61,13 +61,17 @@ fn table(methods: &[MethodResult]) -> String {
             .map(|t| format!("<{tag}>{}</{tag}>", html(t)))
             .collect()
     };
-    let headings: Vec<String> = COLUMNS.iter().map(|c| c.to_string()).collect();
+    let sequence = has_sequence(methods);
+    let headings: Vec<String> = columns(sequence).iter().map(|c| c.to_string()).collect();
     let mut out = format!(
         "<table>\n<thead><tr>{}</tr></thead>\n<tbody>\n",
         cells("th", &headings)
     );
     for m in methods {
-        out.push_str(&format!("<tr>{}</tr>\n", cells("td", &row_cells(m))));
+        out.push_str(&format!(
+            "<tr>{}</tr>\n",
+            cells("td", &row_cells(m, sequence))
+        ));
     }
     out.push_str("</tbody>\n</table>\n");
     out

@@ -1,7 +1,7 @@
 //! `Report::markdown`.
 
 use super::Report;
-use super::text::{COLUMNS, fixed, markdown_cell, row_cells, signed};
+use super::text::{columns, fixed, has_sequence, markdown_cell, row_cells, signed};
 
 pub(super) fn render(report: &Report) -> String {
     let mut out = format!("# {}\n\n", markdown_cell(&report.title));
@@ -23,11 +23,16 @@ pub(super) fn render(report: &Report) -> String {
     );
     for view in &report.views {
         out.push_str(&format!("\n## {}\n\n", markdown_cell(&view.name)));
-        out.push_str(&format!("| {} |\n|:--|:--|", COLUMNS.join(" | ")));
-        out.push_str(&"--:|".repeat(COLUMNS.len() - 2));
+        let sequence = has_sequence(&view.methods);
+        let headings = columns(sequence);
+        out.push_str(&format!("| {} |\n|:--|:--|", headings.join(" | ")));
+        out.push_str(&"--:|".repeat(headings.len() - 2));
         out.push('\n');
         for m in &view.methods {
-            let row: Vec<String> = row_cells(m).iter().map(|c| markdown_cell(c)).collect();
+            let row: Vec<String> = row_cells(m, sequence)
+                .iter()
+                .map(|c| markdown_cell(c))
+                .collect();
             out.push_str(&format!("| {} |\n", row.join(" | ")));
         }
     }

@@ -26,7 +26,7 @@ pub(super) fn gpu_ms(ms: Option<f64>) -> String {
 }
 
 /// Headings of the metrics table, which the Markdown and HTML tables share.
-pub(super) const COLUMNS: [&str; 13] = [
+const COLUMNS: [&str; 13] = [
     "Method",
     "Preset",
     "Samples/px",
@@ -42,9 +42,26 @@ pub(super) const COLUMNS: [&str; 13] = [
     "Grazing bias",
 ];
 
-/// One result as the cells of [`COLUMNS`], formatted but not escaped.
-pub(super) fn row_cells(m: &super::MethodResult) -> [String; 13] {
-    [
+/// Headings of the sequence columns, shown when a view has a result over a sequence.
+const SEQUENCE_COLUMNS: [&str; 3] = ["Mean RMSE over frames", "Flicker", "Disoccluded RMSE"];
+
+/// The table's headings: with the sequence columns when `sequence` is true.
+pub(super) fn columns(sequence: bool) -> Vec<&'static str> {
+    let mut all = COLUMNS.to_vec();
+    if sequence {
+        all.extend(SEQUENCE_COLUMNS);
+    }
+    all
+}
+
+/// Whether any of `methods` was scored over a sequence.
+pub(super) fn has_sequence(methods: &[super::MethodResult]) -> bool {
+    methods.iter().any(|m| m.sequence.is_some())
+}
+
+/// One result as the cells of [`columns`], formatted but not escaped.
+pub(super) fn row_cells(m: &super::MethodResult, sequence: bool) -> Vec<String> {
+    let mut cells = vec![
         m.method.clone(),
         m.preset.clone(),
         m.samples_per_pixel.to_string(),
@@ -58,7 +75,18 @@ pub(super) fn row_cells(m: &super::MethodResult) -> [String; 13] {
         fixed(m.edges.rmse, 4),
         fixed(m.edges.ssim, 4),
         signed(m.grazing.bias, 4),
-    ]
+    ];
+    if sequence {
+        cells.extend(match &m.sequence {
+            Some(s) => [
+                fixed(s.mean_rmse, 4),
+                fixed(s.flicker, 4),
+                fixed(s.disoccluded.rmse, 4),
+            ],
+            None => ["n/a".to_string(), "n/a".to_string(), "n/a".to_string()],
+        });
+    }
+    cells
 }
 
 /// Text safe inside HTML elements and quoted attributes.
