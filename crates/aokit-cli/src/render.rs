@@ -57,6 +57,11 @@ pub struct RenderArgs {
     /// (30% of the way in) or strafe (sideways by 40% of the distance).
     #[arg(long, value_name = "PATH", default_value = "still")]
     pub path: CameraPath,
+    /// Move the scene's moving parts over the frames, from rest at the first frame to the end
+    /// of their motion at the last (room: the sphere rolls; stairs: a block slides; thin: a
+    /// panel swings).
+    #[arg(long)]
+    pub animate: bool,
 }
 
 fn parse_specular_occlusion(s: &str) -> Result<SpecularOcclusion, String> {
@@ -146,6 +151,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             settings.method.name()
         );
     }
+    if args.animate && scene.moving_parts.is_empty() {
+        eprintln!(
+            "note: `{}` has no moving parts: --animate changes nothing",
+            scene.name
+        );
+    }
     let out = &args.out;
     create_dir(out)?;
     let mut previews = (Vec::new(), Vec::new());
@@ -156,7 +167,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         } else {
             0.0
         };
-        let frame = renderer.render(&gpu, &args.path.at(&camera, t), args.size, i)?;
+        let time = if args.animate { t } else { 0.0 };
+        let frame = renderer.render_at(&gpu, &args.path.at(&camera, t), args.size, i, time)?;
         if frame.ao.iter().any(|v| !v.is_finite()) {
             bail!(
                 "the AO pass produced non-finite values: please report this with the command line"

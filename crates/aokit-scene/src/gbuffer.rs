@@ -1,14 +1,15 @@
 //! The G-buffer raster pass: depth (D32F), view-space normals in any
-//! [`NormalEncoding`] and albedo. No MSAA.
+//! [`NormalEncoding`], albedo and motion vectors. No MSAA.
 
 use std::collections::HashMap;
 
 use aokit::gpu::create_texture_2d;
 use aokit::{GpuContext, NormalEncoding, Projection};
 use bytemuck::{Pod, Zeroable};
-use glam::Mat4;
+use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
+use crate::animation::{Motion, MovingPart};
 use crate::mesh::Mesh;
 use crate::shaders;
 use crate::uniform_block::UniformBlock;
@@ -17,6 +18,10 @@ use crate::uniform_block::UniformBlock;
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// Albedo, stored sRGB so 8 bits keep dark tones.
 pub const ALBEDO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+/// Motion vectors, in the convention of [`AoInputs::motion_vectors`](aokit::AoInputs): half
+/// floats round an offset by at most 1/2048 of its length, under 0.05 pixels for the 100 a fast
+/// camera moves in a frame.
+pub const MOTION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -24,6 +29,20 @@ struct GpuVertex {
     position: [f32; 3],
     normal: [f32; 3],
     albedo: [f32; 3],
+    /// Where this point of the surface was in the previous frame, for motion vectors.
+    previous_position: [f32; 3],
+}
+
+impl GpuVertex {
+    /// Vertex `i` of `mesh`, standing still.
+    fn of(mesh: &Mesh, i: usize) -> Self {
+        Self {
+            position: mesh.positions[i].to_array(),
+            normal: mesh.normals[i].to_array(),
+            albedo: mesh.albedo[i].to_array(),
+            previous_position: mesh.positions[i].to_array(),
+        }
+    }
 }
 
 /// Mirrors `GBufferUniforms` in `shaders/gbuffer.wgsl`.
@@ -32,22 +51,35 @@ struct GpuVertex {
 struct GBufferUniforms {
     clip_from_world: [[f32; 4]; 4],
     view_from_world: [[f32; 4]; 4],
+    previous_clip_from_world: [[f32; 4]; 4],
+    size: [f32; 2],
     orthographic: f32,
-    _pad: [f32; 3],
+    _pad: f32,
 }
 
-/// A mesh uploaded to the GPU.
+/// A moving part's vertices at rest, kept to place them again each frame.
+struct RestPart {
+    first_vertex: u32,
+    motion: Motion,
+    vertices: Vec<GpuVertex>,
+}
+
+/// A mesh uploaded to the GPU, with its moving parts placed at some time of a sequence.
 pub struct GpuMesh {
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
     index_count: u32,
+    parts: Vec<RestPart>,
+    /// The times the moving parts are placed at: (this frame, previous frame).
+    placed: (f32, f32),
 }
 
 impl GpuMesh {
-    /// Vertex layout of all attributes: position, normal, albedo.
+    /// Vertex layout of all attributes: position, normal, albedo, previous position.
     fn layout() -> wgpu::VertexBufferLayout<'static> {
-        const ATTRIBUTES: [wgpu::VertexAttribute; 3] =
-            wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3];
+        const ATTRIBUTES: [wgpu::VertexAttribute; 4] = wgpu::vertex_attr_array![
+            0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32x3
+        ];
         wgpu::VertexBufferLayout {
             array_stride: std::mem::size_of::<GpuVertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,
@@ -70,19 +102,24 @@ impl GpuMesh {
         pass.draw_indexed(0..self.index_count, 0, 0..1);
     }
 
-    /// Uploads `mesh`.
-    pub fn new(device: &wgpu::Device, mesh: &Mesh) -> Self {
+    /// Uploads `mesh` with `moving_parts` (ranges of its vertices) at rest, at time 0.
+    pub fn new(device: &wgpu::Device, mesh: &Mesh, moving_parts: &[MovingPart]) -> Self {
         let vertices: Vec<GpuVertex> = (0..mesh.positions.len())
-            .map(|i| GpuVertex {
-                position: mesh.positions[i].to_array(),
-                normal: mesh.normals[i].to_array(),
-                albedo: mesh.albedo[i].to_array(),
+            .map(|i| GpuVertex::of(mesh, i))
+            .collect();
+        let parts = moving_parts
+            .iter()
+            .map(|part| RestPart {
+                first_vertex: part.vertices.start,
+                motion: part.motion,
+                vertices: vertices[part.vertices.start as usize..part.vertices.end as usize]
+                    .to_vec(),
             })
             .collect();
         let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("scene vertices"),
             contents: bytemuck::cast_slice(&vertices),
-            usage: wgpu::BufferUsages::VERTEX,
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
         });
         let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("scene indices"),
@@ -93,7 +130,41 @@ impl GpuMesh {
             vertices,
             indices,
             index_count: mesh.indices.len() as u32,
+            parts,
+            placed: (0.0, 0.0),
         }
+    }
+
+    /// Places the moving parts where they are at `time`, remembering where they were at
+    /// `previous_time` for the motion vectors, as [`Scene::mesh_at`](crate::Scene::mesh_at)
+    /// places them. Takes effect for passes submitted afterwards.
+    pub fn place(&mut self, queue: &wgpu::Queue, time: f32, previous_time: f32) {
+        if self.placed == (time, previous_time) {
+            return;
+        }
+        for part in &self.parts {
+            let (now, before) = (
+                part.motion.transform_at(time),
+                part.motion.transform_at(previous_time),
+            );
+            let placed: Vec<GpuVertex> = part
+                .vertices
+                .iter()
+                .map(|v| {
+                    let position = Vec3::from_array(v.position);
+                    GpuVertex {
+                        position: now.transform_point3(position).to_array(),
+                        // Rigid motions turn normals as they turn directions.
+                        normal: now.transform_vector3(Vec3::from_array(v.normal)).to_array(),
+                        albedo: v.albedo,
+                        previous_position: before.transform_point3(position).to_array(),
+                    }
+                })
+                .collect();
+            let offset = u64::from(part.first_vertex) * std::mem::size_of::<GpuVertex>() as u64;
+            queue.write_buffer(&self.vertices, offset, bytemuck::cast_slice(&placed));
+        }
+        self.placed = (time, previous_time);
     }
 }
 
@@ -109,6 +180,10 @@ pub struct GBuffer {
     pub encoding: NormalEncoding,
     /// Albedo.
     pub albedo: wgpu::Texture,
+    /// Motion vectors ([`MOTION_FORMAT`]): the offset in pixels from each pixel to where its
+    /// surface was in the previous frame, moved by the camera and by its part's motion; 0
+    /// where nothing was drawn.
+    pub motion: wgpu::Texture,
 }
 
 impl GBuffer {
@@ -124,8 +199,21 @@ impl GBuffer {
             normals: make("gbuffer normals", encoding.texture_format()),
             encoding,
             albedo: make("gbuffer albedo", ALBEDO_FORMAT),
+            motion: make("gbuffer motion", MOTION_FORMAT),
         }
     }
+}
+
+/// The camera a G-buffer is drawn with, and the one of the frame before.
+#[derive(Clone, Copy, Debug)]
+pub struct GBufferCamera<'a> {
+    /// World to view space this frame.
+    pub view_from_world: Mat4,
+    /// The projection this frame.
+    pub projection: &'a Projection,
+    /// World to clip space of the previous frame: projection times view. This frame's own
+    /// for the first frame of a sequence, which then has no motion.
+    pub previous_clip_from_world: Mat4,
 }
 
 /// Rasterises a [`GpuMesh`] into a [`GBuffer`].
@@ -195,6 +283,7 @@ impl GBufferPass {
                         targets: &[
                             Some(encoding.texture_format().into()),
                             Some(ALBEDO_FORMAT.into()),
+                            Some(MOTION_FORMAT.into()),
                         ],
                     }),
                     multiview_mask: None,
@@ -208,31 +297,35 @@ impl GBufferPass {
         })
     }
 
-    /// Records the raster of `mesh` seen through `view_from_world` and `projection`.
+    /// Records the raster of `mesh` seen by `camera`.
     pub fn encode(
         &mut self,
         gpu: &GpuContext,
         encoder: &mut wgpu::CommandEncoder,
         mesh: &GpuMesh,
-        view_from_world: Mat4,
-        projection: &Projection,
+        camera: &GBufferCamera<'_>,
         target: &GBuffer,
     ) {
+        let projection = camera.projection;
         let uniforms = GBufferUniforms {
-            clip_from_world: (projection.clip_from_view() * view_from_world).to_cols_array_2d(),
-            view_from_world: view_from_world.to_cols_array_2d(),
+            clip_from_world: (projection.clip_from_view() * camera.view_from_world)
+                .to_cols_array_2d(),
+            view_from_world: camera.view_from_world.to_cols_array_2d(),
+            previous_clip_from_world: camera.previous_clip_from_world.to_cols_array_2d(),
+            size: target.size.map(|side| side as f32),
             orthographic: if projection.is_orthographic() {
                 1.0
             } else {
                 0.0
             },
-            _pad: [0.0; 3],
+            _pad: 0.0,
         };
         self.uniforms.write(&gpu.queue, &uniforms);
         let pipeline =
             self.pipelines(&gpu.device, target.encoding)[usize::from(projection.reverse_z)].clone();
         let normals = target.normals.create_view(&Default::default());
         let albedo = target.albedo.create_view(&Default::default());
+        let motion = target.motion.create_view(&Default::default());
         let depth = target.depth.create_view(&Default::default());
         let color = |view| {
             Some(wgpu::RenderPassColorAttachment {
@@ -247,7 +340,7 @@ impl GBufferPass {
         };
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("gbuffer"),
-            color_attachments: &[color(&normals), color(&albedo)],
+            color_attachments: &[color(&normals), color(&albedo), color(&motion)],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &depth,
                 depth_ops: Some(wgpu::Operations {
@@ -275,6 +368,8 @@ mod tests {
         let fields = aokit::field_offsets!(GBufferUniforms {
             clip_from_world,
             view_from_world,
+            previous_clip_from_world,
+            size,
             orthographic,
         });
         aokit::shader::check_layout(

@@ -1,7 +1,8 @@
 //! # aokit-scene
 //!
-//! The headless scene renderer behind the `aokit` CLI: built-in procedural scenes, glTF and OBJ
-//! loading, cameras, a G-buffer raster pass and a lit composite around [`aokit::AoPipeline`].
+//! The headless scene renderer behind the `aokit` CLI: built-in procedural scenes (some with
+//! moving parts), glTF and OBJ loading, cameras and camera paths, a G-buffer raster pass with
+//! motion vectors and a lit composite around [`aokit::AoPipeline`].
 //!
 //! ```no_run
 //! use aokit_scene::{Renderer, Scene};
@@ -16,6 +17,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod animation;
 pub mod builtin;
 pub mod camera;
 pub mod composite;
@@ -32,6 +34,7 @@ pub mod shadow;
 pub mod shapes;
 mod uniform_block;
 
+pub use animation::{Motion, MovingPart};
 pub use builtin::Builtin;
 pub use camera::{Camera, CameraFile, Lens};
 pub use path::CameraPath;

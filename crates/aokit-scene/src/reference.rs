@@ -6,9 +6,17 @@ use aokit_reference::{Lens as RayLens, PixelCamera, ReferenceError, Tracer};
 use crate::camera::Camera;
 use crate::scene::Scene;
 
-/// A tracer over the scene's triangles.
+/// A tracer over the scene's triangles, its moving parts at rest.
 pub fn tracer(scene: &Scene) -> Result<Tracer, ReferenceError> {
-    Tracer::new(&scene.mesh.positions, &scene.mesh.indices)
+    tracer_at(scene, 0.0)
+}
+
+/// A tracer over the scene's triangles at `time` of a sequence
+/// ([`Scene::mesh_at`]), as [`Renderer::render_at`](crate::Renderer::render_at) draws them.
+/// It builds a BVH each call: for a per-frame reference of a moving scene.
+pub fn tracer_at(scene: &Scene, time: f32) -> Result<Tracer, ReferenceError> {
+    let mesh = scene.mesh_at(time);
+    Tracer::new(&mesh.positions, &mesh.indices)
 }
 
 /// The pixel grid `camera` gets at `size`, with exactly the projection and clipping planes the

@@ -1,14 +1,16 @@
 //! Renders a scene through the AO pipeline and reads the results back.
 
-use aokit::gpu::{create_texture_2d, read_texture, read_texture_f32, read_texture_rgba16f};
+use aokit::gpu::{
+    create_texture_2d, read_texture, read_texture_f32, read_texture_rg16f, read_texture_rgba16f,
+};
 use aokit::{
     AoError, AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, PassTime, Projection,
 };
-use glam::{Mat4, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
 use crate::camera::Camera;
 use crate::composite::{CompositePass, CompositeView, LIT_FORMAT, Lighting, SpecularOcclusion};
-use crate::gbuffer::{GBuffer, GBufferPass, GpuMesh};
+use crate::gbuffer::{GBuffer, GBufferCamera, GBufferPass, GpuMesh};
 use crate::scene::Scene;
 use crate::shadow::{ShadowPass, SunView};
 
@@ -38,6 +40,10 @@ pub struct Frame {
     /// View-space bent normals, when the settings given to the [`Renderer`] ask for them (not
     /// when only the composite's GTSO turned them on).
     pub bent_normals: Option<Vec<Vec3>>,
+    /// The G-buffer's motion vectors: the offset in pixels (y down) from each pixel's centre to
+    /// where its surface was in the previous frame of the sequence; 0 where nothing was drawn
+    /// and in a sequence's first frame.
+    pub motion_vectors: Vec<Vec2>,
 }
 
 /// Why a frame could not be rendered.
@@ -78,8 +84,15 @@ pub struct Renderer {
     /// Lighting of the lit composite. [`SpecularOcclusion::Gtso`] makes the next frames compute
     /// bent normals when the method can (see [`Renderer::pipeline_settings`]).
     pub lighting: Lighting,
+    /// Hand the G-buffer's motion vectors to the temporal filter (the default). Off, it
+    /// reprojects by depth and the camera alone, which does not follow moving parts; for
+    /// comparisons (docs/denoise.md measures both).
+    pub use_motion_vectors: bool,
     /// Start the temporal history over at the next frame.
     reset_history: bool,
+    /// Camera (clip from world) and scene time of the last frame, for motion vectors; `None`
+    /// before the first frame of a sequence.
+    previous: Option<(Mat4, f32)>,
 }
 
 impl Renderer {
@@ -91,7 +104,7 @@ impl Renderer {
     ) -> Result<Self, RenderError> {
         let lighting = Lighting::default();
         Ok(Self {
-            mesh: GpuMesh::new(&gpu.device, &scene.mesh),
+            mesh: GpuMesh::new(&gpu.device, &scene.mesh, &scene.moving_parts),
             bounds: scene.bounds,
             gbuffer_pass: GBufferPass::new(&gpu.device),
             shadow_pass: ShadowPass::new(&gpu.device),
@@ -103,13 +116,16 @@ impl Renderer {
             )?,
             settings: *settings,
             lighting,
+            use_motion_vectors: true,
             reset_history: false,
+            previous: None,
         })
     }
 
-    /// Makes the next frame start the temporal filter's history over, as after a camera cut.
-    /// Frames rendered one after the other are otherwise taken as a sequence: each reprojects
-    /// the previous one.
+    /// Makes the next frame start a new sequence, as after a camera cut: the temporal filter's
+    /// history starts over and the frame has no motion. Frames rendered one after the other are
+    /// otherwise taken as a sequence: each reprojects the previous one, and its motion vectors
+    /// lead there.
     pub fn reset_history(&mut self) {
         self.reset_history = true;
     }
@@ -158,13 +174,29 @@ impl Renderer {
         camera.projection(size[0] as f32 / size[1] as f32, &self.bounds)
     }
 
-    /// Renders G-buffer, AO and lit image for `camera` at `size` and reads them back.
+    /// Renders G-buffer, AO and lit image for `camera` at `size` with the scene at rest, and
+    /// reads them back: [`Renderer::render_at`] at time 0.
     pub fn render(
         &mut self,
         gpu: &GpuContext,
         camera: &Camera,
         size: [u32; 2],
         frame_index: u32,
+    ) -> Result<Frame, RenderError> {
+        self.render_at(gpu, camera, size, frame_index, 0.0)
+    }
+
+    /// Renders G-buffer, AO and lit image for `camera` at `size` with the scene's moving parts
+    /// where they are at `time` (0 to 1 over a sequence, see
+    /// [`Scene::mesh_at`](crate::Scene::mesh_at)), and reads them back. The motion vectors
+    /// lead to the previous frame's camera and time.
+    pub fn render_at(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        size: [u32; 2],
+        frame_index: u32,
+        time: f32,
     ) -> Result<Frame, RenderError> {
         let max = gpu.device.limits().max_texture_dimension_2d;
         let [width, height] = size;
@@ -188,6 +220,14 @@ impl Renderer {
             self.ao.set_settings(device, queue, &wanted)?;
         }
 
+        let reset_history = std::mem::take(&mut self.reset_history);
+        let clip_from_world = projection.clip_from_view() * view_from_world;
+        let (previous_clip_from_world, previous_time) = self
+            .previous
+            .filter(|_| !reset_history)
+            .unwrap_or((clip_from_world, time));
+        self.mesh.place(queue, time, previous_time);
+
         let gbuffer = GBuffer::new(device, size, self.settings.normals.encoding);
         let lit = create_texture_2d(
             device,
@@ -201,8 +241,11 @@ impl Renderer {
             gpu,
             &mut encoder,
             &self.mesh,
-            view_from_world,
-            &projection,
+            &GBufferCamera {
+                view_from_world,
+                projection: &projection,
+                previous_clip_from_world,
+            },
             &gbuffer,
         );
         let outputs = self.ao.encode(
@@ -213,7 +256,8 @@ impl Renderer {
                 normals: Some(&gbuffer.normals),
                 view_from_world,
                 frame_index,
-                reset_history: std::mem::take(&mut self.reset_history),
+                motion_vectors: self.use_motion_vectors.then_some(&gbuffer.motion),
+                reset_history,
                 ..AoInputs::new(&gbuffer.depth, projection)
             },
         )?;
@@ -236,6 +280,7 @@ impl Renderer {
             &lit,
         );
         queue.submit([encoder.finish()]);
+        self.previous = Some((clip_from_world, time));
 
         let ao = read_texture_f32(device, queue, outputs.ao)?;
         let history_rejected = outputs
@@ -250,6 +295,10 @@ impl Renderer {
             .map(|texels| texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect());
         let linear_depth = read_texture_f32(device, queue, outputs.linear_depth)?;
         let lit = read_texture(device, queue, &lit)?;
+        let motion_vectors = read_texture_rg16f(device, queue, &gbuffer.motion)?
+            .into_iter()
+            .map(Vec2::from_array)
+            .collect();
         let packed: Vec<u32> =
             bytemuck::pod_collect_to_vec(&read_texture(device, queue, outputs.normals)?);
         let normals = packed
@@ -273,6 +322,7 @@ impl Renderer {
             normals,
             history_rejected,
             bent_normals,
+            motion_vectors,
         })
     }
 }

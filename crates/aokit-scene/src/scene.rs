@@ -1,7 +1,10 @@
-//! A scene: one world-space mesh, its cameras and a suggested AO radius.
+//! A scene: one world-space mesh, the parts of it that move, its cameras and a suggested AO
+//! radius.
 
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
+use crate::animation::MovingPart;
 use crate::builtin::Builtin;
 use crate::camera::Camera;
 use crate::load;
@@ -12,13 +15,17 @@ use crate::mesh::{Bounds, Mesh};
 pub struct Scene {
     /// Built-in name or file stem.
     pub name: String,
-    /// All geometry, flattened to world space.
+    /// All geometry, flattened to world space, with the moving parts at rest (time 0).
     pub mesh: Mesh,
+    /// Parts of [`Scene::mesh`] that move over a sequence ([`Scene::mesh_at`]): some built-ins
+    /// have them, files have none.
+    pub moving_parts: Vec<MovingPart>,
     /// Cameras from the file or the built-in, in order.
     pub cameras: Vec<Camera>,
     /// A radius in scene units that suits the scene's scale, if the scene names one.
     pub suggested_radius: Option<f32>,
-    /// Bounds of the mesh.
+    /// Bounds of the mesh at rest. The built-ins' moving parts stay inside them (their tests
+    /// check it), so the clipping planes and the sun's shadow map fit every frame.
     pub bounds: Bounds,
     /// Things the loader skipped or assumed, for the user to read.
     pub notes: Vec<String>,
@@ -75,11 +82,40 @@ impl Scene {
         Self {
             name: name.to_string(),
             mesh,
+            moving_parts: Vec::new(),
             cameras,
             suggested_radius,
             bounds,
             notes: Vec::new(),
         }
+    }
+
+    /// The geometry at time `t` of a sequence, 0 (first frame, the parts at rest) to 1 (last
+    /// frame): [`Scene::mesh`] with each moving part placed by its motion. The renderer places
+    /// the parts with the same arithmetic, so the reference tracer sees the raster's triangles.
+    ///
+    /// ```
+    /// let room = aokit_scene::Scene::open("room").unwrap();
+    /// assert_eq!(room.mesh_at(0.0).positions, room.mesh.positions);
+    /// assert_ne!(room.mesh_at(1.0).positions, room.mesh.positions);
+    /// ```
+    pub fn mesh_at(&self, t: f32) -> Cow<'_, Mesh> {
+        if self.moving_parts.is_empty() {
+            return Cow::Borrowed(&self.mesh);
+        }
+        let mut mesh = self.mesh.clone();
+        for part in &self.moving_parts {
+            let transform = part.motion.transform_at(t);
+            let range = part.vertices.start as usize..part.vertices.end as usize;
+            for p in &mut mesh.positions[range.clone()] {
+                *p = transform.transform_point3(*p);
+            }
+            // Rigid motions turn normals as they turn directions.
+            for n in &mut mesh.normals[range] {
+                *n = transform.transform_vector3(*n);
+            }
+        }
+        Cow::Owned(mesh)
     }
 
     /// Opens a built-in by name (`room`, `stairs`, `thin`, `open`) or a `.gltf`, `.glb` or

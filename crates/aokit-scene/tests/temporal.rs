@@ -2,7 +2,7 @@
 
 use aokit::gpu::{read_texture_f32, upload_texture_2d};
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset};
-use aokit_reference::AoOptions;
+use aokit_reference::{AoOptions, ReferenceImage};
 use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene, reference};
 
 const SIZE: [u32; 2] = [160, 96];
@@ -20,7 +20,7 @@ fn settings(scene: &Scene, temporal: bool) -> AoSettings {
     s
 }
 
-/// `frames` frames of `camera` moving along `path`.
+/// `frames` frames of the scene's first camera moving along `path`.
 fn sequence(
     gpu: &GpuContext,
     scene: &Scene,
@@ -28,12 +28,28 @@ fn sequence(
     frames: u32,
     temporal: bool,
 ) -> Vec<Frame> {
-    let camera = &scene.cameras[0];
     let mut renderer = Renderer::new(gpu, scene, &settings(scene, temporal)).unwrap();
+    render_sequence(gpu, &mut renderer, scene, path, frames, false)
+}
+
+/// `frames` frames through `renderer` of the scene's first camera moving along `path`, and of
+/// its moving parts moving when `animate`.
+fn render_sequence(
+    gpu: &GpuContext,
+    renderer: &mut Renderer,
+    scene: &Scene,
+    path: CameraPath,
+    frames: u32,
+    animate: bool,
+) -> Vec<Frame> {
+    let camera = &scene.cameras[0];
     (0..frames)
         .map(|i| {
             let t = i as f32 / (frames - 1) as f32;
-            renderer.render(gpu, &path.at(camera, t), SIZE, i).unwrap()
+            let time = if animate { t } else { 0.0 };
+            renderer
+                .render_at(gpu, &path.at(camera, t), SIZE, i, time)
+                .unwrap()
         })
         .collect()
 }
@@ -67,28 +83,28 @@ fn a_still_camera_flickers_at_least_five_times_less() {
     );
 }
 
-/// RMSE of `frame` against a ray-traced reference of `camera`.
-fn rmse(scene: &Scene, camera: &Camera, frame: &Frame) -> f64 {
+/// A ray-traced reference of `camera`'s view of the scene at `time`.
+fn trace(scene: &Scene, camera: &Camera, time: f32) -> ReferenceImage {
     let options = AoOptions {
         radius: scene.suggested_radius.unwrap(),
         spp: 128,
         ..Default::default()
     };
-    let traced = reference::tracer(scene)
+    reference::tracer_at(scene, time)
         .unwrap()
         .render(
             &reference::pixel_camera(scene, camera, SIZE),
             &options,
             &|_| {},
         )
-        .unwrap();
-    let errors: Vec<f64> = frame
-        .ao
-        .iter()
-        .zip(&traced.ao)
-        .zip(&traced.linear_depth)
-        .filter(|(_, d)| **d > 0.0)
-        .map(|((a, r), _)| f64::from(a - r).powi(2))
+        .unwrap()
+}
+
+/// RMSE of `frame` against `traced` over the pixels with a surface that `keep` keeps.
+fn rmse(frame: &Frame, traced: &ReferenceImage, keep: impl Fn(usize) -> bool) -> f64 {
+    let errors: Vec<f64> = (0..frame.ao.len())
+        .filter(|&i| traced.linear_depth[i] > 0.0 && keep(i))
+        .map(|i| f64::from(frame.ao[i] - traced.ao[i]).powi(2))
         .collect();
     (errors.iter().sum::<f64>() / errors.len() as f64).sqrt()
 }
@@ -100,15 +116,130 @@ fn a_moving_camera_stays_closer_to_the_reference_than_single_frames() {
     for path in [CameraPath::Orbit, CameraPath::Strafe, CameraPath::Dolly] {
         let raw = sequence(&gpu, &scene, path, 10, false);
         let filtered = sequence(&gpu, &scene, path, 10, true);
-        let last = path.at(&scene.cameras[0], 1.0);
+        let traced = trace(&scene, &path.at(&scene.cameras[0], 1.0), 0.0);
         let (raw, filtered) = (
-            rmse(&scene, &last, &raw[9]),
-            rmse(&scene, &last, &filtered[9]),
+            rmse(&raw[9], &traced, |_| true),
+            rmse(&filtered[9], &traced, |_| true),
         );
         // Trailing history would put yesterday's shadows in today's pixels and raise the error.
         assert!(
             filtered < raw,
             "{}: RMSE {filtered} filtered, {raw} raw",
+            path.name()
+        );
+    }
+}
+
+/// Pixels near where the picture's geometry changed over the last `frames` frames of
+/// `sequence`: a relative depth change beyond 1%, grown by `grow` pixels to take in the AO the
+/// change casts around it. Where a moving part would leave a trail.
+fn changed_region(sequence: &[Frame], frames: usize, grow: i32) -> Vec<bool> {
+    let (last, earlier) = (
+        &sequence[sequence.len() - 1],
+        &sequence[sequence.len() - 1 - frames],
+    );
+    let [w, h] = SIZE.map(|side| side as i32);
+    let changed: Vec<bool> = last
+        .linear_depth
+        .iter()
+        .zip(&earlier.linear_depth)
+        .map(|(&a, &b)| (a - b).abs() > 0.01 * a.max(b))
+        .collect();
+    (0..w * h)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            (-grow..=grow).any(|dy| {
+                (-grow..=grow).any(|dx| {
+                    let (u, v) = (x + dx, y + dy);
+                    (0..w).contains(&u) && (0..h).contains(&v) && changed[(v * w + u) as usize]
+                })
+            })
+        })
+        .collect()
+}
+
+#[test]
+fn moving_parts_leave_no_trail() {
+    let gpu = gpu();
+    for builtin in [Builtin::Room, Builtin::Stairs, Builtin::Thin] {
+        let scene = builtin.build();
+        let run = |temporal: bool, motion_vectors: bool| {
+            let mut renderer = Renderer::new(&gpu, &scene, &settings(&scene, temporal)).unwrap();
+            renderer.use_motion_vectors = motion_vectors;
+            render_sequence(&gpu, &mut renderer, &scene, CameraPath::Still, 10, true)
+        };
+        let (raw, filtered, camera_only) = (run(false, true), run(true, true), run(true, false));
+        let traced = trace(&scene, &scene.cameras[0], 1.0);
+        // The camera stands still, so the pixels with motion show the moving part. Around it,
+        // over the history's length of about 1 / (1 - blend) = 5 frames, lies where a trail
+        // would be.
+        let part: Vec<bool> = filtered[9]
+            .motion_vectors
+            .iter()
+            .map(|m| m.length() > 0.1)
+            .collect();
+        let region = changed_region(&filtered, 5, 4);
+        let trail: Vec<bool> = region.iter().zip(&part).map(|(&r, &p)| r && !p).collect();
+        let masks = [vec![true; part.len()], trail, part];
+        let score = |frames: &[Frame]| {
+            masks
+                .each_ref()
+                .map(|m| rmse(&frames[9], &traced, |i| m[i]))
+        };
+        let (raw, filtered, camera_only) = (score(&raw), score(&filtered), score(&camera_only));
+        let share = |mask: &[bool]| mask.iter().filter(|&&m| m).count() as f64 / mask.len() as f64;
+        eprintln!(
+            "{}: RMSE of the last frame, all pixels / around the moving part ({:.1}%) / on it \
+             ({:.1}%): single frames {:.4} / {:.4} / {:.4}, filtered {:.4} / {:.4} / {:.4}, \
+             filtered without motion vectors {:.4} / {:.4} / {:.4}",
+            scene.name,
+            100.0 * share(&masks[1]),
+            100.0 * share(&masks[2]),
+            raw[0],
+            raw[1],
+            raw[2],
+            filtered[0],
+            filtered[1],
+            filtered[2],
+            camera_only[0],
+            camera_only[1],
+            camera_only[2],
+        );
+        assert!(share(&masks[2]) > 0.01, "{}: nothing moved", scene.name);
+        assert!(
+            filtered[0] < raw[0] && filtered[1] <= raw[1],
+            "{}: {filtered:?} filtered, {raw:?} single frames",
+            scene.name
+        );
+    }
+}
+
+#[test]
+fn motion_vectors_of_a_still_scene_change_nothing() {
+    let gpu = gpu();
+    let scene = Builtin::Stairs.build();
+    for path in [CameraPath::Strafe, CameraPath::Orbit] {
+        let run = |motion_vectors: bool| {
+            let mut renderer = Renderer::new(&gpu, &scene, &settings(&scene, true)).unwrap();
+            renderer.use_motion_vectors = motion_vectors;
+            render_sequence(&gpu, &mut renderer, &scene, path, 10, false)
+        };
+        let (with, without) = (run(true), run(false));
+        let differences: Vec<f32> = with[9]
+            .ao
+            .iter()
+            .zip(&without[9].ao)
+            .map(|(a, b)| (a - b).abs())
+            .collect();
+        let mean = differences.iter().sum::<f32>() / differences.len() as f32;
+        let largest = differences.iter().copied().fold(0.0, f32::max);
+        eprintln!(
+            "{}: AO with and without motion vectors differ by {mean:.2e} on average, {largest:.4} at most",
+            path.name()
+        );
+        assert!(
+            mean < 1e-3 && largest < 0.05,
+            "{}: {mean} {largest}",
             path.name()
         );
     }

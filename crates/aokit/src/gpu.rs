@@ -378,17 +378,36 @@ pub fn read_texture_rgba16f(
     queue: &wgpu::Queue,
     texture: &wgpu::Texture,
 ) -> Result<Vec<[f32; 4]>, GpuError> {
-    if texture.format() != wgpu::TextureFormat::Rgba16Float {
+    read_half_texels(device, queue, texture, wgpu::TextureFormat::Rgba16Float)
+}
+
+/// Reads back an `Rg16Float` texture (motion vectors) as `f32` texels.
+pub fn read_texture_rg16f(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+) -> Result<Vec<[f32; 2]>, GpuError> {
+    read_half_texels(device, queue, texture, wgpu::TextureFormat::Rg16Float)
+}
+
+/// Reads back a texture of `N` half floats per texel, which must be in `format`.
+fn read_half_texels<const N: usize>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+    format: wgpu::TextureFormat,
+) -> Result<Vec<[f32; N]>, GpuError> {
+    if texture.format() != format {
         return Err(GpuError::Readback(format!(
-            "expected an Rgba16Float texture, got {:?}",
+            "expected an {format:?} texture, got {:?}",
             texture.format()
         )));
     }
     let bytes = read_texture(device, queue, texture)?;
     let halves: Vec<u16> = bytemuck::pod_collect_to_vec(&bytes);
     Ok(halves
-        .chunks_exact(4)
-        .map(|t| [0, 1, 2, 3].map(|i| f16_to_f32(t[i])))
+        .chunks_exact(N)
+        .map(|t| std::array::from_fn(|i| f16_to_f32(t[i])))
         .collect())
 }
 
