@@ -118,7 +118,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     } else {
         let scale = mix(expected, 1.0, temporal.prev_orthographic);
         let ndc = previous.xy / (temporal.prev_ndc_to_view * scale);
-        q = vec2<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * view.size;
+        q = uv_to_pixel(vec2<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5));
     }
     let on_screen = all(q >= vec2<f32>(0.0)) && all(q < view.size) && expected > 0.0;
     let history = select(vec2<f32>(0.0), history_at(q, expected), on_screen);

@@ -30,8 +30,9 @@ pub use inputs::{AoInputs, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
-    AoSettings, DepthWeight, GtaoSettings, HbaoSettings, Method, NoiseKind, NoiseSettings,
-    NormalEncoding, NormalSource, NormalsSettings, Preset, SettingsError, SpatialSettings,
-    SsaoSettings, TemporalOffset, TemporalSettings, VbaoSettings,
+    AoSettings, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings, Method,
+    NoiseKind, NoiseSettings, NormalEncoding, NormalSource, NormalsSettings, Preset, Resolution,
+    SettingsError, SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings, Upsample,
+    VbaoSettings,
 };
 pub use timing::PassTime;

@@ -10,102 +10,214 @@ use crate::passes::decode_normals::DecodeNormalsPass;
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
+use crate::passes::resample::{DownsampleTargets, ResamplePass, WORKING_MOTION_FORMAT};
 use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
 use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
-use crate::settings::{AoSettings, NormalEncoding, NormalSource};
+use crate::settings::{AoSettings, FilterResolution, NormalEncoding, NormalSource};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
 
-/// Textures sized to the current resolution.
-struct Targets {
+/// A texture and the view the passes bind.
+type Target = (wgpu::Texture, wgpu::TextureView);
+
+/// What the intermediate textures are made for; any change remakes them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Layout {
+    /// The input's size.
     size: [u32; 2],
-    linear_depth: wgpu::Texture,
-    linear_depth_view: wgpu::TextureView,
-    ao: wgpu::Texture,
-    ao_view: wgpu::TextureView,
-    /// oct32 normals decoded from the input or reconstructed from depth.
-    normals: wgpu::Texture,
-    normals_view: wgpu::TextureView,
-    bent_normals: Option<(wgpu::Texture, wgpu::TextureView)>,
+    /// The kernel's size: `size` at full resolution.
+    working: [u32; 2],
+    bent_normals: bool,
+    /// Size of the spatial filter's textures, when it is on.
+    spatial: Option<[u32; 2]>,
+    /// Whether the downsample writes motion vectors, for a temporal filter at working
+    /// resolution.
+    working_motion: bool,
+}
+
+/// The intermediate textures.
+struct Targets {
+    layout: Layout,
+    /// Linear depth at the input's size.
+    linear_depth: Target,
+    /// oct32 normals decoded from the input or reconstructed from depth, at the input's size.
+    normals: Target,
+    /// Below full resolution, the kernel's inputs at working size and the upsampled outputs.
+    working: Option<WorkingTargets>,
+    /// The kernel's AO, at working size.
+    ao: Target,
+    /// The kernel's bent normals, at working size.
+    bent_normals: Option<Target>,
     /// The spatial filter's textures, when it is on.
     spatial: Option<SpatialTargets>,
+}
+
+/// The downsample's and the upsample's textures.
+struct WorkingTargets {
+    linear_depth: Target,
+    normals: Target,
+    motion_vectors: Option<Target>,
+    /// The AO at the input's size.
+    upsampled_ao: Target,
+    /// The bent normals at the input's size.
+    upsampled_bent_normals: Option<Target>,
 }
 
 /// The spatial filter's AO and depth after the horizontal pass, and its filtered AO.
 struct SpatialTargets {
     packed_view: wgpu::TextureView,
-    ao: wgpu::Texture,
-    ao_view: wgpu::TextureView,
+    ao: Target,
 }
 
 impl Targets {
-    fn new(device: &wgpu::Device, size: [u32; 2], bent_normals: bool, spatial: bool) -> Self {
+    fn new(device: &wgpu::Device, layout: Layout) -> Self {
         let usage = wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
-        let make = |label, format| create_texture_2d(device, label, size, format, usage);
-        let linear_depth = make("aokit linear depth", LINEAR_DEPTH_FORMAT);
-        let ao = make("aokit ao", AO_FORMAT);
-        let normals = make("aokit normals", NORMALS_FORMAT);
-        let bent_normals = bent_normals.then(|| {
-            let texture = make("aokit bent normals", BENT_NORMALS_FORMAT);
+        let make = |label, size, format| {
+            let texture = create_texture_2d(device, label, size, format, usage);
             let view = texture.create_view(&Default::default());
             (texture, view)
-        });
-        let spatial = spatial.then(|| {
-            let ao = make("aokit spatially filtered ao", AO_FORMAT);
-            SpatialTargets {
-                packed_view: make("aokit spatial filter ao and depth", PACKED_FORMAT)
-                    .create_view(&Default::default()),
-                ao_view: ao.create_view(&Default::default()),
-                ao,
-            }
-        });
+        };
+        let Layout { size, working, .. } = layout;
+        let bent = layout.bent_normals;
         Self {
-            bent_normals,
-            spatial,
-            normals_view: normals.create_view(&Default::default()),
-            normals,
-            size,
-            linear_depth_view: linear_depth.create_view(&Default::default()),
-            linear_depth,
-            ao_view: ao.create_view(&Default::default()),
-            ao,
+            layout,
+            linear_depth: make("aokit linear depth", size, LINEAR_DEPTH_FORMAT),
+            normals: make("aokit normals", size, NORMALS_FORMAT),
+            working: (working != size).then(|| WorkingTargets {
+                linear_depth: make("aokit working linear depth", working, LINEAR_DEPTH_FORMAT),
+                normals: make("aokit working normals", working, NORMALS_FORMAT),
+                motion_vectors: layout
+                    .working_motion
+                    .then(|| make("aokit working motion", working, WORKING_MOTION_FORMAT)),
+                upsampled_ao: make("aokit upsampled ao", size, AO_FORMAT),
+                upsampled_bent_normals: bent
+                    .then(|| make("aokit upsampled bent normals", size, BENT_NORMALS_FORMAT)),
+            }),
+            ao: make("aokit ao", working, AO_FORMAT),
+            bent_normals: bent.then(|| make("aokit bent normals", working, BENT_NORMALS_FORMAT)),
+            spatial: layout.spatial.map(|size| SpatialTargets {
+                packed_view: make("aokit spatial filter ao and depth", size, PACKED_FORMAT).1,
+                ao: make("aokit spatially filtered ao", size, AO_FORMAT),
+            }),
         }
     }
 }
 
+/// What the filters read, at the resolution they run at: `ao` may be what they return.
+struct FilterInputs<'t, 'f> {
+    ao: &'t Target,
+    linear_depth: &'f wgpu::TextureView,
+    normals: &'f wgpu::TextureView,
+    /// In pixels of that resolution.
+    motion_vectors: Option<&'f wgpu::TextureView>,
+}
+
+/// The spatial and temporal filters and each view's temporal history.
+struct Denoiser {
+    spatial: SpatialFilterPass,
+    /// Compiled the first time the temporal filter is on.
+    temporal: Option<TemporalFilterPass>,
+    /// Each view's temporal history, by [`AoInputs::view_id`].
+    histories: HashMap<u32, Option<History>>,
+}
+
+impl Denoiser {
+    /// Records the spatial and then the temporal filter, each when `settings` turn it on, at
+    /// `ctx`'s resolution. Returns the filtered AO (`input.ao` itself with both off) and, with
+    /// the temporal filter on, its rejected-history mask.
+    fn encode<'t>(
+        &'t mut self,
+        ctx: &mut PassContext<'_>,
+        queue: &wgpu::Queue,
+        settings: &AoSettings,
+        frame: &AoInputs<'_>,
+        spatial: Option<&'t SpatialTargets>,
+        input: FilterInputs<'t, '_>,
+    ) -> (&'t Target, Option<&'t wgpu::Texture>) {
+        let ao = match spatial {
+            Some(targets) => {
+                self.spatial.encode(
+                    ctx,
+                    &input.ao.1,
+                    input.linear_depth,
+                    input.normals,
+                    &targets.packed_view,
+                    &targets.ao.1,
+                );
+                &targets.ao
+            }
+            None => input.ao,
+        };
+        if !settings.temporal.enabled {
+            // Off, histories go: when it is turned on again the old frames are stale.
+            self.histories.clear();
+            return (ao, None);
+        }
+        let history = self.histories.entry(frame.view_id).or_insert(None);
+        let temporal = self
+            .temporal
+            .get_or_insert_with(|| TemporalFilterPass::new(ctx.device, &settings.temporal));
+        temporal.encode(
+            ctx,
+            queue,
+            history,
+            &FrameMotion {
+                view_from_world: frame.view_from_world,
+                projection: frame.projection,
+                motion_vectors: input.motion_vectors,
+                reset: frame.reset_history,
+            },
+            &ao.1,
+            input.linear_depth,
+        );
+        let history = history
+            .as_ref()
+            .expect("the temporal filter keeps a history");
+        (history.ao(), Some(&history.rejected().0))
+    }
+}
+
 /// What [`AoPipeline::encode`] produced. The textures stay valid until the next `encode` with a
-/// different size.
+/// different size or resolution. Each says its size: the input's, or
+/// [`AoOutputs::working_size`] for what the kernel wrote before the upsample.
 #[derive(Clone, Copy, Debug)]
 pub struct AoOutputs<'a> {
-    /// Ambient occlusion, `R32Float`, 1 = unoccluded: [`AoOutputs::raw_ao`] after the spatial
-    /// filter when [`SpatialSettings::enabled`](crate::SpatialSettings::enabled), else that
-    /// texture itself.
+    /// Ambient occlusion, `R32Float`, 1 = unoccluded, at the input's size: the kernel's AO
+    /// after the spatial and temporal filters that are on and, below full resolution, the
+    /// upsample (in the order [`AoSettings::filter_resolution`] gives).
     pub ao: &'a wgpu::Texture,
     /// A view of [`AoOutputs::ao`] for binding.
     pub ao_view: &'a wgpu::TextureView,
-    /// The method kernel's AO before any denoising, `R32Float`, for comparing filters or
-    /// feeding your own.
+    /// The method kernel's AO before any denoising or upsampling, `R32Float`, at
+    /// [`AoOutputs::working_size`], for comparing filters or feeding your own.
     pub raw_ao: &'a wgpu::Texture,
     /// A view of [`AoOutputs::raw_ao`] for binding.
     pub raw_ao_view: &'a wgpu::TextureView,
-    /// Linear view depth, `R32Float`, 0 where nothing was drawn.
+    /// The size the kernel ran at: the input's at full [`AoSettings::resolution`], else the
+    /// input's divided by its scale, rounded up.
+    pub working_size: [u32; 2],
+    /// Linear view depth, `R32Float`, 0 where nothing was drawn, at the input's size (below
+    /// full resolution the kernel read the downsample's copy).
     pub linear_depth: &'a wgpu::Texture,
-    /// The view-space normals the AO kernels used, oct32 (`R32Uint`, see
-    /// [`normals::unpack_oct32`](crate::normals::unpack_oct32)): the input texture itself when
-    /// it is oct32, else the input decoded or the normals reconstructed from depth.
+    /// The view-space normals, oct32 (`R32Uint`, see
+    /// [`normals::unpack_oct32`](crate::normals::unpack_oct32)), at the input's size: the input
+    /// texture itself when it is oct32, else the input decoded or the normals reconstructed
+    /// from depth. The kernel read these, or below full resolution the downsample's copy.
     pub normals: &'a wgpu::Texture,
     /// A view of [`AoOutputs::normals`] for binding.
     pub normals_view: &'a wgpu::TextureView,
-    /// Bent normals when [`AoSettings::bent_normals`] is on: `Rgba16Float`, view-space unit
-    /// vector in xyz (the mean unoccluded direction), AO in w.
+    /// Bent normals when [`AoSettings::bent_normals`] is on, at the input's size (below full
+    /// resolution upsampled with the AO's weights and renormalised): `Rgba16Float`, view-space
+    /// unit vector in xyz (the mean unoccluded direction), the kernel's unfiltered AO in w.
     pub bent_normals: Option<&'a wgpu::Texture>,
     /// A view of [`AoOutputs::bent_normals`] for binding.
     pub bent_normals_view: Option<&'a wgpu::TextureView>,
     /// With the temporal filter on: `R32Float`, 1 where this frame rejected its history
     /// (disocclusions, the screen's edges, a reset) and showed the current frame alone, 0 where
-    /// it blended. A debug view of where ghosting or fresh noise can show.
+    /// it blended. A debug view of where ghosting or fresh noise can show. At the filters'
+    /// size: [`AoOutputs::working_size`], or the input's with [`FilterResolution::Full`].
     pub history_rejected: Option<&'a wgpu::Texture>,
 }
 
@@ -127,7 +239,9 @@ pub struct AoOutputs<'a> {
 /// ```
 pub struct AoPipeline {
     settings: AoSettings,
+    /// `ViewUniforms` of the input's size, and of the working size.
     view_uniforms: wgpu::Buffer,
+    working_view_uniforms: wgpu::Buffer,
     linear_depth: LinearDepthPass,
     normals_from_depth: NormalsFromDepthPass,
     decode_normals: DecodeNormalsPass,
@@ -135,11 +249,9 @@ pub struct AoPipeline {
     /// the kernels read them as they are.
     input_normals_view: Option<wgpu::TextureView>,
     method: MethodPass,
-    spatial: SpatialFilterPass,
-    /// Compiled the first time the temporal filter is on.
-    temporal: Option<TemporalFilterPass>,
-    /// Each view's temporal history, by [`AoInputs::view_id`].
-    histories: HashMap<u32, Option<History>>,
+    denoiser: Denoiser,
+    /// Compiled the first time the resolution is below full.
+    resample: Option<ResamplePass>,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
 }
@@ -152,18 +264,24 @@ impl AoPipeline {
         settings: &AoSettings,
     ) -> Result<Self, AoError> {
         settings.validate()?;
-        let view_uniforms = create_uniform_buffer::<ViewUniforms>(device, "aokit view");
         Ok(Self {
             settings: *settings,
-            view_uniforms,
+            view_uniforms: create_uniform_buffer::<ViewUniforms>(device, "aokit view"),
+            working_view_uniforms: create_uniform_buffer::<ViewUniforms>(
+                device,
+                "aokit working view",
+            ),
             linear_depth: LinearDepthPass::new(device),
             normals_from_depth: NormalsFromDepthPass::new(device),
             decode_normals: DecodeNormalsPass::default(),
             input_normals_view: None,
             method: MethodPass::new(device, queue, settings),
-            spatial: SpatialFilterPass::new(device, queue, &settings.spatial),
-            temporal: None,
-            histories: HashMap::new(),
+            denoiser: Denoiser {
+                spatial: SpatialFilterPass::new(device, queue, &settings.spatial),
+                temporal: None,
+                histories: HashMap::new(),
+            },
+            resample: None,
             targets: None,
             timer: None,
         })
@@ -194,10 +312,11 @@ impl AoPipeline {
 
     /// Replaces the settings. Only the settings buffer changes, unless the method is one not
     /// used before (its kernel compiles once), the noise needs a tile not used before (it is
-    /// generated and uploaded once), bent normals or the spatial filter are switched (their
-    /// textures are made or dropped at the next `encode`; the filter's kernels compile the first
-    /// time it is on) or the normals need a decode or reconstruction not used before (its kernel
-    /// compiles once, at the next `encode`).
+    /// generated and uploaded once), bent normals, the spatial filter or the resolution are
+    /// switched (their textures are made or dropped at the next `encode`; the filter's kernels
+    /// and the downsample and upsample compile the first time they are needed) or the normals
+    /// need a decode or reconstruction not used before (its kernel compiles once, at the next
+    /// `encode`).
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
@@ -207,16 +326,18 @@ impl AoPipeline {
         settings.validate()?;
         self.settings = *settings;
         self.method.set_settings(device, queue, settings);
-        self.spatial.set_settings(device, queue, &settings.spatial);
-        if let Some(temporal) = &mut self.temporal {
+        self.denoiser
+            .spatial
+            .set_settings(device, queue, &settings.spatial);
+        if let Some(temporal) = &mut self.denoiser.temporal {
             temporal.set_settings(&settings.temporal);
         }
         Ok(())
     }
 
     /// Records the passes for one frame into `encoder`. Intermediate textures are (re)created
-    /// when the input size changes. The outputs borrow the inputs' textures too: with oct32
-    /// input normals, [`AoOutputs::normals`] is the input texture.
+    /// when the input size or the resolution changes. The outputs borrow the inputs' textures
+    /// too: with oct32 input normals, [`AoOutputs::normals`] is the input texture.
     pub fn encode<'a>(
         &'a mut self,
         device: &wgpu::Device,
@@ -224,32 +345,48 @@ impl AoPipeline {
         encoder: &mut wgpu::CommandEncoder,
         inputs: &AoInputs<'a>,
     ) -> Result<AoOutputs<'a>, AoError> {
-        let encoding = self.settings.normals.encoding;
+        let settings = self.settings;
+        let encoding = settings.normals.encoding;
         let size = inputs.validate(encoding)?;
         inputs.projection.validate()?;
         let max = device.limits().max_texture_dimension_2d;
         if size[0] > max || size[1] > max {
             return Err(AoError::TooLarge { size, max });
         }
-        let bent = self.settings.bent_normals;
-        let spatial = self.settings.spatial.enabled;
-        if self
-            .targets
-            .as_ref()
-            .map(|t| (t.size, t.bent_normals.is_some(), t.spatial.is_some()))
-            != Some((size, bent, spatial))
-        {
-            self.targets = Some(Targets::new(device, size, bent, spatial));
+        let scale = settings.resolution.scale();
+        let working = settings.resolution.working_size(size);
+        // Below full resolution the filters run before the upsample, at working resolution,
+        // unless the settings move them after it.
+        let filter_full = scale > 1 && settings.filter_resolution == FilterResolution::Full;
+        let layout = Layout {
+            size,
+            working,
+            bent_normals: settings.bent_normals,
+            spatial: settings
+                .spatial
+                .enabled
+                .then_some(if filter_full { size } else { working }),
+            working_motion: scale > 1
+                && !filter_full
+                && settings.temporal.enabled
+                && inputs.motion_vectors.is_some(),
+        };
+        if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
+            self.targets = Some(Targets::new(device, layout));
         }
         let targets = self.targets.as_ref().expect("targets were just created");
+        let (projection, frame_index) = (&inputs.projection, inputs.frame_index);
         queue.write_buffer(
             &self.view_uniforms,
             0,
-            bytemuck::bytes_of(&ViewUniforms::new(
-                &inputs.projection,
-                size,
-                inputs.frame_index,
-            )),
+            bytemuck::bytes_of(&ViewUniforms::new(projection, size, frame_index)),
+        );
+        // Written at full resolution too (where it equals the other), so that the passes
+        // between downsample and upsample bind it whatever the resolution.
+        queue.write_buffer(
+            &self.working_view_uniforms,
+            0,
+            bytemuck::bytes_of(&ViewUniforms::scaled(projection, size, scale, frame_index)),
         );
 
         if let Some(timer) = self.timer.as_mut() {
@@ -263,10 +400,10 @@ impl AoPipeline {
             timer: self.timer.as_mut(),
         };
         self.linear_depth
-            .encode(&mut ctx, inputs.depth, &targets.linear_depth_view);
+            .encode(&mut ctx, inputs.depth, &targets.linear_depth.1);
         // Input normals the settings use are read as they are when oct32, else decoded; without
         // them (or when the source is depth) the normals are reconstructed.
-        let source = self.settings.normals.source;
+        let source = settings.normals.source;
         self.input_normals_view = inputs
             .normals
             .filter(|_| source == NormalSource::Buffer)
@@ -275,86 +412,137 @@ impl AoPipeline {
             (Some(texture), Some(view)) if encoding == NormalEncoding::Oct32 => (texture, view),
             (_, Some(view)) => {
                 self.decode_normals
-                    .encode(&mut ctx, encoding, view, &targets.normals_view);
-                (&targets.normals, &targets.normals_view)
+                    .encode(&mut ctx, encoding, view, &targets.normals.1);
+                (&targets.normals.0, &targets.normals.1)
             }
             (_, None) => {
                 self.normals_from_depth.encode(
                     &mut ctx,
                     source,
-                    &targets.linear_depth_view,
-                    &targets.normals_view,
+                    &targets.linear_depth.1,
+                    &targets.normals.1,
                 );
-                (&targets.normals, &targets.normals_view)
+                (&targets.normals.0, &targets.normals.1)
             }
+        };
+        let motion_vectors = inputs
+            .motion_vectors
+            .map(|t| t.create_view(&Default::default()));
+
+        // Below full resolution: depth, normals and the motion the filters need, downsampled.
+        let resample = targets.working.as_ref().map(|working| {
+            let pass = self
+                .resample
+                .get_or_insert_with(|| ResamplePass::new(device));
+            pass.prepare(
+                queue,
+                &settings,
+                layout.working_motion,
+                settings.bent_normals,
+            );
+            (&*pass, working)
+        });
+        ctx.size = working;
+        ctx.view_uniforms = &self.working_view_uniforms;
+        let (working_depth, working_normals) = match resample {
+            Some((pass, working)) => {
+                pass.downsample(
+                    &mut ctx,
+                    &targets.linear_depth.1,
+                    normals_view,
+                    motion_vectors.as_ref().filter(|_| layout.working_motion),
+                    &DownsampleTargets {
+                        linear_depth: &working.linear_depth.1,
+                        normals: &working.normals.1,
+                        motion_vectors: working.motion_vectors.as_ref().map(|(_, v)| v),
+                    },
+                );
+                (&working.linear_depth.1, &working.normals.1)
+            }
+            None => (&targets.linear_depth.1, normals_view),
         };
         self.method.encode(
             &mut ctx,
-            self.settings.method,
-            &targets.linear_depth_view,
-            normals_view,
-            &targets.ao_view,
+            settings.method,
+            working_depth,
+            working_normals,
+            &targets.ao.1,
             targets.bent_normals.as_ref().map(|(_, view)| view),
         );
-        let (ao, ao_view) = match &targets.spatial {
-            Some(spatial) => {
-                self.spatial.encode(
-                    &mut ctx,
-                    &targets.ao_view,
-                    &targets.linear_depth_view,
+
+        // The upsample of `ao` and the bent normals; `ctx` must be at the input's size.
+        let upsample = |ctx: &mut PassContext<'_>, ao: &wgpu::TextureView| {
+            resample.map(|(pass, working)| {
+                pass.upsample(
+                    ctx,
+                    &targets.linear_depth.1,
                     normals_view,
-                    &spatial.packed_view,
-                    &spatial.ao_view,
+                    working_depth,
+                    ao,
+                    &working.upsampled_ao.1,
+                    targets
+                        .bent_normals
+                        .as_ref()
+                        .zip(working.upsampled_bent_normals.as_ref())
+                        .map(|((_, from), (_, to))| (from, to)),
                 );
-                (&spatial.ao, &spatial.ao_view)
-            }
-            None => (&targets.ao, &targets.ao_view),
+                working
+            })
         };
-        let mut history_rejected = None;
-        let (ao, ao_view) = if self.settings.temporal.enabled {
-            let history = self.histories.entry(inputs.view_id).or_insert(None);
-            let motion_vectors = inputs
-                .motion_vectors
-                .map(|t| t.create_view(&Default::default()));
-            let temporal = self
-                .temporal
-                .get_or_insert_with(|| TemporalFilterPass::new(device, &self.settings.temporal));
-            temporal.encode(
-                &mut ctx,
-                queue,
-                history,
-                &FrameMotion {
-                    view_from_world: inputs.view_from_world,
-                    projection: inputs.projection,
-                    motion_vectors: motion_vectors.as_ref(),
-                    reset: inputs.reset_history,
-                },
-                ao_view,
-                &targets.linear_depth_view,
-            );
-            let history = history
-                .as_ref()
-                .expect("the temporal filter keeps a history");
-            history_rejected = Some(&history.rejected().0);
-            (&history.ao().0, &history.ao().1)
+        let filter_inputs = if filter_full {
+            ctx.size = size;
+            ctx.view_uniforms = &self.view_uniforms;
+            let working = upsample(&mut ctx, &targets.ao.1).expect("below full resolution");
+            FilterInputs {
+                ao: &working.upsampled_ao,
+                linear_depth: &targets.linear_depth.1,
+                normals: normals_view,
+                motion_vectors: motion_vectors.as_ref(),
+            }
         } else {
-            // Off, histories go: when it is turned on again the old frames are stale.
-            self.histories.clear();
-            (ao, ao_view)
+            FilterInputs {
+                ao: &targets.ao,
+                linear_depth: working_depth,
+                normals: working_normals,
+                motion_vectors: match &targets.working {
+                    Some(working) => working.motion_vectors.as_ref().map(|(_, v)| v),
+                    None => motion_vectors.as_ref(),
+                },
+            }
+        };
+        let (filtered, history_rejected) = self.denoiser.encode(
+            &mut ctx,
+            queue,
+            &settings,
+            inputs,
+            targets.spatial.as_ref(),
+            filter_inputs,
+        );
+        let ao = if filter_full {
+            filtered
+        } else {
+            ctx.size = size;
+            ctx.view_uniforms = &self.view_uniforms;
+            upsample(&mut ctx, &filtered.1).map_or(filtered, |w| &w.upsampled_ao)
+        };
+        let bent_normals = match &targets.working {
+            Some(working) => working.upsampled_bent_normals.as_ref(),
+            None => targets.bent_normals.as_ref(),
         };
         if let Some(timer) = &self.timer {
             timer.resolve(encoder);
         }
         Ok(AoOutputs {
-            ao,
-            ao_view,
-            raw_ao: &targets.ao,
-            raw_ao_view: &targets.ao_view,
-            linear_depth: &targets.linear_depth,
+            ao: &ao.0,
+            ao_view: &ao.1,
+            raw_ao: &targets.ao.0,
+            raw_ao_view: &targets.ao.1,
+            working_size: working,
+            linear_depth: &targets.linear_depth.0,
             normals,
             normals_view,
-            bent_normals: targets.bent_normals.as_ref().map(|(texture, _)| texture),
-            bent_normals_view: targets.bent_normals.as_ref().map(|(_, view)| view),
+            bent_normals: bent_normals.map(|(texture, _)| texture),
+            bent_normals_view: bent_normals.map(|(_, view)| view),
             history_rejected,
         })
     }

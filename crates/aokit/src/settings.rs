@@ -274,6 +274,95 @@ impl Default for TemporalSettings {
     }
 }
 
+named_enum! {
+    /// The resolution the AO kernel (and, with [`FilterResolution::Working`], the filters) runs
+    /// at; the result is upsampled to the input's resolution. docs/denoise.md has the measured
+    /// error of each.
+    pub enum Resolution ("resolution") {
+        /// Every pixel.
+        #[default]
+        Full = "full",
+        /// One texel per 2x2 pixels: a quarter of the kernel's cost.
+        Half = "half",
+        /// One texel per 4x4 pixels: a sixteenth of the kernel's cost.
+        Quarter = "quarter",
+    }
+}
+
+impl Resolution {
+    /// Input pixels per working texel along each axis: 1, 2 or 4.
+    pub fn scale(self) -> u32 {
+        match self {
+            Resolution::Full => 1,
+            Resolution::Half => 2,
+            Resolution::Quarter => 4,
+        }
+    }
+
+    /// The working size for an input of `size` pixels: `ceil(size / scale)`, so that the last
+    /// texel of an odd size covers the pixels left over.
+    pub fn working_size(self, size: [u32; 2]) -> [u32; 2] {
+        size.map(|side| side.div_ceil(self.scale()))
+    }
+}
+
+named_enum! {
+    /// Which input pixel of each block a working-resolution texel takes its depth (and that
+    /// pixel's normal and motion) from, when [`AoSettings::resolution`] is below full.
+    pub enum Downsample ("downsample") {
+        /// A fixed pixel: the top-left one of the block's central 2x2 (seed 001's choice). The
+        /// default: one load per texel and no lean towards either side of an edge. `max` and
+        /// `checkerboard` score lower on average (docs/denoise.md), but `max` by dropping thin
+        /// objects whose AO the kernels get wrong, and `checkerboard` at the cost of a pattern
+        /// and more flicker.
+        #[default]
+        Point = "point",
+        /// The nearest surface (smallest linear depth).
+        Min = "min",
+        /// The farthest surface (largest linear depth; a pixel without a surface counts as
+        /// farthest of all).
+        Max = "max",
+        /// `min` and `max` alternating in a checkerboard of working texels (Mixed Resolution
+        /// Rendering in Skylanders, as seed 001 describes), so that both sides of an edge are
+        /// kept somewhere. The kernels then see a surface that zigzags between neighbouring
+        /// texels, and HBAO shows the pattern.
+        Checkerboard = "checkerboard",
+    }
+}
+
+named_enum! {
+    /// How working-resolution AO becomes full-resolution AO: each pixel combines the 2x2
+    /// working texels around it by their depth's agreement with its own (docs/denoise.md).
+    pub enum Upsample ("upsample") {
+        /// The texels on the pixel's surface (relative depth difference below
+        /// `upsample_threshold`), equally weighted (seed 001's final choice): the lowest error
+        /// without filters, blocky once they have removed the noise.
+        Bilateral = "bilateral",
+        /// The texels on the pixel's surface, bilinearly weighted (Mixed Resolution Rendering's
+        /// bilateral upsample with a threshold for its depth weight). The default: the lowest
+        /// error with both filters, at half and quarter resolution.
+        #[default]
+        BilateralBilinear = "bilateral-bilinear",
+        /// Bilinear where all four texels lie on the pixel's surface, else the one texel of
+        /// nearest depth (NVIDIA's nearest-depth upsample).
+        NearestDepth = "nearest-depth",
+    }
+}
+
+named_enum! {
+    /// Where the spatial and temporal filters run when [`AoSettings::resolution`] is below full.
+    pub enum FilterResolution ("filter resolution") {
+        /// At the working resolution, before the upsample. The default: the filters cost a
+        /// quarter (half resolution) or a sixteenth (quarter) of what they cost at full
+        /// resolution, for about 2% more error (docs/denoise.md).
+        #[default]
+        Working = "working",
+        /// At full resolution, after the upsample: the filters see full-resolution depth and
+        /// normals, and smooth the upsample's blocks too.
+        Full = "full",
+    }
+}
+
 /// Largest [`SpatialSettings::radius`]: the filter's workgroup tile holds the row or column
 /// segment of its 64 threads plus this many pixels on each side.
 pub const MAX_SPATIAL_RADIUS: u32 = 8;
@@ -505,8 +594,9 @@ pub struct AoSettings {
     pub intensity: f32,
     /// Exponent applied last: values above 1 darken and add contrast.
     pub power: f32,
-    /// Largest screen radius in pixels: near the camera the world radius covers much of the
-    /// screen, where samples spread thin and leave the cache (seed 004's Max Radius Pixels).
+    /// Largest screen radius in pixels of the input, whatever the working resolution: near the
+    /// camera the world radius covers much of the screen, where samples spread thin and leave
+    /// the cache (seed 004's Max Radius Pixels).
     pub max_radius_px: f32,
     /// Self-occlusion bias of the point-sampling methods, as a fraction of the radius: a sample
     /// must lie this far behind the depth buffer to count as occluded.
@@ -545,6 +635,17 @@ pub struct AoSettings {
     pub spatial: SpatialSettings,
     /// The temporal denoiser.
     pub temporal: TemporalSettings,
+    /// Resolution of the AO kernel.
+    pub resolution: Resolution,
+    /// How depth and normals are reduced to the working resolution.
+    pub downsample: Downsample,
+    /// How the AO returns to full resolution.
+    pub upsample: Upsample,
+    /// Relative depth difference `|d - d0| / d0` below which a working texel counts as showing
+    /// the same surface as a full-resolution pixel in the upsample.
+    pub upsample_threshold: f32,
+    /// Where the filters run below full resolution.
+    pub filter_resolution: FilterResolution,
 }
 
 impl Default for AoSettings {
@@ -601,6 +702,14 @@ impl AoSettings {
             noise: NoiseSettings::default(),
             spatial: SpatialSettings::default(),
             temporal: TemporalSettings::default(),
+            // Full, so that every table published before lower resolutions existed stands.
+            resolution: Resolution::Full,
+            downsample: Downsample::default(),
+            upsample: Upsample::default(),
+            // Seed 001's 5%: wider than a plane's depth changes between neighbouring texels
+            // unless seen near grazing, narrower than most gaps between objects.
+            upsample_threshold: 0.05,
+            filter_resolution: FilterResolution::default(),
         }
     }
 
@@ -690,6 +799,7 @@ impl AoSettings {
         positive("temporal.depth_threshold", self.temporal.depth_threshold)?;
         positive("spatial.depth_sigma", self.spatial.depth_sigma)?;
         at_least("spatial.normal_power", self.spatial.normal_power, 0.0)?;
+        positive("upsample_threshold", self.upsample_threshold)?;
         Ok(())
     }
 }
@@ -875,6 +985,18 @@ mod tests {
         }
         for w in DepthWeight::ALL {
             assert_eq!(w.name().parse::<DepthWeight>().unwrap(), w);
+        }
+        for r in Resolution::ALL {
+            assert_eq!(r.name().parse::<Resolution>().unwrap(), r);
+        }
+        for d in Downsample::ALL {
+            assert_eq!(d.name().parse::<Downsample>().unwrap(), d);
+        }
+        for u in Upsample::ALL {
+            assert_eq!(u.name().parse::<Upsample>().unwrap(), u);
+        }
+        for f in FilterResolution::ALL {
+            assert_eq!(f.name().parse::<FilterResolution>().unwrap(), f);
         }
         assert!("hbao9".parse::<Method>().unwrap_err().contains("gtao"));
     }

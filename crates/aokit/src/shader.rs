@@ -121,6 +121,27 @@ pub const TEMPORAL_FILTER: ShaderSource = ShaderSource {
     parts: &[VIEW, include_str!("../shaders/temporal_filter.wgsl")],
 };
 
+/// The settings the downsample and the upsample share; each pass file adds its textures and
+/// entry point.
+const RESAMPLE: &str = include_str!("../shaders/resample.wgsl");
+
+/// Linear depth, normals and motion vectors from the input's resolution to the working one.
+pub const DOWNSAMPLE: ShaderSource = ShaderSource {
+    name: "downsample",
+    parts: &[VIEW, RESAMPLE, include_str!("../shaders/downsample.wgsl")],
+};
+
+/// AO and bent normals from the working resolution to the input's, guided by depth.
+pub const UPSAMPLE: ShaderSource = ShaderSource {
+    name: "upsample",
+    parts: &[
+        VIEW,
+        ENCODING,
+        RESAMPLE,
+        include_str!("../shaders/upsample.wgsl"),
+    ],
+};
+
 /// A method kernel: the shared snippets, any of its own, then its file.
 macro_rules! method_kernel {
     ($name:literal $(, $snippet:expr)*) => {
@@ -186,6 +207,8 @@ pub const ALL: &[ShaderSource] = &[
     SPATIAL_FILTER_HORIZONTAL,
     SPATIAL_FILTER_VERTICAL,
     TEMPORAL_FILTER,
+    DOWNSAMPLE,
+    UPSAMPLE,
     OCCLUSION_FUNCTIONS,
 ];
 

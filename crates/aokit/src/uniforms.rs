@@ -19,19 +19,36 @@ pub(crate) struct ViewUniforms {
     pub orthographic: f32,
     pub far_ndc_depth: f32,
     pub frame_index: u32,
-    pub _pad: [u32; 2],
+    pub uv_per_pixel: [f32; 2],
 }
 
 impl ViewUniforms {
+    /// The view of an image of `size` pixels, at full resolution.
     pub fn new(projection: &Projection, size: [u32; 2], frame_index: u32) -> Self {
-        let size = Vec2::new(size[0] as f32, size[1] as f32);
+        Self::scaled(projection, size, 1, frame_index)
+    }
+
+    /// The view of an image of `full_size` pixels on a grid `scale` times coarser:
+    /// `ceil(full_size / scale)` texels, texel `c` covering pixels `c * scale ..
+    /// (c + 1) * scale`. The grid's size is the texture's, for bounds and texel addressing;
+    /// positions map through the image's exact extent, `full_size / scale` texels, so that the
+    /// projection stays the input's when a side is not a multiple of `scale` (the last texel
+    /// then reaches past the image).
+    pub fn scaled(
+        projection: &Projection,
+        full_size: [u32; 2],
+        scale: u32,
+        frame_index: u32,
+    ) -> Self {
+        let grid = Vec2::from(full_size.map(|side| side.div_ceil(scale) as f32));
+        let extent = Vec2::from(full_size.map(|side| side as f32)) / scale as f32;
         let linearize: Vec4 = projection.linearize_coefficients();
         Self {
-            size: size.to_array(),
-            inv_size: size.recip().to_array(),
+            size: grid.to_array(),
+            inv_size: grid.recip().to_array(),
             linearize: linearize.to_array(),
             ndc_to_view: projection.ndc_to_view_scale().to_array(),
-            pixels_per_unit: projection.pixels_per_unit(size.y),
+            pixels_per_unit: projection.pixels_per_unit(extent.y),
             orthographic: if projection.is_orthographic() {
                 1.0
             } else {
@@ -39,7 +56,7 @@ impl ViewUniforms {
             },
             far_ndc_depth: projection.far_ndc_depth(),
             frame_index,
-            _pad: [0; 2],
+            uv_per_pixel: extent.recip().to_array(),
         }
     }
 }
@@ -128,7 +145,9 @@ impl AoUniforms {
             falloff_add: radius / range,
             intensity: settings.intensity,
             power: settings.power,
-            max_radius_px: settings.max_radius_px,
+            // The kernel measures in working texels; the limit is in the input's pixels, so
+            // that a lower resolution covers the same screen area.
+            max_radius_px: settings.max_radius_px / settings.resolution.scale() as f32,
             bias: settings.bias * radius,
             angle_bias: settings.angle_bias,
             fade_mul,
@@ -220,6 +239,47 @@ impl TemporalUniforms {
     }
 }
 
+/// Mirrors `ResampleUniforms` in `shaders/resample.wgsl`: the downsample's and the upsample's
+/// settings, one buffer for both passes of a frame.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub(crate) struct ResampleUniforms {
+    pub scale: u32,
+    pub downsample: u32,
+    pub upsample: u32,
+    pub threshold: f32,
+    pub flags: u32,
+}
+
+/// `ResampleUniforms::flags` bits, mirrored as constants in `resample.wgsl`.
+pub(crate) mod resample_flags {
+    /// Downsample the motion vectors too.
+    pub const MOTION_VECTORS: u32 = 1;
+    /// Upsample the bent normals too.
+    pub const BENT_NORMALS: u32 = 2;
+}
+
+impl ResampleUniforms {
+    /// The resampling `settings` ask for, with motion vectors downsampled and bent normals
+    /// upsampled when `motion_vectors` and `bent_normals`.
+    pub fn new(settings: &AoSettings, motion_vectors: bool, bent_normals: bool) -> Self {
+        let mut flags = 0;
+        if motion_vectors {
+            flags |= resample_flags::MOTION_VECTORS;
+        }
+        if bent_normals {
+            flags |= resample_flags::BENT_NORMALS;
+        }
+        Self {
+            scale: settings.resolution.scale(),
+            downsample: settings.downsample as u32,
+            upsample: settings.upsample as u32,
+            threshold: settings.upsample_threshold,
+            flags,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -237,6 +297,7 @@ mod tests {
             orthographic,
             far_ndc_depth,
             frame_index,
+            uv_per_pixel,
         });
         shader::check_layout(
             &shader::LINEAR_DEPTH,
@@ -321,6 +382,61 @@ mod tests {
             size_of::<TemporalUniforms>(),
         )
         .unwrap();
+    }
+
+    #[test]
+    fn resample_uniforms_and_codes_match_wgsl_in_both_passes() {
+        let fields = crate::field_offsets!(ResampleUniforms {
+            scale,
+            downsample,
+            upsample,
+            threshold,
+            flags,
+        });
+        for pass in [shader::DOWNSAMPLE, shader::UPSAMPLE] {
+            shader::check_layout(
+                &pass,
+                "ResampleUniforms",
+                fields,
+                size_of::<ResampleUniforms>(),
+            )
+            .unwrap();
+            let module = pass.validate().unwrap();
+            let constant = |name: &str| shader::u32_constant(&module, name);
+            for mode in crate::Downsample::ALL {
+                let name = format!("DOWNSAMPLE_{}", mode.name().to_uppercase());
+                assert_eq!(constant(&name), Some(mode as u32), "{name}");
+            }
+            for mode in crate::Upsample::ALL {
+                let name = format!("UPSAMPLE_{}", mode.name().replace('-', "_").to_uppercase());
+                assert_eq!(constant(&name), Some(mode as u32), "{name}");
+            }
+            assert_eq!(
+                constant("FLAG_MOTION_VECTORS"),
+                Some(resample_flags::MOTION_VECTORS)
+            );
+            assert_eq!(
+                constant("FLAG_BENT_NORMALS"),
+                Some(resample_flags::BENT_NORMALS)
+            );
+        }
+    }
+
+    #[test]
+    fn a_coarser_grid_keeps_the_image_extent_and_the_projection() {
+        let projection = Projection::perspective(1.0, 481.0 / 270.0, 0.1, None);
+        let full = ViewUniforms::new(&projection, [481, 270], 3);
+        let half = ViewUniforms::scaled(&projection, [481, 270], 2, 3);
+        assert_eq!(half.size, [241.0, 135.0]);
+        assert_eq!(half.inv_size, [1.0 / 241.0, 1.0 / 135.0]);
+        // The image ends half a texel before the grid's last texel does.
+        assert_eq!(half.uv_per_pixel, [1.0 / 240.5, 1.0 / 135.0]);
+        assert_eq!(half.pixels_per_unit, full.pixels_per_unit / 2.0);
+        assert_eq!(full.uv_per_pixel, full.inv_size);
+        assert_eq!(
+            (half.linearize, half.ndc_to_view, half.frame_index),
+            (full.linearize, full.ndc_to_view, 3)
+        );
     }
 
     #[test]

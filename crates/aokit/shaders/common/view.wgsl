@@ -2,7 +2,8 @@
 // View space is right-handed with the camera looking down -Z; pixel y grows downwards, NDC y up.
 
 struct ViewUniforms {
-    // Working resolution in pixels, and its reciprocal.
+    // The pass's texel grid (the working resolution, or the input's), and its reciprocal: for
+    // bounds and texture coordinates.
     size: vec2<f32>,
     inv_size: vec2<f32>,
     // linear = (c.x * ndc + c.y) / (c.z * ndc + c.w): one form for every projection.
@@ -16,6 +17,9 @@ struct ViewUniforms {
     // Depth-buffer value of pixels nothing was drawn to.
     far_ndc_depth: f32,
     frame_index: u32,
+    // Image uv per texel of the grid: inv_size, except below full resolution when a side of the
+    // input is not a multiple of the scale and the grid's last texel reaches past the image.
+    uv_per_pixel: vec2<f32>,
 }
 
 @group(0) @binding(0) var<uniform> view: ViewUniforms;
@@ -33,7 +37,7 @@ fn linearize_depth(ndc_depth: f32) -> f32 {
 
 // View-space position of the point at `pixel` (in pixels, centres at +0.5) and linear depth.
 fn view_position(pixel: vec2<f32>, linear_depth: f32) -> vec3<f32> {
-    let uv = pixel * view.inv_size;
+    let uv = pixel * view.uv_per_pixel;
     let ndc = vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0);
     let scale = mix(linear_depth, 1.0, view.orthographic);
     return vec3<f32>(ndc * view.ndc_to_view * scale, -linear_depth);
@@ -54,5 +58,10 @@ fn pixels_at_depth(world_length: f32, linear_depth: f32) -> f32 {
 fn pixel_of(position: vec3<f32>) -> vec2<f32> {
     let scale = mix(-position.z, 1.0, view.orthographic);
     let ndc = position.xy / (view.ndc_to_view * scale);
-    return vec2<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * view.size;
+    return uv_to_pixel(vec2<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5));
+}
+
+// Grid position (in pixels) of image uv `uv`; the inverse of the uv view_position takes.
+fn uv_to_pixel(uv: vec2<f32>) -> vec2<f32> {
+    return uv / view.uv_per_pixel;
 }

@@ -4,6 +4,7 @@ pub mod decode_normals;
 pub mod linear_depth;
 pub mod method;
 pub mod normals_from_depth;
+pub mod resample;
 pub mod spatial_filter;
 pub mod temporal_filter;
 
@@ -16,16 +17,17 @@ pub struct PassContext<'a> {
     pub device: &'a wgpu::Device,
     /// The encoder the frame is recorded into.
     pub encoder: &'a mut wgpu::CommandEncoder,
-    /// The frame's `ViewUniforms` buffer, bound at binding 0 of every pass.
+    /// The `ViewUniforms` buffer of `size`, bound at binding 0 of every pass.
     pub view_uniforms: &'a wgpu::Buffer,
-    /// Working resolution.
+    /// The resolution the passes dispatch over: the input's, or the working resolution of the
+    /// passes between the downsample and the upsample.
     pub size: [u32; 2],
     /// Collects per-pass GPU times when timing is on.
     pub timer: Option<&'a mut PassTimer>,
 }
 
 impl PassContext<'_> {
-    /// Dispatches `kernel` over the working resolution with the view uniforms at binding 0 and
+    /// Dispatches `kernel` over `size` with the view uniforms at binding 0 and
     /// `resources` from binding 1 on, timed when the frame is timed.
     pub fn dispatch(&mut self, kernel: &ComputeKernel, resources: &[wgpu::BindingResource<'_>]) {
         let mut bindings = Vec::with_capacity(resources.len() + 1);

@@ -1,0 +1,108 @@
+// Depth-aware upsample (resample.wgsl): each full-resolution pixel combines the 2x2 working
+// texels around its centre. A texel shows the pixel's surface when its depth d_k is within
+// `threshold` of the pixel's depth d relative to d: |d_k - d| / d < threshold. With the bilinear
+// weights b_k of the pixel's centre among the four texel centres:
+//
+//     bilateral:           w_k = same_k
+//     bilateral-bilinear:  w_k = same_k * b_k
+//     nearest-depth:       w_k = b_k if all four are the same surface, else 0
+//
+// and where every w_k is 0 (an edge for nearest-depth; a surface no texel kept, such as a pole
+// thinner than a block, for the others) the one texel of smallest |d_k - d| / d alone. The AO is
+// sum w_k a_k / sum w_k; the bent normals, when asked for, are combined with the same weights
+// and renormalised. Pixels without a surface get AO 1; so do pixels whose four texels show none
+// (nothing was sampled there), with their own normal as bent normal, as the kernels treat a
+// pixel with nothing to sample.
+
+@group(0) @binding(2) var depth_full: texture_2d<f32>;
+// Full-resolution oct32 normals, read only for bent normals.
+@group(0) @binding(3) var normals_full: texture_2d<u32>;
+@group(0) @binding(4) var depth_working: texture_2d<f32>;
+@group(0) @binding(5) var ao_in: texture_2d<f32>;
+// View-space bent normal in xyz and AO in w (1x1 when unused).
+@group(0) @binding(6) var bent_in: texture_2d<f32>;
+@group(0) @binding(7) var ao_out: texture_storage_2d<r32float, write>;
+@group(0) @binding(8) var bent_out: texture_storage_2d<rgba16float, write>;
+
+fn store(pixel: vec2<u32>, ao: f32, bent: vec4<f32>) {
+    textureStore(ao_out, pixel, vec4<f32>(ao, 0.0, 0.0, 0.0));
+    if (resample.flags & FLAG_BENT_NORMALS) != 0u {
+        textureStore(bent_out, pixel, bent);
+    }
+}
+
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if any(id.xy >= vec2<u32>(view.size)) {
+        return;
+    }
+    let depth = textureLoad(depth_full, id.xy, 0).r;
+    if depth == NO_SURFACE {
+        store(id.xy, 1.0, vec4<f32>(0.0, 0.0, 0.0, 1.0));
+        return;
+    }
+    // The pixel's centre on the working grid, whose texel centres lie at integers + 0.5.
+    let q = (vec2<f32>(id.xy) + 0.5) / f32(resample.scale);
+    let corner = floor(q - 0.5);
+    let f = q - 0.5 - corner;
+    let last = vec2<i32>(textureDimensions(depth_working)) - 1;
+    // Texels in the order left-top, right-top, left-bottom, right-bottom.
+    var texels: array<vec2<i32>, 4>;
+    var distance: vec4<f32>;
+    var aos: vec4<f32>;
+    for (var k = 0; k < 4; k++) {
+        texels[k] = clamp(vec2<i32>(corner) + vec2<i32>(k & 1, k >> 1u), vec2<i32>(0), last);
+        let d = textureLoad(depth_working, texels[k], 0).r;
+        // No surface never matches: |0 - d| / d = 1 would pass a threshold of 1 or more.
+        distance[k] = select(abs(d - depth) / depth, MAX_DEPTH, d == NO_SURFACE);
+        aos[k] = textureLoad(ao_in, texels[k], 0).r;
+    }
+    let bilinear = vec4<f32>((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    if all(distance == vec4<f32>(MAX_DEPTH)) {
+        let normal = unpack_oct32(textureLoad(normals_full, id.xy, 0).r);
+        store(id.xy, 1.0, vec4<f32>(normal, 1.0));
+        return;
+    }
+    let same = distance < vec4<f32>(resample.threshold);
+    var weights: vec4<f32>;
+    switch resample.upsample {
+        case UPSAMPLE_BILATERAL: {
+            weights = select(vec4<f32>(0.0), vec4<f32>(1.0), same);
+        }
+        case UPSAMPLE_BILATERAL_BILINEAR: {
+            weights = select(vec4<f32>(0.0), bilinear, same);
+        }
+        default: {
+            weights = select(vec4<f32>(0.0), bilinear, all(same));
+        }
+    }
+    if dot(weights, vec4<f32>(1.0)) == 0.0 {
+        var nearest = 0;
+        for (var k = 1; k < 4; k++) {
+            if distance[k] < distance[nearest] {
+                nearest = k;
+            }
+        }
+        weights = vec4<f32>(0.0);
+        weights[nearest] = 1.0;
+    }
+    let total = dot(weights, vec4<f32>(1.0));
+    // Offsets from one contributing texel's AO are summed rather than the AO itself, so that
+    // equal AO comes out exactly equal instead of rounded through the weighted sum.
+    var base = 0.0;
+    for (var k = 3; k >= 0; k--) {
+        if weights[k] > 0.0 {
+            base = aos[k];
+        }
+    }
+    let ao = base + dot(weights, aos - base) / total;
+    var bent = vec4<f32>(0.0);
+    if (resample.flags & FLAG_BENT_NORMALS) != 0u {
+        for (var k = 0; k < 4; k++) {
+            bent += weights[k] * textureLoad(bent_in, texels[k], 0);
+        }
+        let b = bent.xyz;
+        bent = vec4<f32>(select(b, normalize(b), dot(b, b) > 1e-12), bent.w / total);
+    }
+    store(id.xy, ao, bent);
+}

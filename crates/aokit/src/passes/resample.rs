@@ -1,0 +1,565 @@
+//! Between the input's resolution and the working resolution (`shaders/downsample.wgsl` and
+//! `shaders/upsample.wgsl`; formulas and measurements in docs/denoise.md): linear depth, normals
+//! and motion vectors down to the working resolution by choosing one pixel per block, and AO and
+//! bent normals back up guided by the full-resolution depth.
+
+use super::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
+use super::temporal_filter::MOTION_VECTOR_FORMATS;
+use super::{ComputeKernel, PassContext, bind};
+use crate::gpu::{create_texture_2d, create_uniform_buffer};
+use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
+use crate::passes::normals_from_depth::NORMALS_FORMAT;
+use crate::settings::AoSettings;
+use crate::shader;
+use crate::uniforms::ResampleUniforms;
+
+/// Format of the downsampled motion vectors: offsets in working texels, full precision as the
+/// temporal filter's history is.
+pub const WORKING_MOTION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
+
+/// Where the downsample writes, at working resolution.
+pub struct DownsampleTargets<'a> {
+    /// Linear depth ([`LINEAR_DEPTH_FORMAT`]).
+    pub linear_depth: &'a wgpu::TextureView,
+    /// oct32 normals ([`NORMALS_FORMAT`]) of the pixels the depth came from.
+    pub normals: &'a wgpu::TextureView,
+    /// Motion vectors ([`WORKING_MOTION_FORMAT`]) of those pixels, when the temporal filter
+    /// runs at working resolution with motion vectors.
+    pub motion_vectors: Option<&'a wgpu::TextureView>,
+}
+
+/// The downsample and upsample kernels and their shared settings buffer.
+pub struct ResamplePass {
+    downsample: ComputeKernel,
+    upsample: ComputeKernel,
+    uniforms: wgpu::Buffer,
+    /// 1x1 textures bound in place of motion vectors and bent normals that a frame does not
+    /// have: the flags keep the kernels from touching them.
+    motion_in_placeholder: wgpu::TextureView,
+    motion_out_placeholder: wgpu::TextureView,
+    bent_in_placeholder: wgpu::TextureView,
+    bent_out_placeholder: wgpu::TextureView,
+}
+
+impl ResamplePass {
+    /// Compiles both kernels.
+    pub fn new(device: &wgpu::Device) -> Self {
+        let float = wgpu::TextureSampleType::Float { filterable: false };
+        let downsample = ComputeKernel::new(
+            device,
+            &shader::DOWNSAMPLE,
+            &[
+                bind::uniform(0),
+                bind::uniform(1),
+                bind::texture(2, float),
+                bind::texture(3, wgpu::TextureSampleType::Uint),
+                bind::texture(4, float),
+                bind::storage_texture(5, LINEAR_DEPTH_FORMAT),
+                bind::storage_texture(6, NORMALS_FORMAT),
+                bind::storage_texture(7, WORKING_MOTION_FORMAT),
+            ],
+        );
+        let upsample = ComputeKernel::new(
+            device,
+            &shader::UPSAMPLE,
+            &[
+                bind::uniform(0),
+                bind::uniform(1),
+                bind::texture(2, float),
+                bind::texture(3, wgpu::TextureSampleType::Uint),
+                bind::texture(4, float),
+                bind::texture(5, float),
+                bind::texture(6, float),
+                bind::storage_texture(7, AO_FORMAT),
+                bind::storage_texture(8, BENT_NORMALS_FORMAT),
+            ],
+        );
+        let placeholder = |label, format, usage| {
+            create_texture_2d(device, label, [1, 1], format, usage).create_view(&Default::default())
+        };
+        let read = wgpu::TextureUsages::TEXTURE_BINDING;
+        let write = wgpu::TextureUsages::STORAGE_BINDING;
+        Self {
+            downsample,
+            upsample,
+            uniforms: create_uniform_buffer::<ResampleUniforms>(device, "aokit resample settings"),
+            motion_in_placeholder: placeholder(
+                "aokit motion placeholder",
+                MOTION_VECTOR_FORMATS[0],
+                read,
+            ),
+            motion_out_placeholder: placeholder(
+                "aokit working motion placeholder",
+                WORKING_MOTION_FORMAT,
+                write,
+            ),
+            bent_in_placeholder: placeholder(
+                "aokit bent normals placeholder",
+                BENT_NORMALS_FORMAT,
+                read,
+            ),
+            bent_out_placeholder: placeholder(
+                "aokit upsampled bent normals placeholder",
+                BENT_NORMALS_FORMAT,
+                write,
+            ),
+        }
+    }
+
+    /// Uploads the settings of the frame about to be recorded. Both passes of a frame read this
+    /// one buffer (a second write before the submit would replace it for both), so it says
+    /// whether the downsample writes `motion_vectors` and whether the upsample reads and writes
+    /// `bent_normals`; the views given to the passes must agree.
+    pub fn prepare(
+        &self,
+        queue: &wgpu::Queue,
+        settings: &AoSettings,
+        motion_vectors: bool,
+        bent_normals: bool,
+    ) {
+        queue.write_buffer(
+            &self.uniforms,
+            0,
+            bytemuck::bytes_of(&ResampleUniforms::new(
+                settings,
+                motion_vectors,
+                bent_normals,
+            )),
+        );
+    }
+
+    /// Records the downsample of full-resolution `linear_depth`, oct32 `normals` and
+    /// `motion_vectors` (pixels, as [`AoInputs::motion_vectors`](crate::AoInputs::motion_vectors))
+    /// into `targets`; `ctx` is at working resolution.
+    pub fn downsample(
+        &self,
+        ctx: &mut PassContext<'_>,
+        linear_depth: &wgpu::TextureView,
+        normals: &wgpu::TextureView,
+        motion_vectors: Option<&wgpu::TextureView>,
+        targets: &DownsampleTargets<'_>,
+    ) {
+        let view = wgpu::BindingResource::TextureView;
+        ctx.dispatch(
+            &self.downsample,
+            &[
+                self.uniforms.as_entire_binding(),
+                view(linear_depth),
+                view(normals),
+                view(motion_vectors.unwrap_or(&self.motion_in_placeholder)),
+                view(targets.linear_depth),
+                view(targets.normals),
+                view(
+                    targets
+                        .motion_vectors
+                        .unwrap_or(&self.motion_out_placeholder),
+                ),
+            ],
+        );
+    }
+
+    /// Records the upsample of working-resolution `ao` into `output`, and of bent normals
+    /// (working, full) when given, comparing the full-resolution `linear_depth` with
+    /// `working_depth`, the downsample's; `ctx` is at full resolution. `normals`, oct32 at full
+    /// resolution, are the bent normals of pixels no working texel saw.
+    #[allow(clippy::too_many_arguments)]
+    pub fn upsample(
+        &self,
+        ctx: &mut PassContext<'_>,
+        linear_depth: &wgpu::TextureView,
+        normals: &wgpu::TextureView,
+        working_depth: &wgpu::TextureView,
+        ao: &wgpu::TextureView,
+        output: &wgpu::TextureView,
+        bent_normals: Option<(&wgpu::TextureView, &wgpu::TextureView)>,
+    ) {
+        let (bent_in, bent_out) =
+            bent_normals.unwrap_or((&self.bent_in_placeholder, &self.bent_out_placeholder));
+        let view = wgpu::BindingResource::TextureView;
+        ctx.dispatch(
+            &self.upsample,
+            &[
+                self.uniforms.as_entire_binding(),
+                view(linear_depth),
+                view(normals),
+                view(working_depth),
+                view(ao),
+                view(bent_in),
+                view(output),
+                view(bent_out),
+            ],
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gpu::{f32_to_f16, read_texture, read_texture_rgba16f, upload_texture_2d};
+    use crate::normals::pack_oct32;
+    use crate::settings::{Downsample, Resolution, Upsample};
+    use crate::uniforms::ViewUniforms;
+    use crate::{GpuContext, Projection};
+    use glam::Vec3;
+
+    /// Odd on both sides at both scales, so the last blocks hang over the image's edge.
+    const SIZE: [u32; 2] = [37, 23];
+
+    fn gpu() -> GpuContext {
+        GpuContext::headless()
+            .expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
+    }
+
+    /// A value in [0, 1) that looks random from pixel to pixel.
+    fn hash(x: u32, y: u32) -> f32 {
+        let h =
+            (x.wrapping_mul(73_856_093) ^ y.wrapping_mul(19_349_663)).wrapping_mul(2_654_435_761);
+        (h >> 8) as f32 / (1u32 << 24) as f32
+    }
+
+    fn settings(resolution: Resolution, downsample: Downsample, upsample: Upsample) -> AoSettings {
+        AoSettings {
+            resolution,
+            downsample,
+            upsample,
+            ..AoSettings::default()
+        }
+    }
+
+    /// A `ViewUniforms` buffer of `SIZE` at `scale`.
+    fn view_uniforms(gpu: &GpuContext, scale: u32) -> wgpu::Buffer {
+        let buffer = create_uniform_buffer::<ViewUniforms>(&gpu.device, "view");
+        let projection = Projection::perspective(1.0, SIZE[0] as f32 / SIZE[1] as f32, 0.1, None);
+        let uniforms = ViewUniforms::scaled(&projection, SIZE, scale, 0);
+        gpu.queue
+            .write_buffer(&buffer, 0, bytemuck::bytes_of(&uniforms));
+        buffer
+    }
+
+    fn upload(
+        gpu: &GpuContext,
+        size: [u32; 2],
+        format: wgpu::TextureFormat,
+        bytes: &[u8],
+    ) -> wgpu::Texture {
+        upload_texture_2d(&gpu.device, &gpu.queue, "input", size, format, bytes).unwrap()
+    }
+
+    fn target(gpu: &GpuContext, size: [u32; 2], format: wgpu::TextureFormat) -> wgpu::Texture {
+        let usage = wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
+        create_texture_2d(&gpu.device, "output", size, format, usage)
+    }
+
+    fn view(texture: &wgpu::Texture) -> wgpu::TextureView {
+        texture.create_view(&Default::default())
+    }
+
+    fn read<T: bytemuck::Pod>(gpu: &GpuContext, texture: &wgpu::Texture) -> Vec<T> {
+        bytemuck::pod_collect_to_vec(&read_texture(&gpu.device, &gpu.queue, texture).unwrap())
+    }
+
+    /// The downsample's depth, "normals" and motion vectors of full-resolution `depth`, with
+    /// each pixel's index as its normal bits and its coordinates as its motion.
+    fn downsample(
+        gpu: &GpuContext,
+        pass: &ResamplePass,
+        settings: &AoSettings,
+        depth: &[f32],
+    ) -> (Vec<f32>, Vec<u32>, Vec<[f32; 2]>) {
+        let working = settings.resolution.working_size(SIZE);
+        let index: Vec<u32> = (0..SIZE[0] * SIZE[1]).collect();
+        let motion: Vec<[f32; 2]> = index
+            .iter()
+            .map(|i| [(i % SIZE[0]) as f32, (i / SIZE[0]) as f32])
+            .collect();
+        let inputs = [
+            upload(
+                gpu,
+                SIZE,
+                wgpu::TextureFormat::R32Float,
+                bytemuck::cast_slice(depth),
+            ),
+            upload(gpu, SIZE, NORMALS_FORMAT, bytemuck::cast_slice(&index)),
+            upload(
+                gpu,
+                SIZE,
+                wgpu::TextureFormat::Rg32Float,
+                bytemuck::cast_slice(&motion),
+            ),
+        ];
+        let outputs = [
+            target(gpu, working, LINEAR_DEPTH_FORMAT),
+            target(gpu, working, NORMALS_FORMAT),
+            target(gpu, working, WORKING_MOTION_FORMAT),
+        ];
+        let views = outputs.each_ref().map(view);
+        let uniforms = view_uniforms(gpu, settings.resolution.scale());
+        pass.prepare(&gpu.queue, settings, true, false);
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        pass.downsample(
+            &mut PassContext {
+                device: &gpu.device,
+                encoder: &mut encoder,
+                view_uniforms: &uniforms,
+                size: working,
+                timer: None,
+            },
+            &view(&inputs[0]),
+            &view(&inputs[1]),
+            Some(&view(&inputs[2])),
+            &DownsampleTargets {
+                linear_depth: &views[0],
+                normals: &views[1],
+                motion_vectors: Some(&views[2]),
+            },
+        );
+        gpu.queue.submit([encoder.finish()]);
+        (
+            read(gpu, &outputs[0]),
+            read(gpu, &outputs[1]),
+            read(gpu, &outputs[2]),
+        )
+    }
+
+    /// The pixel the downsample should take for working texel `(x, y)`, by the definitions in
+    /// docs/denoise.md: pixels of the block (clamped to the image) in row order, the first of
+    /// equal depths winning.
+    fn expected_pixel(depth: &[f32], mode: Downsample, scale: u32, x: u32, y: u32) -> u32 {
+        let clamp = |px: u32, py: u32| px.min(SIZE[0] - 1) + py.min(SIZE[1] - 1) * SIZE[0];
+        let block = (0..scale * scale).map(|i| clamp(x * scale + i % scale, y * scale + i / scale));
+        // No surface (0) counts as farthest.
+        let distance = |i: &u32| match depth[*i as usize] {
+            0.0 => f32::INFINITY,
+            d => d,
+        };
+        let nearest = || {
+            block
+                .clone()
+                .reduce(|a, b| if distance(&b) < distance(&a) { b } else { a })
+        };
+        let farthest = || {
+            block
+                .clone()
+                .reduce(|a, b| if distance(&b) > distance(&a) { b } else { a })
+        };
+        match mode {
+            Downsample::Point => clamp(x * scale + scale / 2 - 1, y * scale + scale / 2 - 1),
+            Downsample::Min => nearest().unwrap(),
+            Downsample::Max => farthest().unwrap(),
+            Downsample::Checkerboard if (x + y).is_multiple_of(2) => nearest().unwrap(),
+            Downsample::Checkerboard => farthest().unwrap(),
+        }
+    }
+
+    #[test]
+    fn each_downsample_takes_the_pixel_it_names_with_its_normal_and_motion() {
+        let gpu = gpu();
+        let pass = ResamplePass::new(&gpu.device);
+        // Random depths, a few repeated (ties), and sky in a sprinkling of pixels and in whole
+        // blocks of the top rows.
+        let depth: Vec<f32> = (0..SIZE[0] * SIZE[1])
+            .map(|i| {
+                let (x, y) = (i % SIZE[0], i / SIZE[0]);
+                let h = hash(x, y);
+                if (y < 4 && x < 8) || h < 0.1 {
+                    0.0
+                } else {
+                    1.0 + (8.0 * h).floor()
+                }
+            })
+            .collect();
+        for resolution in [Resolution::Half, Resolution::Quarter] {
+            let scale = resolution.scale();
+            let working = resolution.working_size(SIZE);
+            for mode in Downsample::ALL {
+                let s = settings(resolution, mode, Upsample::default());
+                let (depths, pixels, motion) = downsample(&gpu, &pass, &s, &depth);
+                for y in 0..working[1] {
+                    for x in 0..working[0] {
+                        let i = (x + y * working[0]) as usize;
+                        let want = expected_pixel(&depth, mode, scale, x, y);
+                        let at = format!("{} {} texel ({x}, {y})", resolution.name(), mode.name());
+                        assert_eq!(pixels[i], want, "{at}: normal");
+                        assert_eq!(depths[i], depth[want as usize], "{at}: depth");
+                        let xy = [(want % SIZE[0]) as f32, (want / SIZE[0]) as f32];
+                        assert_eq!(motion[i], xy.map(|v| v / scale as f32), "{at}: motion");
+                    }
+                }
+            }
+        }
+    }
+
+    /// Sky in the top 3 rows, but for the pixel `LOST`; below, a near plane (depth about 2)
+    /// left of column `STEP_X`, a far one (depth about 6) right of it, both slightly slanted.
+    const STEP_X: u32 = 13;
+    /// A surface pixel in the sky that no working texel takes at either scale (a pole thinner
+    /// than a block), facing up.
+    const LOST: (u32, u32) = (21, 0);
+
+    /// Where `step_depth` shows a surface and which: no surface, near, far, or `LOST`.
+    #[derive(PartialEq)]
+    enum Region {
+        Sky,
+        Near,
+        Far,
+        Lost,
+    }
+
+    fn region(x: u32, y: u32) -> Region {
+        match (y < 3, x < STEP_X) {
+            _ if (x, y) == LOST => Region::Lost,
+            (true, _) => Region::Sky,
+            (false, true) => Region::Near,
+            (false, false) => Region::Far,
+        }
+    }
+
+    fn step_depth(x: u32, y: u32) -> f32 {
+        match region(x, y) {
+            Region::Sky => 0.0,
+            Region::Near | Region::Lost => 2.0 + 0.01 * y as f32,
+            Region::Far => 6.0 + 0.02 * x as f32,
+        }
+    }
+
+    /// Upsamples working AO `ao(depth)` and bent normals `(0.6, 0, 0.8, ao)` over working depth
+    /// taken from `step_depth` by the point rule; returns the full-resolution AO and bent
+    /// normals.
+    fn upsample(
+        gpu: &GpuContext,
+        pass: &ResamplePass,
+        settings: &AoSettings,
+        ao: impl Fn(f32) -> f32,
+    ) -> (Vec<f32>, Vec<[f32; 4]>) {
+        let scale = settings.resolution.scale();
+        let working = settings.resolution.working_size(SIZE);
+        let full_depth: Vec<f32> = (0..SIZE[0] * SIZE[1])
+            .map(|i| step_depth(i % SIZE[0], i / SIZE[0]))
+            .collect();
+        let normals: Vec<u32> = (0..SIZE[0] * SIZE[1])
+            .map(|i| match region(i % SIZE[0], i / SIZE[0]) {
+                Region::Lost => pack_oct32(Vec3::Y),
+                _ => pack_oct32(Vec3::Z),
+            })
+            .collect();
+        let point = |c: u32, side: u32| (c * scale + scale / 2 - 1).min(side - 1);
+        let working_depth: Vec<f32> = (0..working[0] * working[1])
+            .map(|i| {
+                step_depth(
+                    point(i % working[0], SIZE[0]),
+                    point(i / working[0], SIZE[1]),
+                )
+            })
+            .collect();
+        let working_ao: Vec<f32> = working_depth.iter().map(|&d| ao(d)).collect();
+        let bent: Vec<u16> = working_ao
+            .iter()
+            .flat_map(|&a| [0.6, 0.0, 0.8, a].map(f32_to_f16))
+            .collect();
+        let float = wgpu::TextureFormat::R32Float;
+        let inputs = [
+            upload(gpu, SIZE, float, bytemuck::cast_slice(&full_depth)),
+            upload(gpu, SIZE, NORMALS_FORMAT, bytemuck::cast_slice(&normals)),
+            upload(gpu, working, float, bytemuck::cast_slice(&working_depth)),
+            upload(gpu, working, float, bytemuck::cast_slice(&working_ao)),
+            upload(
+                gpu,
+                working,
+                BENT_NORMALS_FORMAT,
+                bytemuck::cast_slice(&bent),
+            ),
+        ];
+        let inputs = inputs.each_ref().map(view);
+        let outputs = [
+            target(gpu, SIZE, AO_FORMAT),
+            target(gpu, SIZE, BENT_NORMALS_FORMAT),
+        ];
+        let uniforms = view_uniforms(gpu, 1);
+        pass.prepare(&gpu.queue, settings, false, true);
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        pass.upsample(
+            &mut PassContext {
+                device: &gpu.device,
+                encoder: &mut encoder,
+                view_uniforms: &uniforms,
+                size: SIZE,
+                timer: None,
+            },
+            &inputs[0],
+            &inputs[1],
+            &inputs[2],
+            &inputs[3],
+            &view(&outputs[0]),
+            Some((&inputs[4], &view(&outputs[1]))),
+        );
+        gpu.queue.submit([encoder.finish()]);
+        (
+            read(gpu, &outputs[0]),
+            read_texture_rgba16f(&gpu.device, &gpu.queue, &outputs[1]).unwrap(),
+        )
+    }
+
+    fn every_upsample() -> impl Iterator<Item = AoSettings> {
+        [Resolution::Half, Resolution::Quarter]
+            .into_iter()
+            .flat_map(|r| Upsample::ALL.map(|u| settings(r, Downsample::Point, u)))
+    }
+
+    #[test]
+    fn upsampling_keeps_each_side_of_a_depth_step_and_sky_stays_one() {
+        let gpu = gpu();
+        let pass = ResamplePass::new(&gpu.device);
+        let near_ao = 0.2;
+        let far_ao = 0.8;
+        for s in every_upsample() {
+            let (ao, _) = upsample(&gpu, &pass, &s, |d| if d < 4.0 { near_ao } else { far_ao });
+            for (i, &a) in ao.iter().enumerate() {
+                let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
+                // The lost pixel: nothing was sampled there, so nothing occludes it.
+                let want = match region(x, y) {
+                    Region::Sky | Region::Lost => 1.0,
+                    Region::Near => near_ao,
+                    Region::Far => far_ao,
+                };
+                assert_eq!(
+                    a,
+                    want,
+                    "{} {}: pixel ({x}, {y})",
+                    s.resolution.name(),
+                    s.upsample.name()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn constant_ao_and_bent_normals_upsample_to_themselves() {
+        let gpu = gpu();
+        let pass = ResamplePass::new(&gpu.device);
+        let constant = 0.37;
+        for s in every_upsample() {
+            let (ao, bent) = upsample(&gpu, &pass, &s, |_| constant);
+            for (i, (&a, b)) in ao.iter().zip(&bent).enumerate() {
+                let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
+                let at = format!(
+                    "{} {}: pixel ({x}, {y})",
+                    s.resolution.name(),
+                    s.upsample.name()
+                );
+                // Half floats: about 3 decimal digits.
+                let (want_ao, want_bent) = match region(x, y) {
+                    Region::Sky => (1.0, [0.0, 0.0, 0.0, 1.0]),
+                    Region::Lost => (1.0, [0.0, 1.0, 0.0, 1.0]),
+                    Region::Near | Region::Far => (constant, [0.6, 0.0, 0.8, constant]),
+                };
+                assert_eq!(a, want_ao, "{at}");
+                assert!(
+                    b.iter().zip(want_bent).all(|(b, w)| (b - w).abs() < 2e-3),
+                    "{at}: {b:?}"
+                );
+            }
+        }
+    }
+}
