@@ -50,7 +50,9 @@ pub struct RenderArgs {
     pub roughness: Option<f32>,
     /// Render a sequence of this many frames along --path, each reprojecting the last (the
     /// temporal filter, when on, accumulates over them): writes frames/ao-NNN.png and
-    /// lit-NNN.png, animated ao.gif and lit.gif, and the last frame as ao.png, ao.exr, lit.png.
+    /// lit-NNN.png, animated ao.gif and lit.gif, and the last frame as ao.png, ao.exr, lit.png;
+    /// with the temporal filter on, rejected.png (and frames/rejected-NNN.png): white where the
+    /// frame rejected its history.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub frames: u32,
     /// How the camera moves over the frames: still, orbit (40 degrees about the target), dolly
@@ -187,6 +189,13 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 frame.size,
                 &frame.lit,
             )?;
+            if let Some((rejected, size)) = &frame.history_rejected {
+                write_grey_png(
+                    &frames.join(format!("rejected-{i:03}.png")),
+                    *size,
+                    rejected,
+                )?;
+            }
             previews.0.push(grey_to_rgba(&frame.ao));
             previews.1.push(frame.lit.clone());
         }
@@ -197,6 +206,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     write_exr(&out.join("ao.exr"), frame.size, &[("Y", frame.ao.clone())])?;
     write_rgba_png(&out.join("lit.png"), frame.size, &frame.lit)?;
     let mut written = vec!["ao.png", "ao.exr", "lit.png"];
+    if let Some((rejected, size)) = &frame.history_rejected {
+        write_grey_png(&out.join("rejected.png"), *size, rejected)?;
+        written.push("rejected.png");
+    }
     if args.frames > 1 {
         // 30 frames per second, the pace the sequence would play at.
         write_gif(&out.join("ao.gif"), frame.size, &previews.0, 33)?;

@@ -244,9 +244,26 @@ fn a_camera_path_writes_frames_and_animated_previews() {
         "lit.gif",
         "ao.png",
         "ao.exr",
+        "frames/rejected-003.png",
+        "rejected.png",
     ] {
         assert!(seq.join(file).is_file(), "{file} missing");
     }
+    // The debug view: the first frame has no history on any surface (the sky is 0); the
+    // orbit's last frame keeps most of it and rejects what it newly sees.
+    let rejected = |file: &str| {
+        let mask = image::open(seq.join(file)).unwrap().into_luma8();
+        mask.pixels().filter(|p| p.0[0] > 127).count() as f64 / mask.len() as f64
+    };
+    let (first, last) = (
+        rejected("frames/rejected-000.png"),
+        rejected("rejected.png"),
+    );
+    assert!(first > 0.5, "first frame rejected {first}");
+    assert!(
+        last > 0.0 && last < first / 2.0,
+        "last frame rejected {last}"
+    );
     let gif = std::fs::read(seq.join("ao.gif")).unwrap();
     assert!(gif.starts_with(b"GIF89a"));
     for (args, expected) in [

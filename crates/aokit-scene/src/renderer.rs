@@ -35,8 +35,10 @@ pub struct Frame {
     /// [`NormalsSettings::source`](aokit::NormalsSettings::source) asks.
     pub normals: Vec<Vec3>,
     /// With the temporal filter on, 1 where this frame rejected its history (disocclusions,
-    /// the screen's edges, a reset), 0 where it blended.
-    pub history_rejected: Option<Vec<f32>>,
+    /// the screen's edges, a reset), 0 where it blended, at the size the filters ran at
+    /// ([`AoSettings::filter_resolution`](aokit::AoSettings::filter_resolution)): `size`, or
+    /// below full resolution the working size.
+    pub history_rejected: Option<(Vec<f32>, [u32; 2])>,
     /// View-space bent normals, when the settings given to the [`Renderer`] ask for them (not
     /// when only the composite's GTSO turned them on).
     pub bent_normals: Option<Vec<Vec3>>,
@@ -285,7 +287,11 @@ impl Renderer {
         let ao = read_texture_f32(device, queue, outputs.ao)?;
         let history_rejected = outputs
             .history_rejected
-            .map(|texture| read_texture_f32(device, queue, texture))
+            .map(|texture| {
+                let extent = texture.size();
+                read_texture_f32(device, queue, texture)
+                    .map(|texels| (texels, [extent.width, extent.height]))
+            })
             .transpose()?;
         let bent_normals = outputs
             .bent_normals

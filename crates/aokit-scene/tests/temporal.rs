@@ -251,10 +251,11 @@ fn disocclusions_and_resets_reject_the_history() {
     let scene = Builtin::Room.build();
     let frames = sequence(&gpu, &scene, CameraPath::Orbit, 6, true);
     let rejected = |frame: &Frame| {
-        let mask = frame
+        let (mask, mask_size) = frame
             .history_rejected
             .as_ref()
             .expect("temporal filter is on");
+        assert_eq!(*mask_size, frame.size, "at full resolution");
         let covered = frame.linear_depth.iter().filter(|&&d| d > 0.0).count();
         let hits = mask
             .iter()

@@ -340,7 +340,7 @@ named_enum! {
         Bilateral = "bilateral",
         /// The texels on the pixel's surface, bilinearly weighted (Mixed Resolution Rendering's
         /// bilateral upsample with a threshold for its depth weight). The default: the lowest
-        /// error with both filters, at half and quarter resolution.
+        /// error with both filters at half resolution, or within 0.0002 of it.
         #[default]
         BilateralBilinear = "bilateral-bilinear",
         /// Bilinear where all four texels lie on the pixel's surface, else the one texel of
