@@ -338,3 +338,64 @@ fn each_view_keeps_its_own_history() {
         }
     }
 }
+
+/// With `temporal.filter_current`, a frame without history shows the mean of each pixel's 3x3
+/// neighbours on the same surface (relative depth difference within the threshold).
+#[test]
+fn a_filtered_current_value_is_the_same_surface_mean() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let mut renderer = Renderer::new(&gpu, &scene, &settings(&scene, false)).unwrap();
+    let frame = renderer.render(&gpu, &scene.cameras[0], SIZE, 0).unwrap();
+    let depth = upload_texture_2d(
+        &gpu.device,
+        &gpu.queue,
+        "depth",
+        SIZE,
+        wgpu::TextureFormat::R32Float,
+        bytemuck::cast_slice(&frame.linear_depth),
+    )
+    .unwrap();
+    let mut s = settings(&scene, true);
+    s.temporal.filter_current = true;
+    let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &s).unwrap();
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    let outputs = pipeline
+        .encode(
+            &gpu.device,
+            &gpu.queue,
+            &mut encoder,
+            &AoInputs::new(&depth, frame.projection),
+        )
+        .unwrap();
+    gpu.queue.submit([encoder.finish()]);
+    let read = |texture| read_texture_f32(&gpu.device, &gpu.queue, texture).unwrap();
+    let (filtered, raw) = (read(outputs.ao), read(outputs.raw_ao));
+    let d = &frame.linear_depth;
+    let [w, h] = SIZE.map(|s| s as i32);
+    let threshold = s.temporal.depth_threshold;
+    let mut differs = 0;
+    for y in 0..h {
+        for x in 0..w {
+            let i = (x + y * w) as usize;
+            if d[i] <= 0.0 {
+                assert_eq!(filtered[i], 1.0, "sky at ({x}, {y})");
+                continue;
+            }
+            let same: Vec<f32> = (-1..=1)
+                .flat_map(|dy| (-1..=1).map(move |dx| (dx, dy)))
+                .map(|(dx, dy)| ((x + dx).clamp(0, w - 1) + (y + dy).clamp(0, h - 1) * w) as usize)
+                .filter(|&j| d[j] > 0.0 && (d[j] - d[i]).abs() <= threshold * d[j].min(d[i]))
+                .map(|j| raw[j])
+                .collect();
+            let mean = same.iter().sum::<f32>() / same.len() as f32;
+            assert!(
+                (filtered[i] - mean).abs() < 1e-5,
+                "({x}, {y}): {} against the mean {mean}",
+                filtered[i]
+            );
+            differs += usize::from(filtered[i] != raw[i]);
+        }
+    }
+    assert!(differs > 0, "the filter changed nothing");
+}

@@ -6,8 +6,9 @@
 // (variance clipping); the pixel's view position goes back through the previous
 // camera (or the renderer's motion vectors) to where it was; the history there is read from the
 // 2x2 texels whose depth agrees with the expected one, clipped to mean +- gamma * spread, and
-// blended with the pixel's own value (blending the 3x3 mean instead blurred contact shadows and
-// measured worse). History is rejected, and the current value used alone, off screen, where no
+// blended with the current value: the pixel's own, or with `filter_current` the 3x3 same-surface
+// mean (seed 001's filtered current value, which blurs contact shadows and measured worse, see
+// docs/denoise.md). History is rejected, and the current value used alone, off screen, where no
 // history texel lies on the same surface (a disocclusion), and after a camera cut.
 // Mirrors `TemporalUniforms` in uniforms.rs.
 
@@ -28,6 +29,7 @@ struct TemporalUniforms {
 
 const FLAG_HISTORY: u32 = 1u;
 const FLAG_MOTION_VECTORS: u32 = 2u;
+const FLAG_FILTER_CURRENT: u32 = 4u;
 
 @group(0) @binding(1) var<uniform> temporal: TemporalUniforms;
 @group(0) @binding(2) var ao_in: texture_2d<f32>;
@@ -102,7 +104,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     let mean = sum / count;
     let spread = sqrt(max(sum_squares / count - mean * mean, 0.0));
-    let current = textureLoad(ao_in, pixel, 0).r;
+    let current = select(textureLoad(ao_in, pixel, 0).r, mean,
+                         (temporal.flags & FLAG_FILTER_CURRENT) != 0u);
 
     if (temporal.flags & FLAG_HISTORY) == 0u {
         store(id.xy, current, depth, true);

@@ -255,6 +255,11 @@ pub struct TemporalSettings {
     /// Relative depth difference above which the reprojected history shows another surface
     /// and is not used (a disocclusion).
     pub depth_threshold: f32,
+    /// Blend the mean of the pixel's 3x3 same-surface neighbours instead of its own value
+    /// (seed 001's depth-aware filtered current value): less noise where the history is
+    /// rejected, but a blur of contact shadows everywhere, and more error on a still camera
+    /// (docs/denoise.md).
+    pub filter_current: bool,
 }
 
 impl Default for TemporalSettings {
@@ -270,6 +275,7 @@ impl Default for TemporalSettings {
             // 5%: wider than a grazing plane changes between neighbouring texels at 60 degrees
             // field of view, narrower than the gap between an object and what lies behind it.
             depth_threshold: 0.05,
+            filter_current: false,
         }
     }
 }

@@ -208,6 +208,8 @@ pub(crate) mod temporal_flags {
     pub const HISTORY: u32 = 1;
     /// Motion vectors replace the camera reprojection.
     pub const MOTION_VECTORS: u32 = 2;
+    /// Blend the 3x3 same-surface mean instead of the pixel's own value.
+    pub const FILTER_CURRENT: u32 = 4;
 }
 
 impl TemporalUniforms {
@@ -225,6 +227,9 @@ impl TemporalUniforms {
         }
         if motion_vectors {
             flags |= temporal_flags::MOTION_VECTORS;
+        }
+        if settings.filter_current {
+            flags |= temporal_flags::FILTER_CURRENT;
         }
         Self {
             prev_view_from_view: transform.unwrap_or(glam::Mat4::IDENTITY).to_cols_array_2d(),
@@ -382,6 +387,14 @@ mod tests {
             size_of::<TemporalUniforms>(),
         )
         .unwrap();
+        let module = shader::TEMPORAL_FILTER.validate().unwrap();
+        for (name, bit) in [
+            ("FLAG_HISTORY", temporal_flags::HISTORY),
+            ("FLAG_MOTION_VECTORS", temporal_flags::MOTION_VECTORS),
+            ("FLAG_FILTER_CURRENT", temporal_flags::FILTER_CURRENT),
+        ] {
+            assert_eq!(shader::u32_constant(&module, name), Some(bit), "{name}");
+        }
     }
 
     #[test]
