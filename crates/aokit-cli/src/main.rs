@@ -1,6 +1,7 @@
 //! `aokit`: render scenes with screen-space AO, headless.
 
 mod ao;
+mod bench;
 mod cache;
 mod camera_args;
 mod compare;
@@ -32,6 +33,9 @@ enum Command {
     Ao(ao::AoArgs),
     /// Score methods and presets against the reference: metrics, error maps, report.html.
     Compare(compare::CompareArgs),
+    /// Time the AO passes alone on one G-buffer: GPU time per pass, CPU encode time; with
+    /// --compare, several configurations interleaved.
+    Bench(bench::BenchArgs),
 }
 
 fn main() -> ExitCode {
@@ -41,6 +45,7 @@ fn main() -> ExitCode {
         Command::Reference(args) => reference::run(&args),
         Command::Ao(args) => ao::run(&args),
         Command::Compare(args) => compare::run(&args),
+        Command::Bench(args) => bench::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -176,6 +176,82 @@ impl Renderer {
         camera.projection(size[0] as f32 / size[1] as f32, &self.bounds)
     }
 
+    /// [`Renderer::projection`], after checking that `size` fits the device and that the camera
+    /// and its projection are usable.
+    fn checked_projection(
+        &self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        size: [u32; 2],
+    ) -> Result<Projection, RenderError> {
+        let max = gpu.device.limits().max_texture_dimension_2d;
+        let [width, height] = size;
+        if width == 0 || height == 0 || width > max || height > max {
+            return Err(RenderError::Size {
+                width,
+                height,
+                reason: format!("each side must be between 1 and {max} pixels on this device"),
+            });
+        }
+        camera.validate().map_err(RenderError::Camera)?;
+        let projection = self.projection(camera, size);
+        projection
+            .validate()
+            .map_err(|e| RenderError::Camera(format!("camera `{}`: {e}", camera.name)))?;
+        Ok(projection)
+    }
+
+    /// Records the G-buffer of the mesh as placed, seen by `camera`, into a new [`GBuffer`].
+    fn draw_gbuffer(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        size: [u32; 2],
+        encoding: aokit::NormalEncoding,
+        camera: &GBufferCamera<'_>,
+    ) -> GBuffer {
+        let gbuffer = GBuffer::new(&gpu.device, size, encoding);
+        self.gbuffer_pass
+            .encode(gpu, encoder, &self.mesh, camera, &gbuffer);
+        gbuffer
+    }
+
+    /// Rasterises only the G-buffer of `camera` at `size`, normals in `encoding`, with the
+    /// scene at rest and standing still (motion vectors 0), and submits it; returns it with
+    /// the projection it was drawn with. No AO, shadow or lighting pass runs, and the
+    /// sequence [`Renderer::render`] keeps (history, previous camera) is left as it was.
+    ///
+    /// For running an [`AoPipeline`] of one's own on the G-buffer: `aokit bench` does, to time
+    /// the AO passes alone, on [`GBuffer::depth`], [`GBuffer::normals`] and
+    /// [`GBuffer::motion`] with the returned projection and `camera.view_from_world()`.
+    pub fn render_gbuffer(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        size: [u32; 2],
+        encoding: aokit::NormalEncoding,
+    ) -> Result<(GBuffer, Projection), RenderError> {
+        let projection = self.checked_projection(gpu, camera, size)?;
+        let view_from_world = camera.view_from_world();
+        // Standing still: the previous frame is this one.
+        let previous_clip_from_world = projection.clip_from_view() * view_from_world;
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        self.mesh.place(&gpu.queue, 0.0, 0.0);
+        let gbuffer = self.draw_gbuffer(
+            gpu,
+            &mut encoder,
+            size,
+            encoding,
+            &GBufferCamera {
+                view_from_world,
+                projection: &projection,
+                previous_clip_from_world,
+            },
+        );
+        gpu.queue.submit([encoder.finish()]);
+        Ok((gbuffer, projection))
+    }
+
     /// Renders G-buffer, AO and lit image for `camera` at `size` with the scene at rest, and
     /// reads them back: [`Renderer::render_at`] at time 0.
     pub fn render(
@@ -200,20 +276,7 @@ impl Renderer {
         frame_index: u32,
         time: f32,
     ) -> Result<Frame, RenderError> {
-        let max = gpu.device.limits().max_texture_dimension_2d;
-        let [width, height] = size;
-        if width == 0 || height == 0 || width > max || height > max {
-            return Err(RenderError::Size {
-                width,
-                height,
-                reason: format!("each side must be between 1 and {max} pixels on this device"),
-            });
-        }
-        camera.validate().map_err(RenderError::Camera)?;
-        let projection = self.projection(camera, size);
-        projection
-            .validate()
-            .map_err(|e| RenderError::Camera(format!("camera `{}`: {e}", camera.name)))?;
+        let projection = self.checked_projection(gpu, camera, size)?;
         let view_from_world = camera.view_from_world();
         let (device, queue) = (&gpu.device, &gpu.queue);
         // `lighting` is a public field, changed at any time: follow its need for bent normals.
@@ -230,7 +293,6 @@ impl Renderer {
             .unwrap_or((clip_from_world, time));
         self.mesh.place(queue, time, previous_time);
 
-        let gbuffer = GBuffer::new(device, size, self.settings.normals.encoding);
         let lit = create_texture_2d(
             device,
             "lit",
@@ -239,16 +301,16 @@ impl Renderer {
             wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
         );
         let mut encoder = device.create_command_encoder(&Default::default());
-        self.gbuffer_pass.encode(
+        let gbuffer = self.draw_gbuffer(
             gpu,
             &mut encoder,
-            &self.mesh,
+            size,
+            self.settings.normals.encoding,
             &GBufferCamera {
                 view_from_world,
                 projection: &projection,
                 previous_clip_from_world,
             },
-            &gbuffer,
         );
         let outputs = self.ao.encode(
             device,

@@ -1,0 +1,696 @@
+//! `aokit bench`: times the AO pipeline alone on one rasterised G-buffer, per pass on the GPU
+//! (timestamp queries), and its CPU encode; `--compare` times several configurations
+//! interleaved frame by frame.
+
+use std::collections::HashMap;
+use std::collections::hash_map::Entry;
+use std::ffi::OsString;
+use std::time::Instant;
+
+use anyhow::{Context, Result, anyhow, bail};
+use aokit::{AdapterKind, AoInputs, AoPipeline, AoSettings, GpuContext, PassTime, Projection};
+use aokit_scene::gbuffer::GBuffer;
+use aokit_scene::{Renderer, Scene};
+use clap::{Args, Parser};
+use glam::Mat4;
+use serde_json::{Value, json};
+
+use crate::camera_args::CameraArgs;
+use crate::render::{open_gpu, parse_size};
+use crate::settings_args::SettingsArgs;
+
+#[derive(Args, Debug, Clone)]
+pub struct BenchArgs {
+    /// Built-in scene (room, stairs, thin, open) or a .gltf/.glb/.obj file.
+    #[arg(long, default_value = "room")]
+    pub scene: String,
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// Image size.
+    #[arg(long, value_name = "WxH", default_value = "1920x1080", value_parser = parse_size)]
+    pub size: [u32; 2],
+    #[command(flatten)]
+    pub settings: SettingsArgs,
+    /// Timed frames; the statistics are over these.
+    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES))]
+    pub frames: u32,
+    /// Untimed frames before the timed ones (shader compilation, caches, temporal history).
+    #[arg(long, value_name = "N", default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=MAX_FRAMES))]
+    pub warmup: u32,
+    /// Print one JSON object (with --compare, an array of them) on stdout instead of tables.
+    #[arg(long)]
+    pub json: bool,
+    /// Time several configurations against each other, interleaved: each ARGS is a set of
+    /// bench options (e.g. "--method hbao --set resolution=half") laid over the options given
+    /// before --compare. Takes every argument after it, so it comes last.
+    #[arg(long, value_name = "ARGS", num_args = 1.., allow_hyphen_values = true)]
+    pub compare: Vec<String>,
+}
+
+/// Most frames `--frames` and `--warmup` take: a limit against typing mistakes, minutes of
+/// work even for a fast GPU at 4K.
+const MAX_FRAMES: i64 = 100_000;
+
+/// One `--compare` configuration, parsed by the same flags as `aokit bench`; an option given
+/// again replaces the shared one, `--set` adds to the shared ones.
+#[derive(Parser, Debug)]
+#[command(name = "aokit bench --compare", args_override_self = true)]
+struct Configuration {
+    #[command(flatten)]
+    args: BenchArgs,
+}
+
+/// Splits `text` into words as a shell would: at whitespace, with "double" and 'single' quotes
+/// grouping and a backslash escaping the next character (not inside single quotes).
+pub fn split_words(text: &str) -> Result<Vec<String>, String> {
+    let mut words = Vec::new();
+    let mut word = String::new();
+    let mut in_word = false;
+    let mut chars = text.chars();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' | '\'' => {
+                in_word = true;
+                loop {
+                    match chars.next() {
+                        Some(q) if q == c => break,
+                        Some('\\') if c == '"' => match chars.next() {
+                            Some(escaped) => word.push(escaped),
+                            None => return Err(format!("`{text}` ends inside a {c} quote")),
+                        },
+                        Some(other) => word.push(other),
+                        None => return Err(format!("`{text}` ends inside a {c} quote")),
+                    }
+                }
+            }
+            '\\' => {
+                in_word = true;
+                word.push(
+                    chars
+                        .next()
+                        .ok_or_else(|| format!("`{text}` ends with a backslash"))?,
+                );
+            }
+            c if c.is_whitespace() => {
+                if in_word {
+                    words.push(std::mem::take(&mut word));
+                    in_word = false;
+                }
+            }
+            c => {
+                in_word = true;
+                word.push(c);
+            }
+        }
+    }
+    if in_word {
+        words.push(word);
+    }
+    Ok(words)
+}
+
+/// The options of an `aokit bench` command line (`argv` as the process got it) before
+/// `--compare`: the ones every configuration shares.
+fn shared_words(argv: &[OsString]) -> Vec<OsString> {
+    argv.iter()
+        .skip(1)
+        .skip_while(|word| *word != "bench")
+        .skip(1)
+        .take_while(|word| {
+            let word = word.to_string_lossy();
+            word != "--compare" && !word.starts_with("--compare=")
+        })
+        .cloned()
+        .collect()
+}
+
+/// The configurations to time, each with its label: this command line's, or each `--compare`
+/// entry laid over the options before `--compare`.
+fn configurations(args: &BenchArgs) -> Result<Vec<(String, BenchArgs)>> {
+    if args.compare.is_empty() {
+        return Ok(vec![(String::new(), args.clone())]);
+    }
+    let shared = shared_words(&std::env::args_os().collect::<Vec<_>>());
+    let mut configurations = Vec::new();
+    for (i, entry) in args.compare.iter().enumerate() {
+        let name = format!("--compare configuration {} (`{entry}`)", i + 1);
+        let words = split_words(entry).map_err(|e| anyhow!("{name}: {e}"))?;
+        let argv = std::iter::once(OsString::from("bench"))
+            .chain(shared.iter().cloned())
+            .chain(words.into_iter().map(OsString::from));
+        let parsed = Configuration::try_parse_from(argv).map_err(|e| {
+            // clap's first paragraph names the problem; its usage lines are of no help here.
+            let message = e.to_string();
+            let message = message.split("\n\n").next().unwrap_or_default();
+            anyhow!(
+                "{name}: {}",
+                message.trim_start_matches("error: ").trim_end()
+            )
+        })?;
+        let config = parsed.args;
+        if !config.compare.is_empty() {
+            bail!("{name}: a configuration cannot hold --compare");
+        }
+        if config.json != args.json || config.frames != args.frames || config.warmup != args.warmup
+        {
+            bail!(
+                "{name}: --json, --frames and --warmup apply to the whole run (its frames \
+                 interleave); give them before --compare"
+            );
+        }
+        configurations.push((entry.trim().to_string(), config));
+    }
+    Ok(configurations)
+}
+
+/// Median and the 10th and 90th percentiles of a set of times, in milliseconds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stats {
+    pub median: f64,
+    pub p10: f64,
+    pub p90: f64,
+}
+
+impl Stats {
+    /// The statistics of `values`, interpolating linearly between the nearest ranks (as
+    /// numpy's default); `None` when empty.
+    pub fn of(values: &[f64]) -> Option<Stats> {
+        if values.is_empty() {
+            return None;
+        }
+        let mut sorted = values.to_vec();
+        sorted.sort_by(f64::total_cmp);
+        let at = |p: f64| {
+            let rank = p * (sorted.len() - 1) as f64;
+            let (lo, hi) = (rank.floor() as usize, rank.ceil() as usize);
+            sorted[lo] + (sorted[hi] - sorted[lo]) * (rank - lo as f64)
+        };
+        Some(Stats {
+            median: at(0.5),
+            p10: at(0.1),
+            p90: at(0.9),
+        })
+    }
+
+    fn json(&self) -> Value {
+        json!({ "median": self.median, "p10": self.p10, "p90": self.p90 })
+    }
+}
+
+/// What `--compare`'s ratios compare.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Basis {
+    /// The GPU time of whole frames, from timestamps: on hardware adapters.
+    GpuTotal,
+    /// The wall time from submit until idle: without timestamps, and on software adapters,
+    /// whose timestamps need not bracket the compute work.
+    Wall,
+}
+
+impl Basis {
+    /// The JSON field it is the median of.
+    fn field(self) -> &'static str {
+        match self {
+            Basis::GpuTotal => "total_gpu_ms",
+            Basis::Wall => "wall_ms",
+        }
+    }
+}
+
+/// One configuration's pipeline and what its timed frames measured.
+struct Run {
+    label: String,
+    args: BenchArgs,
+    settings: AoSettings,
+    pipeline: AoPipeline,
+    /// Per timed frame: each pass's GPU time (with timestamps).
+    pass_times: Vec<Vec<PassTime>>,
+    /// Per timed frame: milliseconds in [`AoPipeline::encode`].
+    encode_ms: Vec<f64>,
+    /// Per timed frame: milliseconds from submit until the device was idle.
+    wall_ms: Vec<f64>,
+}
+
+/// The G-buffer the configurations share (one per normal encoding they ask for).
+struct View {
+    gbuffers: HashMap<aokit::NormalEncoding, GBuffer>,
+    projection: Projection,
+    view_from_world: Mat4,
+}
+
+impl Run {
+    /// Encodes, submits and waits for one frame; records its times when `record`.
+    fn frame(
+        &mut self,
+        gpu: &GpuContext,
+        view: &View,
+        frame_index: u32,
+        record: bool,
+    ) -> Result<()> {
+        let (device, queue) = (&gpu.device, &gpu.queue);
+        let gbuffer = &view.gbuffers[&self.settings.normals.encoding];
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let start = Instant::now();
+        self.pipeline.encode(
+            device,
+            queue,
+            &mut encoder,
+            &AoInputs {
+                normals: Some(&gbuffer.normals),
+                view_from_world: view.view_from_world,
+                frame_index,
+                motion_vectors: Some(&gbuffer.motion),
+                ..AoInputs::new(&gbuffer.depth, view.projection)
+            },
+        )?;
+        let encode_ms = start.elapsed().as_secs_f64() * 1e3;
+        let commands = encoder.finish();
+        let start = Instant::now();
+        queue.submit([commands]);
+        device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
+        let wall_ms = start.elapsed().as_secs_f64() * 1e3;
+        if record {
+            self.encode_ms.push(encode_ms);
+            self.wall_ms.push(wall_ms);
+            if let Some(times) = self.pipeline.last_pass_times(device) {
+                self.pass_times.push(times?);
+            }
+        }
+        Ok(())
+    }
+
+    /// Each pass's statistics, in the order the pipeline runs them; a pass that runs twice in
+    /// a frame (under one shader name) is two rows. `None` without timestamps.
+    fn pass_stats(&self) -> Option<Vec<(&'static str, Stats)>> {
+        if self.pass_times.is_empty() {
+            return None;
+        }
+        let mut rows: Vec<((&'static str, usize), Vec<f64>)> = Vec::new();
+        for frame in &self.pass_times {
+            let mut seen: HashMap<&'static str, usize> = HashMap::new();
+            for pass in frame {
+                let occurrence = seen.entry(pass.name).or_default();
+                let key = (pass.name, *occurrence);
+                *occurrence += 1;
+                match rows.iter_mut().find(|(k, _)| *k == key) {
+                    Some((_, values)) => values.push(pass.ms),
+                    None => rows.push((key, vec![pass.ms])),
+                }
+            }
+        }
+        Some(
+            rows.into_iter()
+                .filter_map(|((name, _), values)| Stats::of(&values).map(|s| (name, s)))
+                .collect(),
+        )
+    }
+
+    /// The GPU time of whole frames: the sum of their passes.
+    fn total_gpu(&self) -> Option<Stats> {
+        let totals: Vec<f64> = self
+            .pass_times
+            .iter()
+            .map(|frame| frame.iter().map(|p| p.ms).sum())
+            .collect();
+        Stats::of(&totals)
+    }
+
+    /// The median `--compare`'s ratios compare.
+    fn median(&self, basis: Basis) -> f64 {
+        match basis {
+            Basis::GpuTotal => self.total_gpu(),
+            Basis::Wall => Stats::of(&self.wall_ms),
+        }
+        .map_or(f64::NAN, |s| s.median)
+    }
+
+    /// The preset's name, with the overrides laid over it.
+    fn preset_label(&self) -> String {
+        let s = &self.args.settings;
+        let mut label = s.preset.clone().unwrap_or_else(|| "high".into());
+        let mut extra: Vec<String> = Vec::new();
+        if let Some(radius) = s.radius {
+            extra.push(format!("--radius {radius}"));
+        }
+        if let Some(file) = &s.overrides.settings {
+            extra.push(format!("--settings {}", file.display()));
+        }
+        extra.extend(s.overrides.set.iter().map(|kv| format!("--set {kv}")));
+        if !extra.is_empty() {
+            label = format!("{label} + {}", extra.join(" "));
+        }
+        label
+    }
+
+    fn json(&self, gpu: &GpuContext, scene: &Scene, camera: &str) -> Result<Value> {
+        let stats = |s: Option<Stats>| s.map_or(Value::Null, |s| s.json());
+        Ok(json!({
+            "adapter": gpu.describe(),
+            "backend": format!("{:?}", gpu.adapter_info.backend),
+            "scene": scene.name,
+            "camera": camera,
+            "size": self.args.size,
+            "frames": self.args.frames,
+            "warmup": self.args.warmup,
+            // Through text, so that the f32 settings read as written (0.1, not 0.100000001).
+            "settings": serde_json::from_str::<Value>(&serde_json::to_string(&self.settings)?)?,
+            "total_gpu_ms": stats(self.total_gpu()),
+            "passes": self.pass_stats().map_or(Value::Null, |passes| {
+                passes
+                    .iter()
+                    .map(|(name, s)| json!({ "name": name, "gpu_ms": s.json() }))
+                    .collect()
+            }),
+            "cpu_encode_ms": stats(Stats::of(&self.encode_ms)),
+            "wall_ms": stats(Stats::of(&self.wall_ms)),
+        }))
+    }
+}
+
+fn ms(v: f64) -> String {
+    format!("{v:.4}")
+}
+
+pub fn run(args: &BenchArgs) -> Result<()> {
+    let configurations = configurations(args)?;
+    let first = &configurations[0].1;
+    let scene = Scene::open(&first.scene)?;
+    for note in &scene.notes {
+        eprintln!("note: {}: {note}", scene.name);
+    }
+    let camera = first.camera.resolve(&scene)?;
+    for (i, (label, config)) in configurations.iter().enumerate().skip(1) {
+        let same_view = config.scene == first.scene
+            && config.size == first.size
+            && config.camera.resolve(&scene)? == camera;
+        if !same_view {
+            bail!(
+                "--compare configuration {} (`{label}`) has another scene, camera or size \
+                 than the first: the configurations run on one G-buffer; give --scene, \
+                 camera options and --size before --compare",
+                i + 1
+            );
+        }
+    }
+    let mut all_settings = Vec::new();
+    for (i, (label, config)) in configurations.iter().enumerate() {
+        let settings = config.settings.resolve(scene.suggested_radius);
+        all_settings.push(if args.compare.is_empty() {
+            settings?
+        } else {
+            settings.with_context(|| format!("--compare configuration {} (`{label}`)", i + 1))?
+        });
+    }
+
+    let gpu = open_gpu()?;
+    let mut renderer = Renderer::new(&gpu, &scene, &all_settings[0])?;
+    let mut gbuffers = HashMap::new();
+    let mut projection = None;
+    for settings in &all_settings {
+        let encoding = settings.normals.encoding;
+        if let Entry::Vacant(slot) = gbuffers.entry(encoding) {
+            let (gbuffer, p) = renderer.render_gbuffer(&gpu, &camera, first.size, encoding)?;
+            slot.insert(gbuffer);
+            projection = Some(p);
+        }
+    }
+    let view = View {
+        gbuffers,
+        projection: projection.expect("at least one configuration"),
+        view_from_world: camera.view_from_world(),
+    };
+    drop(renderer);
+    // The raster done before any frame is timed, --warmup 0 included.
+    gpu.device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
+
+    let mut runs = Vec::new();
+    let mut timed = true;
+    for ((label, config), settings) in configurations.into_iter().zip(all_settings) {
+        let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings)?;
+        timed &= pipeline.enable_timing(&gpu.device, &gpu.queue);
+        runs.push(Run {
+            label,
+            args: config,
+            settings,
+            pipeline,
+            pass_times: Vec::new(),
+            encode_ms: Vec::new(),
+            wall_ms: Vec::new(),
+        });
+    }
+    if !timed {
+        eprintln!(
+            "note: the adapter {} has no TIMESTAMP_QUERY: no GPU times; reporting the CPU \
+             encode time and the wall time from submit until the GPU is idle",
+            gpu.describe()
+        );
+    }
+    let software = gpu.adapter_kind() == AdapterKind::Software;
+    if software {
+        eprintln!(
+            "note: software adapter: absolute times say nothing about a GPU, and its \
+             timestamps need not bracket the compute work (llvmpipe's do not: its GPU times \
+             gather in the last pass and fall far below the wall time); compare wall times, \
+             as --compare's ratios do here"
+        );
+    }
+    let basis = if timed && !software {
+        Basis::GpuTotal
+    } else {
+        Basis::Wall
+    };
+    let (frames, warmup) = (args.frames, args.warmup);
+    // Round-robin: one frame of each configuration per round, so that drift in clocks and
+    // temperature falls on all alike.
+    for round in 0..warmup + frames {
+        for run in &mut runs {
+            run.frame(&gpu, &view, round, round >= warmup)?;
+        }
+    }
+
+    let camera_name = camera.name.as_str();
+    if args.compare.is_empty() {
+        let run = &runs[0];
+        if args.json {
+            println!(
+                "{}",
+                serde_json::to_string_pretty(&run.json(&gpu, &scene, camera_name)?)?
+            );
+        } else {
+            print_one(&gpu, &scene, camera_name, run);
+        }
+    } else {
+        if args.json {
+            let mut array = Vec::new();
+            for run in &runs {
+                let mut object = run.json(&gpu, &scene, camera_name)?;
+                object["configuration"] = json!(run.label);
+                object["ratio_to_first"] = json!(run.median(basis) / runs[0].median(basis));
+                object["ratio_of"] = json!(basis.field());
+                array.push(object);
+            }
+            println!("{}", serde_json::to_string_pretty(&Value::Array(array))?);
+        } else {
+            print_compare(&gpu, &scene, camera_name, &runs, basis);
+        }
+    }
+    Ok(())
+}
+
+/// `name  median  p10  p90` rows.
+fn stats_row(name: &str, width: usize, s: &Stats) -> String {
+    format!(
+        "{name:<width$}  {:>10}  {:>10}  {:>10}",
+        ms(s.median),
+        ms(s.p10),
+        ms(s.p90)
+    )
+}
+
+fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
+    let [w, h] = run.args.size;
+    println!(
+        "adapter: {} | size: {w}x{h} | method: {} | preset: {}",
+        gpu.describe(),
+        run.settings.method.name(),
+        run.preset_label()
+    );
+    println!(
+        "scene `{}`, camera `{camera}`: {} timed frames after {} warm-up",
+        scene.name, run.args.frames, run.args.warmup
+    );
+    match (run.pass_stats(), run.total_gpu()) {
+        (Some(passes), Some(total)) => {
+            let width = passes
+                .iter()
+                .map(|(n, _)| n.len())
+                .max()
+                .unwrap_or(0)
+                .max(5);
+            println!(
+                "{:<width$}  {:>10}  {:>10}  {:>10}",
+                "GPU ms", "median", "p10", "p90"
+            );
+            for (name, s) in &passes {
+                println!("{}", stats_row(name, width, s));
+            }
+            println!("{}", stats_row("total", width, &total));
+        }
+        _ => println!("GPU time: not measured (the adapter has no TIMESTAMP_QUERY)"),
+    }
+    let line = |what: &str, s: Option<Stats>| {
+        if let Some(s) = s {
+            println!(
+                "{what}: median {} ms, p10 {} ms, p90 {} ms",
+                ms(s.median),
+                ms(s.p10),
+                ms(s.p90)
+            );
+        }
+    };
+    line("CPU encode (AoPipeline::encode)", Stats::of(&run.encode_ms));
+    line("wall time (submit until idle)", Stats::of(&run.wall_ms));
+}
+
+fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], basis: Basis) {
+    let [w, h] = runs[0].args.size;
+    println!("adapter: {} | size: {w}x{h}", gpu.describe());
+    println!(
+        "scene `{}`, camera `{camera}`: {} configurations, {} timed frames each after {} \
+         warm-up, interleaved; ratio: of the median {} time",
+        scene.name,
+        runs.len(),
+        runs[0].args.frames,
+        runs[0].args.warmup,
+        match basis {
+            Basis::GpuTotal => "total GPU",
+            Basis::Wall => "wall",
+        }
+    );
+    println!(
+        "{:<3}  {:>10}  {:>10}  {:>10}  {:>10}  {:>7}  {:>10}  configuration (method, preset)",
+        "#", "GPU ms", "p10", "p90", "wall ms", "ratio", "encode ms"
+    );
+    let median = |values: &[f64]| Stats::of(values).map_or(f64::NAN, |s| s.median);
+    for (i, run) in runs.iter().enumerate() {
+        let gpu = run
+            .total_gpu()
+            .map_or(["-".to_string(), "-".into(), "-".into()], |s| {
+                [ms(s.median), ms(s.p10), ms(s.p90)]
+            });
+        println!(
+            "{:<3}  {:>10}  {:>10}  {:>10}  {:>10}  {:>7.3}  {:>10}  {} ({}, {})",
+            i + 1,
+            gpu[0],
+            gpu[1],
+            gpu[2],
+            ms(median(&run.wall_ms)),
+            run.median(basis) / runs[0].median(basis),
+            ms(median(&run.encode_ms)),
+            if run.label.is_empty() {
+                "(shared options)"
+            } else {
+                &run.label
+            },
+            run.settings.method.name(),
+            run.preset_label()
+        );
+    }
+    if runs[0].pass_times.is_empty() {
+        return;
+    }
+    // Per-pass medians, one column per configuration; passes in order of first appearance.
+    let stats: Vec<Vec<(&'static str, Stats)>> = runs
+        .iter()
+        .map(|run| run.pass_stats().unwrap_or_default())
+        .collect();
+    let mut names: Vec<&'static str> = Vec::new();
+    for passes in &stats {
+        for (name, _) in passes {
+            if !names.contains(name) {
+                names.push(name);
+            }
+        }
+    }
+    let width = names.iter().map(|n| n.len()).max().unwrap_or(0).max(6);
+    println!("per-pass GPU median ms:");
+    let header: Vec<String> = (1..=runs.len())
+        .map(|i| format!("{:>10}", format!("#{i}")))
+        .collect();
+    println!("{:<width$}  {}", "pass", header.join("  "));
+    for name in names {
+        let cells: Vec<String> = stats
+            .iter()
+            .map(|passes| {
+                // A pass that runs twice in a frame: its runs added.
+                let matching: Vec<f64> = passes
+                    .iter()
+                    .filter(|(n, _)| *n == name)
+                    .map(|(_, s)| s.median)
+                    .collect();
+                if matching.is_empty() {
+                    format!("{:>10}", "-")
+                } else {
+                    format!("{:>10}", ms(matching.iter().sum()))
+                }
+            })
+            .collect();
+        println!("{name:<width$}  {}", cells.join("  "));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn words_split_like_a_shell() {
+        assert_eq!(
+            split_words(r#"  --method gtao --set "a=b c"  --x 'y z' a\ b "q\"" "#).unwrap(),
+            [
+                "--method", "gtao", "--set", "a=b c", "--x", "y z", "a b", "q\""
+            ]
+        );
+        assert!(split_words("").unwrap().is_empty());
+        assert_eq!(split_words(r#""""#).unwrap(), [""]);
+        assert!(split_words(r#"--set "a"#).is_err());
+        assert!(split_words(r"a\").is_err());
+    }
+
+    #[test]
+    fn shared_words_stop_at_compare() {
+        let argv: Vec<OsString> = [
+            "aokit",
+            "bench",
+            "--size",
+            "8x8",
+            "--compare",
+            "--method hbao",
+            "x",
+        ]
+        .map(OsString::from)
+        .to_vec();
+        assert_eq!(shared_words(&argv), ["--size", "8x8"].map(OsString::from));
+        let argv: Vec<OsString> = ["aokit", "bench", "--json", "--compare=--method hbao"]
+            .map(OsString::from)
+            .to_vec();
+        assert_eq!(shared_words(&argv), ["--json"].map(OsString::from));
+    }
+
+    #[test]
+    fn percentiles_interpolate_between_ranks() {
+        let s = Stats::of(&[4.0, 1.0, 3.0, 2.0, 5.0]).unwrap();
+        assert_eq!(s.median, 3.0);
+        assert!(
+            (s.p10 - 1.4).abs() < 1e-12 && (s.p90 - 4.6).abs() < 1e-12,
+            "{s:?}"
+        );
+        let s = Stats::of(&[7.0]).unwrap();
+        assert_eq!((s.median, s.p10, s.p90), (7.0, 7.0, 7.0));
+        assert!(Stats::of(&[]).is_none());
+    }
+}
