@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Times every method at every preset with `aokit bench`, at full and half resolution, at
+# 1920x1080 and 3840x2160, on `room` and Sponza's atrium: one interleaved `--compare` run per
+# scene, size and resolution, each writing its JSON array to OUT/SCENE-SIZE-RESOLUTION.json.
+# Then GTAO `high` on the atrium with the denoisers, lower resolutions, bent normals and the
+# normal sources, one run per size, to OUT/passes-sponza-atrium-SIZE.json.
+# docs/performance.md's tables come from these files. Meant for a GPU: on a software adapter
+# the per-pass times mean nothing (docs/bench.md).
+#
+#   bash scripts/performance.sh [AOKIT] [OUT]
+#
+# AOKIT defaults to target/release/aokit (build it with `cargo build --release -p aokit-cli`),
+# OUT to target/performance.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+aokit=${1:-target/release/aokit}
+out=${2:-target/performance}
+mkdir -p "$out"
+configurations=()
+for method in ssao-crytek ssao hbao hbao-plus gtao vbao; do
+    for preset in low medium high ultra; do
+        configurations+=("--method $method --preset $preset")
+    done
+done
+for scene in room sponza-atrium; do
+    case $scene in
+        room) view=(--scene room) ;;
+        sponza-atrium) view=(--scene scenes/sponza.obj --camera atrium) ;;
+    esac
+    for size in 1920x1080 3840x2160; do
+        for resolution in full half; do
+            "$aokit" bench "${view[@]}" --size "$size" --set resolution="$resolution" \
+                --frames 100 --warmup 10 --json --compare "${configurations[@]}" \
+                >"$out/$scene-$size-$resolution.json"
+            echo "wrote $out/$scene-$size-$resolution.json" >&2
+        done
+    done
+done
+passes=(
+    ""
+    "--set spatial.enabled=true"
+    "--set temporal.enabled=true"
+    "--set spatial.enabled=true --set temporal.enabled=true"
+    "--set temporal.enabled=true --set temporal.filter_current=true"
+    "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true"
+    "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true --set filter_resolution=full"
+    "--set resolution=quarter --set spatial.enabled=true --set temporal.enabled=true"
+    "--set resolution=half --set downsample=checkerboard --set upsample=nearest-depth"
+    "--set bent_normals=true"
+    "--set normals.encoding=oct16"
+    "--set normals.source=depth-5tap"
+)
+for size in 1920x1080 3840x2160; do
+    "$aokit" bench --scene scenes/sponza.obj --camera atrium --size "$size" --method gtao \
+        --preset high --frames 100 --warmup 10 --json --compare "${passes[@]}" \
+        >"$out/passes-sponza-atrium-$size.json"
+    echo "wrote $out/passes-sponza-atrium-$size.json" >&2
+done
