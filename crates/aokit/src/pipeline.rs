@@ -210,7 +210,9 @@ pub struct AoOutputs<'a> {
     pub normals_view: &'a wgpu::TextureView,
     /// Bent normals when [`AoSettings::bent_normals`] is on, at the input's size (below full
     /// resolution upsampled with the AO's weights and renormalised): `Rgba16Float`, view-space
-    /// unit vector in xyz (the mean unoccluded direction), the kernel's unfiltered AO in w.
+    /// unit vector in xyz (the mean unoccluded direction), the kernel's AO in w. Neither is
+    /// denoised: the spatial and temporal filters smooth [`AoOutputs::ao`] only, so specular
+    /// occlusion from these carries the kernel's noise.
     pub bent_normals: Option<&'a wgpu::Texture>,
     /// A view of [`AoOutputs::bent_normals`] for binding.
     pub bent_normals_view: Option<&'a wgpu::TextureView>,
