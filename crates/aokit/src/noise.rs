@@ -371,7 +371,8 @@ const IGN_FRAME_SHIFT: f32 = 5.588_238;
 
 /// Two interleaved-gradient values per pixel, the second from the pattern transposed: an offset
 /// copy would only add a constant to the first value, locking each pixel's rotation to its
-/// jitter. The pattern shifts [`IGN_FRAME_SHIFT`] pixels each frame.
+/// jitter. The pattern shifts 5.588238 pixels each frame (Jimenez's shift), over a 64-frame
+/// cycle.
 pub fn ign_noise(pixel: [u32; 2], frame: u32) -> [f32; 2] {
     let shift = IGN_FRAME_SHIFT * (frame % 64) as f32;
     let p = [pixel[0] as f32 + shift, pixel[1] as f32 + shift];
