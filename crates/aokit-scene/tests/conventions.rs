@@ -4,10 +4,13 @@
 //! against the reference traced through the same camera, with one tolerance, and against the
 //! `Depth32Float` AO of its camera.
 
-use aokit::gpu::{read_texture_f32, upload_texture_2d};
+mod common;
+
+use aokit::gpu::read_texture_f32;
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, NormalEncoding, Preset};
 use aokit_reference::AoOptions;
 use aokit_scene::{Builtin, Camera, Lens, Renderer, reference};
+use common::{encode_frame, gpu, linear_depth_texture, rmse};
 use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
@@ -110,17 +113,9 @@ fn copy_depth(
     target
 }
 
-fn rmse(a: &[f32], b: &[f32], covered: &[bool]) -> f64 {
-    let errors: Vec<f64> = (0..a.len())
-        .filter(|&i| covered[i])
-        .map(|i| f64::from(a[i] - b[i]).powi(2))
-        .collect();
-    (errors.iter().sum::<f64>() / errors.len() as f64).sqrt()
-}
-
 #[test]
 fn every_depth_convention_scores_alike_against_the_reference() {
-    let gpu = GpuContext::headless().unwrap();
+    let gpu = gpu();
     let scene = Builtin::Room.build();
     let base = scene.cameras[0].clone();
     let radius = scene.suggested_radius.unwrap();
@@ -172,33 +167,18 @@ fn every_depth_convention_scores_alike_against_the_reference() {
             .unwrap();
         let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
         let mut ao_of = |depth: &wgpu::Texture| {
-            let mut encoder = gpu.device.create_command_encoder(&Default::default());
-            let outputs = pipeline
-                .encode(
-                    &gpu.device,
-                    &gpu.queue,
-                    &mut encoder,
-                    &AoInputs {
-                        normals: Some(&gbuffer.normals),
-                        ..AoInputs::new(depth, projection)
-                    },
-                )
-                .unwrap();
-            gpu.queue.submit([encoder.finish()]);
-            let read = |t| read_texture_f32(&gpu.device, &gpu.queue, t).unwrap();
-            (read(outputs.ao), read(outputs.linear_depth))
+            let inputs = AoInputs {
+                normals: Some(&gbuffer.normals),
+                ..AoInputs::new(depth, projection)
+            };
+            encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
+                let read = |t| read_texture_f32(&gpu.device, &gpu.queue, t).unwrap();
+                (read(outputs.ao), read(outputs.linear_depth))
+            })
         };
         let (baseline, linear_depth) = ao_of(&gbuffer.depth);
         let covered: Vec<bool> = linear_depth.iter().map(|&d| d > 0.0).collect();
-        let linear = upload_texture_2d(
-            &gpu.device,
-            &gpu.queue,
-            "linear depth",
-            SIZE,
-            wgpu::TextureFormat::R32Float,
-            bytemuck::cast_slice(&linear_depth),
-        )
-        .unwrap();
+        let linear = linear_depth_texture(&gpu, SIZE, &linear_depth);
         let inputs = [
             ("Depth32Float", gbuffer.depth.clone()),
             (
@@ -214,8 +194,8 @@ fn every_depth_convention_scores_alike_against_the_reference() {
         for (format, depth) in &inputs {
             let (ao, _) = ao_of(depth);
             let (error, apart) = (
-                rmse(&ao, &traced.ao, &covered),
-                rmse(&ao, &baseline, &covered),
+                rmse(&ao, &traced.ao, |i| covered[i]),
+                rmse(&ao, &baseline, |i| covered[i]),
             );
             eprintln!(
                 "{} / {format}: RMSE {error:.4} against the reference, {apart:.5} against Depth32Float",

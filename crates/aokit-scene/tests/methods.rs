@@ -1,15 +1,14 @@
 //! Every AO method on the built-in scenes, on whatever adapter exists (lavapipe in CI).
 
+mod common;
+
 use aokit::{AoSettings, GpuContext, Method, NoiseKind, NoiseSettings, Preset, TemporalOffset};
 use aokit_reference::AoOptions;
 use aokit_scene::{Builtin, Camera, Frame, Renderer, Scene, reference};
+use common::gpu;
 use glam::{Vec2, Vec3};
 
 const SIZE: [u32; 2] = [160, 96];
-
-fn gpu() -> GpuContext {
-    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
-}
 
 fn settings(scene: &Scene, method: Method, preset: Preset) -> AoSettings {
     AoSettings {

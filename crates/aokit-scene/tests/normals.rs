@@ -2,10 +2,13 @@
 //! (lavapipe in CI). `measure_for_docs` prints the tables of docs/normals.md:
 //! `cargo test --release -p aokit-scene --test normals -- --ignored --nocapture`.
 
+mod common;
+
 use aokit::normals::angle_degrees;
 use aokit::{AoSettings, GpuContext, NormalEncoding, NormalSource};
 use aokit_eval::depth_edge_mask;
 use aokit_scene::{Builtin, Camera, Frame, Renderer, Scene};
+use common::gpu;
 
 const SIZE: [u32; 2] = [192, 128];
 
@@ -13,10 +16,6 @@ const SIZE: [u32; 2] = [192, 128];
 /// and the pixels within 2 of one.
 const EDGE_RELATIVE_DEPTH: f32 = 0.05;
 const EDGE_RADIUS: u32 = 2;
-
-fn gpu() -> GpuContext {
-    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
-}
 
 /// One view rendered with the default normals (oct32 G-buffer) and a renderer to render it
 /// again with other normal settings.

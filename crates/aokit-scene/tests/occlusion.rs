@@ -1,19 +1,18 @@
 //! Occlusion in shading, on whatever adapter exists (lavapipe in CI): the WGSL functions against
 //! their CPU reference, and the lit composite's multi-bounce and specular occlusion.
 
+mod common;
+
 use aokit::occlusion::{multi_bounce_gtao, specular_occlusion_frostbite, specular_occlusion_gtso};
 use aokit::shader::{OCCLUSION, ShaderSource};
 use aokit::{AoSettings, GpuContext, Method, Preset};
 use aokit_scene::composite::{Lighting, SpecularOcclusion};
 use aokit_scene::{Builtin, Frame, Renderer, Scene};
 use bytemuck::{Pod, Zeroable};
+use common::gpu;
 use glam::{Vec2, Vec3};
 
 const SIZE: [u32; 2] = [192, 128];
-
-fn gpu() -> GpuContext {
-    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
-}
 
 /// One evaluation of the three functions; mirrors `Case` in [`KERNEL`].
 #[repr(C)]

@@ -1,15 +1,14 @@
 //! GPU tests on whatever adapter exists (lavapipe in CI), at small sizes.
 
+mod common;
+
 use aokit::{AoSettings, GpuContext, Preset, Projection};
 use aokit_scene::external::{self, Passes};
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
+use common::gpu;
 use glam::{Vec2, Vec3};
 
 const SIZE: [u32; 2] = [192, 128];
-
-fn gpu() -> GpuContext {
-    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
-}
 
 fn settings_for(scene: &Scene) -> AoSettings {
     AoSettings {

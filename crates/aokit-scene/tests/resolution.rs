@@ -2,6 +2,8 @@
 //! CI): every combination of resolution, downsample, upsample and filter placement, motion
 //! vectors at working resolution, and the distance to full-resolution AO on the built-in scenes.
 
+mod common;
+
 use aokit::gpu::{read_texture_f32, read_texture_rgba16f, upload_texture_2d};
 use aokit::normals::pack_oct32;
 use aokit::projection::pixel_to_ndc;
@@ -11,11 +13,8 @@ use aokit::{
 };
 use aokit_reference::AoOptions;
 use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene, reference};
+use common::{encode_frame, gpu, linear_depth_texture, rmse};
 use glam::{Vec2, Vec3};
-
-fn gpu() -> GpuContext {
-    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
-}
 
 /// A frame's depth, normals and motion vectors as a renderer hands them to the pipeline.
 struct Inputs {
@@ -38,10 +37,7 @@ impl Inputs {
             .map(|&n| pack_oct32(if n == Vec3::ZERO { Vec3::Z } else { n }))
             .collect();
         Self {
-            depth: upload(
-                wgpu::TextureFormat::R32Float,
-                bytemuck::cast_slice(&frame.linear_depth),
-            ),
+            depth: linear_depth_texture(gpu, frame.size, &frame.linear_depth),
             normals: upload(wgpu::TextureFormat::R32Uint, bytemuck::cast_slice(&normals)),
             motion_vectors: motion_vectors
                 .map(|m| upload(wgpu::TextureFormat::Rg32Float, bytemuck::cast_slice(m))),
@@ -60,32 +56,25 @@ struct Output {
 }
 
 fn run(gpu: &GpuContext, pipeline: &mut AoPipeline, inputs: &Inputs, frame_index: u32) -> Output {
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    let outputs = pipeline
-        .encode(
-            &gpu.device,
-            &gpu.queue,
-            &mut encoder,
-            &AoInputs {
-                normals: Some(&inputs.normals),
-                view_from_world: inputs.frame.view_from_world,
-                frame_index,
-                motion_vectors: inputs.motion_vectors.as_ref(),
-                ..AoInputs::new(&inputs.depth, inputs.frame.projection)
-            },
-        )
-        .unwrap();
-    gpu.queue.submit([encoder.finish()]);
-    let read = |texture| read_texture_f32(&gpu.device, &gpu.queue, texture).unwrap();
-    Output {
-        ao: read(outputs.ao),
-        raw_ao: read(outputs.raw_ao),
-        working_size: outputs.working_size,
-        bent_normals: outputs
-            .bent_normals
-            .map(|t| read_texture_rgba16f(&gpu.device, &gpu.queue, t).unwrap()),
-        history_rejected: outputs.history_rejected.map(read),
-    }
+    let frame = AoInputs {
+        normals: Some(&inputs.normals),
+        view_from_world: inputs.frame.view_from_world,
+        frame_index,
+        motion_vectors: inputs.motion_vectors.as_ref(),
+        ..AoInputs::new(&inputs.depth, inputs.frame.projection)
+    };
+    encode_frame(gpu, pipeline, &frame, |outputs| {
+        let read = |texture| read_texture_f32(&gpu.device, &gpu.queue, texture).unwrap();
+        Output {
+            ao: read(outputs.ao),
+            raw_ao: read(outputs.raw_ao),
+            working_size: outputs.working_size,
+            bent_normals: outputs
+                .bent_normals
+                .map(|t| read_texture_rgba16f(&gpu.device, &gpu.queue, t).unwrap()),
+            history_rejected: outputs.history_rejected.map(read),
+        }
+    })
 }
 
 /// Frames of the scene's first camera along `path`, with the renderer's own AO off the point.
@@ -292,15 +281,6 @@ fn motion_vectors_at_working_resolution_reproject_as_the_camera_does() {
 }
 
 /// RMSE between `a` and `b` over the pixels where `depth` shows a surface.
-/// RMSE of `a` against `b` over the pixels `keep` selects.
-fn rmse(a: &[f32], b: &[f32], keep: impl Fn(usize) -> bool) -> f64 {
-    let errors: Vec<f64> = (0..a.len())
-        .filter(|&i| keep(i))
-        .map(|i| f64::from(a[i] - b[i]).powi(2))
-        .collect();
-    (errors.iter().sum::<f64>() / errors.len() as f64).sqrt()
-}
-
 /// Surface pixels within 2 pixels of a depth step (a neighbour more than 10% nearer or
 /// farther, or without a surface): where an upsample has to choose a side.
 fn near_depth_edges(depth: &[f32], size: [u32; 2]) -> Vec<bool> {

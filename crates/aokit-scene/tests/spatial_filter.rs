@@ -1,15 +1,14 @@
 //! The spatial filter on rendered frames, on whatever adapter exists (lavapipe in CI), against a
 //! CPU implementation of the same separable bilateral blur (docs/denoise.md).
 
-use aokit::{AoSettings, DepthWeight, GpuContext, SpatialSettings};
+mod common;
+
+use aokit::{AoSettings, DepthWeight, SpatialSettings};
 use aokit_scene::{Builtin, Frame, Renderer};
+use common::gpu;
 use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
-
-fn gpu() -> GpuContext {
-    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
-}
 
 /// The weight of a neighbour `offset` pixels from the centre, as `spatial_filter.wgsl` computes
 /// it: 0 without a surface, else the spatial Gaussian times the depth weight of the relative

@@ -1,15 +1,14 @@
 //! The temporal filter over frame sequences, on whatever adapter exists (lavapipe in CI).
 
-use aokit::gpu::{read_texture_f32, upload_texture_2d};
+mod common;
+
+use aokit::gpu::read_texture_f32;
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset};
 use aokit_reference::{AoOptions, ReferenceImage};
 use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene, reference};
+use common::{encode_frame, gpu, linear_depth_texture};
 
 const SIZE: [u32; 2] = [160, 96];
-
-fn gpu() -> GpuContext {
-    GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
-}
 
 fn settings(scene: &Scene, temporal: bool) -> AoSettings {
     let mut s = AoSettings {
@@ -102,11 +101,9 @@ fn trace(scene: &Scene, camera: &Camera, time: f32) -> ReferenceImage {
 
 /// RMSE of `frame` against `traced` over the pixels with a surface that `keep` keeps.
 fn rmse(frame: &Frame, traced: &ReferenceImage, keep: impl Fn(usize) -> bool) -> f64 {
-    let errors: Vec<f64> = (0..frame.ao.len())
-        .filter(|&i| traced.linear_depth[i] > 0.0 && keep(i))
-        .map(|i| f64::from(frame.ao[i] - traced.ao[i]).powi(2))
-        .collect();
-    (errors.iter().sum::<f64>() / errors.len() as f64).sqrt()
+    common::rmse(&frame.ao, &traced.ao, |i| {
+        traced.linear_depth[i] > 0.0 && keep(i)
+    })
 }
 
 #[test]
@@ -294,35 +291,18 @@ fn each_view_keeps_its_own_history() {
         .collect();
     let depth: Vec<wgpu::Texture> = views
         .iter()
-        .map(|f| {
-            upload_texture_2d(
-                &gpu.device,
-                &gpu.queue,
-                "depth",
-                SIZE,
-                wgpu::TextureFormat::R32Float,
-                bytemuck::cast_slice(&f.linear_depth),
-            )
-            .unwrap()
-        })
+        .map(|f| linear_depth_texture(&gpu, SIZE, &f.linear_depth))
         .collect();
     let run = |pipeline: &mut AoPipeline, view: usize, frame: u32| -> Vec<f32> {
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        let outputs = pipeline
-            .encode(
-                &gpu.device,
-                &gpu.queue,
-                &mut encoder,
-                &AoInputs {
-                    view_from_world: views[view].view_from_world,
-                    frame_index: frame,
-                    view_id: view as u32,
-                    ..AoInputs::new(&depth[view], views[view].projection)
-                },
-            )
-            .unwrap();
-        gpu.queue.submit([encoder.finish()]);
-        read_texture_f32(&gpu.device, &gpu.queue, outputs.ao).unwrap()
+        let inputs = AoInputs {
+            view_from_world: views[view].view_from_world,
+            frame_index: frame,
+            view_id: view as u32,
+            ..AoInputs::new(&depth[view], views[view].projection)
+        };
+        encode_frame(&gpu, pipeline, &inputs, |outputs| {
+            read_texture_f32(&gpu.device, &gpu.queue, outputs.ao).unwrap()
+        })
     };
     let s = settings(&scene, true);
     let mut shared = AoPipeline::new(&gpu.device, &gpu.queue, &s).unwrap();
@@ -347,30 +327,15 @@ fn a_filtered_current_value_is_the_same_surface_mean() {
     let scene = Builtin::Room.build();
     let mut renderer = Renderer::new(&gpu, &scene, &settings(&scene, false)).unwrap();
     let frame = renderer.render(&gpu, &scene.cameras[0], SIZE, 0).unwrap();
-    let depth = upload_texture_2d(
-        &gpu.device,
-        &gpu.queue,
-        "depth",
-        SIZE,
-        wgpu::TextureFormat::R32Float,
-        bytemuck::cast_slice(&frame.linear_depth),
-    )
-    .unwrap();
+    let depth = linear_depth_texture(&gpu, SIZE, &frame.linear_depth);
     let mut s = settings(&scene, true);
     s.temporal.filter_current = true;
     let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &s).unwrap();
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    let outputs = pipeline
-        .encode(
-            &gpu.device,
-            &gpu.queue,
-            &mut encoder,
-            &AoInputs::new(&depth, frame.projection),
-        )
-        .unwrap();
-    gpu.queue.submit([encoder.finish()]);
-    let read = |texture| read_texture_f32(&gpu.device, &gpu.queue, texture).unwrap();
-    let (filtered, raw) = (read(outputs.ao), read(outputs.raw_ao));
+    let inputs = AoInputs::new(&depth, frame.projection);
+    let (filtered, raw) = encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
+        let read = |texture| read_texture_f32(&gpu.device, &gpu.queue, texture).unwrap();
+        (read(outputs.ao), read(outputs.raw_ao))
+    });
     let d = &frame.linear_depth;
     let [w, h] = SIZE.map(|s| s as i32);
     let threshold = s.temporal.depth_threshold;
