@@ -1,8 +1,8 @@
 //! Every depth convention the pipeline accepts gives the AO of the same scene: perspective with
 //! an infinite far plane in reverse-Z, standard Z with a finite far plane, orthographic; depth
-//! as `Depth32Float`, `Depth24Plus`, `Depth16Unorm` or `R32Float` linear depth. Each is scored
-//! against the reference traced through the same camera, with one tolerance, and against the
-//! `Depth32Float` AO of its camera.
+//! as `Depth32Float`, `Depth24Plus`, `Depth16Unorm` or `R32Float` linear depth, single-sampled
+//! or 4x multisampled (read at sample 0). Each is scored against the reference traced through
+//! the same camera, with one tolerance, and against the `Depth32Float` AO of its camera.
 
 mod common;
 
@@ -10,17 +10,20 @@ use aokit::gpu::read_texture_f32;
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, NormalEncoding, Preset};
 use aokit_reference::AoOptions;
 use aokit_scene::{Builtin, Camera, Lens, Renderer, reference};
-use common::{encode_frame, gpu, linear_depth_texture, rmse};
+use common::{DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, rmse};
 use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
 /// Largest RMSE against the reference, for every convention (GTAO `high` on `room`).
 const TOLERANCE: f64 = 0.08;
 
-/// A fullscreen pass that writes the depth of a `Depth32Float` texture into a depth
-/// attachment of another format, as a renderer using that format would have drawn it.
-const COPY_DEPTH: &str = r#"
-@group(0) @binding(0) var source: texture_depth_2d;
+/// Samples per pixel of the multisampled inputs.
+const MSAA: u32 = 4;
+
+/// A fullscreen pass that writes single-sampled linear depth into every sample of a
+/// multisampled colour target.
+const SPREAD_LINEAR: &str = r#"
+@group(0) @binding(0) var source: texture_2d<f32>;
 
 @vertex
 fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
@@ -29,34 +32,52 @@ fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
 }
 
 @fragment
-fn fs(@builtin(position) position: vec4<f32>) -> @builtin(frag_depth) f32 {
+fn fs(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     return textureLoad(source, vec2<i32>(position.xy), 0);
 }
 "#;
 
-fn copy_depth(
-    gpu: &GpuContext,
-    source: &wgpu::Texture,
-    format: wgpu::TextureFormat,
-) -> wgpu::Texture {
+/// `linear` (`R32Float`) drawn into a new `MSAA`-times multisampled `R32Float` texture.
+fn multisampled_linear_depth(gpu: &GpuContext, linear: &wgpu::Texture) -> wgpu::Texture {
     let device = &gpu.device;
+    let format = wgpu::TextureFormat::R32Float;
     let target = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("depth copy"),
-        size: source.size(),
+        label: Some("multisampled linear depth"),
+        size: linear.size(),
         mip_level_count: 1,
-        sample_count: 1,
+        sample_count: MSAA,
         dimension: wgpu::TextureDimension::D2,
         format,
         usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
         view_formats: &[],
     });
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("copy depth"),
-        source: wgpu::ShaderSource::Wgsl(COPY_DEPTH.into()),
+        label: Some("spread linear depth"),
+        source: wgpu::ShaderSource::Wgsl(SPREAD_LINEAR.into()),
+    });
+    // R32Float is not filterable, which a derived layout would assume.
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: None,
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+            count: None,
+        }],
     });
     let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("copy depth"),
-        layout: None,
+        label: Some("spread linear depth"),
+        layout: Some(
+            &device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: None,
+                bind_group_layouts: &[Some(&layout)],
+                immediate_size: 0,
+            }),
+        ),
         vertex: wgpu::VertexState {
             module: &module,
             entry_point: Some("vs"),
@@ -64,45 +85,42 @@ fn copy_depth(
             buffers: &[],
         },
         primitive: Default::default(),
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Always),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample: Default::default(),
+        depth_stencil: None,
+        multisample: wgpu::MultisampleState {
+            count: MSAA,
+            ..Default::default()
+        },
         fragment: Some(wgpu::FragmentState {
             module: &module,
             entry_point: Some("fs"),
             compilation_options: Default::default(),
-            targets: &[],
+            targets: &[Some(format.into())],
         }),
         multiview_mask: None,
         cache: None,
     });
     let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
-        layout: &pipeline.get_bind_group_layout(0),
+        layout: &layout,
         entries: &[wgpu::BindGroupEntry {
             binding: 0,
-            resource: wgpu::BindingResource::TextureView(&source.create_view(&Default::default())),
+            resource: wgpu::BindingResource::TextureView(&linear.create_view(&Default::default())),
         }],
     });
     let view = target.create_view(&Default::default());
     let mut encoder = device.create_command_encoder(&Default::default());
     {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("copy depth"),
-            color_attachments: &[],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            label: Some("spread linear depth"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
                 view: &view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(0.0),
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
                     store: wgpu::StoreOp::Store,
-                }),
-                stencil_ops: None,
-            }),
+                },
+            })],
             ..Default::default()
         });
         pass.set_pipeline(&pipeline);
@@ -179,15 +197,27 @@ fn every_depth_convention_scores_alike_against_the_reference() {
         let (baseline, linear_depth) = ao_of(&gbuffer.depth);
         let covered: Vec<bool> = linear_depth.iter().map(|&d| d > 0.0).collect();
         let linear = linear_depth_texture(&gpu, SIZE, &linear_depth);
+        let copy = |format, samples| {
+            copy_depth(
+                &gpu,
+                &gbuffer.depth,
+                &DepthCopy {
+                    format,
+                    samples,
+                    stencil: None,
+                },
+            )
+        };
+        use wgpu::TextureFormat::{Depth16Unorm, Depth24Plus, Depth32Float};
         let inputs = [
             ("Depth32Float", gbuffer.depth.clone()),
+            ("Depth24Plus", copy(Depth24Plus, 1)),
+            ("Depth16Unorm", copy(Depth16Unorm, 1)),
+            ("Depth32Float 4x MSAA", copy(Depth32Float, MSAA)),
+            ("Depth24Plus 4x MSAA", copy(Depth24Plus, MSAA)),
             (
-                "Depth24Plus",
-                copy_depth(&gpu, &gbuffer.depth, wgpu::TextureFormat::Depth24Plus),
-            ),
-            (
-                "Depth16Unorm",
-                copy_depth(&gpu, &gbuffer.depth, wgpu::TextureFormat::Depth16Unorm),
+                "R32Float 4x MSAA linear depth",
+                multisampled_linear_depth(&gpu, &linear),
             ),
             ("R32Float linear depth", linear),
         ];

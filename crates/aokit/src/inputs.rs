@@ -9,10 +9,17 @@ use crate::settings::NormalEncoding;
 /// Per-frame inputs of [`AoPipeline::encode`](crate::AoPipeline::encode).
 #[derive(Clone, Copy, Debug)]
 pub struct AoInputs<'a> {
-    /// The depth buffer, single-sampled, with `TEXTURE_BINDING` usage: any depth format
-    /// (`Depth32Float`, `Depth24Plus`, `Depth16Unorm`, with or without stencil) holding NDC depth
-    /// as [`AoInputs::projection`] wrote it, or `R32Float` holding linear view depth (positive
+    /// The depth buffer, with `TEXTURE_BINDING` usage: any depth format (`Depth32Float`,
+    /// `Depth24Plus`, `Depth16Unorm`, with or without stencil) holding NDC depth as
+    /// [`AoInputs::projection`] wrote it, or `R32Float` holding linear view depth (positive
     /// distance along the view axis; 0, negative, NaN or infinity where there is no surface).
+    ///
+    /// Multisampled depth is read at sample 0: each pixel gets the depth of one surface, so
+    /// silhouettes stay sharp but step like the aliased image, and AO at an edge belongs to
+    /// whichever side covers sample 0. A resolved depth you pass instead (single-sampled)
+    /// is read as it is: resolve with min or max (or sample 0), never an average, which puts
+    /// a surface between foreground and background that occludes both. docs/integration.md
+    /// compares the two.
     pub depth: &'a wgpu::Texture,
     /// View-space unit normals in the encoding [`NormalsSettings::encoding`](crate::NormalsSettings::encoding)
     /// names (`oct32` by default; [`shader::ENCODING`](crate::shader::ENCODING) has the WGSL to
@@ -39,6 +46,62 @@ pub struct AoInputs<'a> {
     /// Start the temporal history over: the view shows something unrelated to last frame (a
     /// camera cut, a teleport).
     pub reset_history: bool,
+    /// Pixels that receive no AO (characters, UI, a first-person weapon): [`AoOutputs::ao`]
+    /// is 1 there. They still occlude their surroundings, since they are in the depth.
+    ///
+    /// [`AoOutputs::ao`]: crate::AoOutputs::ao
+    pub mask: Option<AoMask<'a>>,
+}
+
+/// Where [`AoInputs::mask`] takes the pixels that receive no AO from. Multisampled masks are
+/// read at sample 0, as the depth is.
+///
+/// ```no_run
+/// # fn f(depth_stencil: &wgpu::Texture, projection: aokit::Projection) {
+/// // The renderer drew its characters with stencil reference 1 in the low bit.
+/// let inputs = aokit::AoInputs {
+///     mask: Some(aokit::AoMask::Stencil {
+///         texture: depth_stencil,
+///         reference: 1,
+///         read_mask: 0x01,
+///     }),
+///     ..aokit::AoInputs::new(depth_stencil, projection)
+/// };
+/// # }
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub enum AoMask<'a> {
+    /// A single-channel `R8Unorm`, `R16Float` or `R32Float` texture of the depth's size with
+    /// `TEXTURE_BINDING` usage: 1 receives no AO, 0 receives all of it, and values between
+    /// blend (`ao' = ao + (1 - ao) * mask`, the mask clamped to [0, 1]), for soft edges.
+    Texture(&'a wgpu::Texture),
+    /// The stencil aspect of a texture of the depth's size (often the depth texture itself):
+    /// pixels whose `stencil & read_mask` equals `reference & read_mask` receive no AO.
+    Stencil {
+        /// `Stencil8`, `Depth24PlusStencil8` or `Depth32FloatStencil8`, with
+        /// `TEXTURE_BINDING` usage.
+        texture: &'a wgpu::Texture,
+        /// The stencil value of the pixels to leave unoccluded.
+        reference: u8,
+        /// The stencil bits compared.
+        read_mask: u8,
+    },
+}
+
+/// Formats an [`AoMask::Texture`] may have.
+pub const MASK_TEXTURE_FORMATS: [wgpu::TextureFormat; 3] = [
+    wgpu::TextureFormat::R8Unorm,
+    wgpu::TextureFormat::R16Float,
+    wgpu::TextureFormat::R32Float,
+];
+
+impl AoMask<'_> {
+    /// The mask's texture.
+    pub fn texture(&self) -> &wgpu::Texture {
+        match self {
+            AoMask::Texture(texture) | AoMask::Stencil { texture, .. } => texture,
+        }
+    }
 }
 
 impl<'a> AoInputs<'a> {
@@ -66,6 +129,7 @@ impl<'a> AoInputs<'a> {
             view_id: 0,
             motion_vectors: None,
             reset_history: false,
+            mask: None,
         }
     }
 }
@@ -108,6 +172,12 @@ pub enum InputError {
     /// The motion vectors are not in a format the temporal filter reads.
     #[error("motion vector texture format {0:?} is neither Rg16Float nor Rg32Float")]
     MotionVectorFormat(wgpu::TextureFormat),
+    /// An [`AoMask::Texture`] is not single-channel `R8Unorm`, `R16Float` or `R32Float`.
+    #[error("mask texture format {0:?} is none of R8Unorm, R16Float and R32Float")]
+    MaskFormat(wgpu::TextureFormat),
+    /// An [`AoMask::Stencil`] texture has no stencil aspect.
+    #[error("mask texture format {0:?} has no stencil aspect to compare with the reference")]
+    MaskNoStencil(wgpu::TextureFormat),
 }
 
 impl AoInputs<'_> {
@@ -118,7 +188,7 @@ impl AoInputs<'_> {
         if !(depth.format().has_depth_aspect() || depth.format() == wgpu::TextureFormat::R32Float) {
             return Err(InputError::DepthFormat(depth.format()));
         }
-        check_readable("depth", depth)?;
+        check_bindable("depth", depth)?;
         let size = [depth.width(), depth.height()];
         if let Some(normals) = self.normals {
             if normals.format() != encoding.texture_format() {
@@ -137,6 +207,20 @@ impl AoInputs<'_> {
             check_readable("motion vectors", motion)?;
             same_size("motion vectors", size, motion)?;
         }
+        if let Some(mask) = &self.mask {
+            let format = mask.texture().format();
+            match mask {
+                AoMask::Texture(_) if !MASK_TEXTURE_FORMATS.contains(&format) => {
+                    return Err(InputError::MaskFormat(format));
+                }
+                AoMask::Stencil { .. } if !format.has_stencil_aspect() => {
+                    return Err(InputError::MaskNoStencil(format));
+                }
+                _ => {}
+            }
+            check_bindable("mask", mask.texture())?;
+            same_size("mask", size, mask.texture())?;
+        }
         Ok(size)
     }
 }
@@ -154,10 +238,15 @@ fn same_size(
     }
 }
 
+/// A single-sampled texture the passes can bind.
 fn check_readable(name: &'static str, texture: &wgpu::Texture) -> Result<(), InputError> {
     if texture.sample_count() > 1 {
         return Err(InputError::Multisampled(name));
     }
+    check_bindable(name, texture)
+}
+
+fn check_bindable(name: &'static str, texture: &wgpu::Texture) -> Result<(), InputError> {
     if !texture
         .usage()
         .contains(wgpu::TextureUsages::TEXTURE_BINDING)

@@ -26,7 +26,7 @@ mod uniforms;
 
 pub use error::AoError;
 pub use gpu::{AdapterKind, GpuContext, GpuError};
-pub use inputs::{AoInputs, InputError};
+pub use inputs::{AoInputs, AoMask, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{

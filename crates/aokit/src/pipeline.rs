@@ -8,6 +8,7 @@ use crate::inputs::AoInputs;
 use crate::passes::PassContext;
 use crate::passes::decode_normals::DecodeNormalsPass;
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
+use crate::passes::mask::MaskPass;
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
 use crate::passes::resample::{DownsampleTargets, ResamplePass, WORKING_MOTION_FORMAT};
@@ -33,6 +34,8 @@ struct Layout {
     /// Whether the downsample writes motion vectors, for a temporal filter at working
     /// resolution.
     working_motion: bool,
+    /// Whether an exclusion mask is applied.
+    mask: bool,
 }
 
 /// The intermediate textures.
@@ -50,6 +53,8 @@ struct Targets {
     bent_normals: Option<Target>,
     /// The spatial filter's textures, when it is on.
     spatial: Option<SpatialTargets>,
+    /// The AO with the exclusion mask applied, at the input's size.
+    masked_ao: Option<Target>,
 }
 
 /// The downsample's and the upsample's textures.
@@ -101,6 +106,9 @@ impl Targets {
                 packed_view: make("aokit spatial filter ao and depth", size, PACKED_FORMAT).1,
                 ao: make("aokit spatially filtered ao", size, AO_FORMAT),
             }),
+            masked_ao: layout
+                .mask
+                .then(|| make("aokit masked ao", size, AO_FORMAT)),
         }
     }
 }
@@ -186,7 +194,8 @@ impl Denoiser {
 pub struct AoOutputs<'a> {
     /// Ambient occlusion, `R32Float`, 1 = unoccluded, at the input's size: the kernel's AO
     /// after the spatial and temporal filters that are on and, below full resolution, the
-    /// upsample (in the order [`AoSettings::filter_resolution`] gives).
+    /// upsample (in the order [`AoSettings::filter_resolution`] gives), then the
+    /// [`AoInputs::mask`] when there is one.
     pub ao: &'a wgpu::Texture,
     /// A view of [`AoOutputs::ao`] for binding.
     pub ao_view: &'a wgpu::TextureView,
@@ -245,6 +254,7 @@ pub struct AoPipeline {
     view_uniforms: wgpu::Buffer,
     working_view_uniforms: wgpu::Buffer,
     linear_depth: LinearDepthPass,
+    mask: MaskPass,
     normals_from_depth: NormalsFromDepthPass,
     decode_normals: DecodeNormalsPass,
     /// A view of the input normals of the last frame, kept for [`AoOutputs::normals_view`] when
@@ -274,6 +284,7 @@ impl AoPipeline {
                 "aokit working view",
             ),
             linear_depth: LinearDepthPass::new(device),
+            mask: MaskPass::default(),
             normals_from_depth: NormalsFromDepthPass::new(device),
             decode_normals: DecodeNormalsPass::default(),
             input_normals_view: None,
@@ -372,6 +383,7 @@ impl AoPipeline {
                 && !filter_full
                 && settings.temporal.enabled
                 && inputs.motion_vectors.is_some(),
+            mask: inputs.mask.is_some(),
         };
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
             self.targets = Some(Targets::new(device, layout));
@@ -526,6 +538,13 @@ impl AoPipeline {
             ctx.size = size;
             ctx.view_uniforms = &self.view_uniforms;
             upsample(&mut ctx, &filtered.1).map_or(filtered, |w| &w.upsampled_ao)
+        };
+        let ao = match (&inputs.mask, &targets.masked_ao) {
+            (Some(mask), Some(masked)) => {
+                self.mask.encode(&mut ctx, mask, &ao.1, &masked.1);
+                masked
+            }
+            _ => ao,
         };
         let bent_normals = match &targets.working {
             Some(working) => working.upsampled_bent_normals.as_ref(),

@@ -31,16 +31,72 @@ pub struct ShaderSource {
     pub parts: &'static [&'static str],
 }
 
+/// Binding 1 of `linear_depth`: a single-sampled depth texture.
+const DEPTH_NDC: &str = "
+@group(0) @binding(1) var depth_ndc: texture_depth_2d;
+fn load_ndc(pixel: vec2<u32>) -> f32 {
+    return textureLoad(depth_ndc, pixel, 0);
+}";
+
+/// Binding 1 of `linear_depth`: a multisampled depth texture, of which sample 0 is read.
+const DEPTH_NDC_MULTISAMPLED: &str = "
+@group(0) @binding(1) var depth_ndc: texture_depth_multisampled_2d;
+fn load_ndc(pixel: vec2<u32>) -> f32 {
+    return textureLoad(depth_ndc, pixel, 0);
+}";
+
+/// Binding 1 of `import_depth`: single-sampled linear depth.
+const DEPTH_LINEAR: &str = "
+@group(0) @binding(1) var depth_in: texture_2d<f32>;
+fn load_depth(pixel: vec2<u32>) -> f32 {
+    return textureLoad(depth_in, pixel, 0).r;
+}";
+
+/// Binding 1 of `import_depth`: multisampled linear depth, of which sample 0 is read.
+const DEPTH_LINEAR_MULTISAMPLED: &str = "
+@group(0) @binding(1) var depth_in: texture_multisampled_2d<f32>;
+fn load_depth(pixel: vec2<u32>) -> f32 {
+    return textureLoad(depth_in, pixel, 0).r;
+}";
+
 /// Hardware depth to linear view depth.
 pub const LINEAR_DEPTH: ShaderSource = ShaderSource {
     name: "linear_depth",
-    parts: &[VIEW, include_str!("../shaders/linear_depth.wgsl")],
+    parts: &[
+        VIEW,
+        DEPTH_NDC,
+        include_str!("../shaders/linear_depth.wgsl"),
+    ],
+};
+
+/// Sample 0 of multisampled hardware depth to linear view depth.
+pub const LINEAR_DEPTH_MULTISAMPLED: ShaderSource = ShaderSource {
+    name: "linear_depth",
+    parts: &[
+        VIEW,
+        DEPTH_NDC_MULTISAMPLED,
+        include_str!("../shaders/linear_depth.wgsl"),
+    ],
 };
 
 /// Linear depth handed in as `R32Float`, sanitised.
 pub const IMPORT_DEPTH: ShaderSource = ShaderSource {
     name: "import_depth",
-    parts: &[VIEW, include_str!("../shaders/import_depth.wgsl")],
+    parts: &[
+        VIEW,
+        DEPTH_LINEAR,
+        include_str!("../shaders/import_depth.wgsl"),
+    ],
+};
+
+/// Sample 0 of multisampled `R32Float` linear depth, sanitised.
+pub const IMPORT_DEPTH_MULTISAMPLED: ShaderSource = ShaderSource {
+    name: "import_depth",
+    parts: &[
+        VIEW,
+        DEPTH_LINEAR_MULTISAMPLED,
+        include_str!("../shaders/import_depth.wgsl"),
+    ],
 };
 
 /// Normals reconstructed from linear depth.
@@ -121,6 +177,75 @@ pub const TEMPORAL_FILTER: ShaderSource = ShaderSource {
     parts: &[VIEW, include_str!("../shaders/temporal_filter.wgsl")],
 };
 
+/// Binding 1 of `apply_mask`: a single-channel mask texture.
+const MASK_TEXTURE: &str = "
+@group(0) @binding(1) var mask: texture_2d<f32>;
+fn mask_weight(pixel: vec2<u32>) -> f32 {
+    return saturate(textureLoad(mask, pixel, 0).r);
+}";
+
+/// Binding 1 of `apply_mask`: sample 0 of a multisampled single-channel mask texture.
+const MASK_TEXTURE_MULTISAMPLED: &str = "
+@group(0) @binding(1) var mask: texture_multisampled_2d<f32>;
+fn mask_weight(pixel: vec2<u32>) -> f32 {
+    return saturate(textureLoad(mask, pixel, 0).r);
+}";
+
+/// The stencil test of `apply_mask`, after its binding: `STENCIL_REFERENCE` and
+/// `STENCIL_READ_MASK` are override constants, since a renderer's stencil values rarely change.
+const MASK_STENCIL_TEST: &str = "
+override STENCIL_REFERENCE: u32;
+override STENCIL_READ_MASK: u32;
+fn mask_weight(pixel: vec2<u32>) -> f32 {
+    let bits = (load_stencil(pixel) ^ STENCIL_REFERENCE) & STENCIL_READ_MASK;
+    return select(0.0, 1.0, bits == 0u);
+}";
+
+/// Binding 1 of `apply_mask`: a stencil aspect.
+const MASK_STENCIL: &str = "
+@group(0) @binding(1) var mask: texture_2d<u32>;
+fn load_stencil(pixel: vec2<u32>) -> u32 {
+    return textureLoad(mask, pixel, 0).r;
+}";
+
+/// Binding 1 of `apply_mask`: sample 0 of a multisampled stencil aspect.
+const MASK_STENCIL_MULTISAMPLED: &str = "
+@group(0) @binding(1) var mask: texture_multisampled_2d<u32>;
+fn load_stencil(pixel: vec2<u32>) -> u32 {
+    return textureLoad(mask, pixel, 0).r;
+}";
+
+const APPLY_MASK_PASS: &str = include_str!("../shaders/apply_mask.wgsl");
+
+/// AO 1 where a mask texture says so.
+pub const APPLY_MASK_TEXTURE: ShaderSource = ShaderSource {
+    name: "apply_mask",
+    parts: &[VIEW, MASK_TEXTURE, APPLY_MASK_PASS],
+};
+
+/// AO 1 where sample 0 of a multisampled mask texture says so.
+pub const APPLY_MASK_TEXTURE_MULTISAMPLED: ShaderSource = ShaderSource {
+    name: "apply_mask",
+    parts: &[VIEW, MASK_TEXTURE_MULTISAMPLED, APPLY_MASK_PASS],
+};
+
+/// AO 1 where the stencil equals the reference.
+pub const APPLY_MASK_STENCIL: ShaderSource = ShaderSource {
+    name: "apply_mask",
+    parts: &[VIEW, MASK_STENCIL, MASK_STENCIL_TEST, APPLY_MASK_PASS],
+};
+
+/// AO 1 where sample 0 of a multisampled stencil equals the reference.
+pub const APPLY_MASK_STENCIL_MULTISAMPLED: ShaderSource = ShaderSource {
+    name: "apply_mask",
+    parts: &[
+        VIEW,
+        MASK_STENCIL_MULTISAMPLED,
+        MASK_STENCIL_TEST,
+        APPLY_MASK_PASS,
+    ],
+};
+
 /// The settings the downsample and the upsample share; each pass file adds its textures and
 /// entry point.
 const RESAMPLE: &str = include_str!("../shaders/resample.wgsl");
@@ -194,7 +319,9 @@ pub const OCCLUSION_FUNCTIONS: ShaderSource = ShaderSource {
 /// Every program the library compiles or validates.
 pub const ALL: &[ShaderSource] = &[
     LINEAR_DEPTH,
+    LINEAR_DEPTH_MULTISAMPLED,
     IMPORT_DEPTH,
+    IMPORT_DEPTH_MULTISAMPLED,
     NORMALS_FROM_DEPTH,
     DECODE_NORMALS_UINT,
     DECODE_NORMALS_FLOAT,
@@ -209,6 +336,10 @@ pub const ALL: &[ShaderSource] = &[
     TEMPORAL_FILTER,
     DOWNSAMPLE,
     UPSAMPLE,
+    APPLY_MASK_TEXTURE,
+    APPLY_MASK_TEXTURE_MULTISAMPLED,
+    APPLY_MASK_STENCIL,
+    APPLY_MASK_STENCIL_MULTISAMPLED,
     OCCLUSION_FUNCTIONS,
 ];
 

@@ -45,3 +45,133 @@ pub fn rmse(a: &[f32], b: &[f32], keep: impl Fn(usize) -> bool) -> f64 {
         .collect();
     (errors.iter().sum::<f64>() / errors.len() as f64).sqrt()
 }
+
+/// A fullscreen pass that writes the depth of a `Depth32Float` texture into a depth attachment
+/// of another format, as a renderer using that format would have drawn it (every sample of a
+/// multisampled pixel gets the pixel's depth).
+const COPY_DEPTH: &str = r#"
+@group(0) @binding(0) var source: texture_depth_2d;
+
+@vertex
+fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+    let uv = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+    return vec4<f32>(uv * 2.0 - 1.0, 0.0, 1.0);
+}
+
+@fragment
+fn fs(@builtin(position) position: vec4<f32>) -> @builtin(frag_depth) f32 {
+    return textureLoad(source, vec2<i32>(position.xy), 0);
+}
+"#;
+
+/// What [`copy_depth`] makes.
+pub struct DepthCopy {
+    pub format: wgpu::TextureFormat,
+    pub samples: u32,
+    /// Stencil `reference` written inside `[x, y, width, height]`, 0 elsewhere (the format
+    /// must have stencil).
+    pub stencil: Option<(u32, [u32; 4])>,
+}
+
+/// `source` (`Depth32Float`) drawn into a new depth texture as `copy` says.
+pub fn copy_depth(gpu: &GpuContext, source: &wgpu::Texture, copy: &DepthCopy) -> wgpu::Texture {
+    let device = &gpu.device;
+    let format = copy.format;
+    let target = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("depth copy"),
+        size: source.size(),
+        mip_level_count: 1,
+        sample_count: copy.samples,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+        view_formats: &[],
+    });
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("copy depth"),
+        source: wgpu::ShaderSource::Wgsl(COPY_DEPTH.into()),
+    });
+    let replace = wgpu::StencilFaceState {
+        compare: wgpu::CompareFunction::Always,
+        fail_op: wgpu::StencilOperation::Keep,
+        depth_fail_op: wgpu::StencilOperation::Keep,
+        pass_op: wgpu::StencilOperation::Replace,
+    };
+    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("copy depth"),
+        layout: None,
+        vertex: wgpu::VertexState {
+            module: &module,
+            entry_point: Some("vs"),
+            compilation_options: Default::default(),
+            buffers: &[],
+        },
+        primitive: Default::default(),
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Always),
+            stencil: if copy.stencil.is_some() {
+                wgpu::StencilState {
+                    front: replace,
+                    back: replace,
+                    read_mask: 0xff,
+                    write_mask: 0xff,
+                }
+            } else {
+                Default::default()
+            },
+            bias: Default::default(),
+        }),
+        multisample: wgpu::MultisampleState {
+            count: copy.samples,
+            ..Default::default()
+        },
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs"),
+            compilation_options: Default::default(),
+            targets: &[],
+        }),
+        multiview_mask: None,
+        cache: None,
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: wgpu::BindingResource::TextureView(&source.create_view(&Default::default())),
+        }],
+    });
+    let view = target.create_view(&Default::default());
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("copy depth"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: copy.stencil.map(|_| wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0),
+                    store: wgpu::StoreOp::Store,
+                }),
+            }),
+            ..Default::default()
+        });
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.draw(0..3, 0..1);
+        if let Some((reference, [x, y, width, height])) = copy.stencil {
+            pass.set_stencil_reference(reference);
+            pass.set_scissor_rect(x, y, width, height);
+            pass.draw(0..3, 0..1);
+        }
+    }
+    gpu.queue.submit([encoder.finish()]);
+    target
+}

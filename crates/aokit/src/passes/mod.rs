@@ -2,6 +2,7 @@
 
 pub mod decode_normals;
 pub mod linear_depth;
+pub mod mask;
 pub mod method;
 pub mod normals_from_depth;
 pub mod resample;
@@ -154,16 +155,26 @@ pub mod bind {
         )
     }
 
+    /// A single-sampled 2D texture.
     pub fn texture(
         binding: u32,
         sample_type: wgpu::TextureSampleType,
+    ) -> wgpu::BindGroupLayoutEntry {
+        texture_with_samples(binding, sample_type, false)
+    }
+
+    /// A 2D texture, multisampled or not.
+    pub fn texture_with_samples(
+        binding: u32,
+        sample_type: wgpu::TextureSampleType,
+        multisampled: bool,
     ) -> wgpu::BindGroupLayoutEntry {
         entry(
             binding,
             wgpu::BindingType::Texture {
                 sample_type,
                 view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
+                multisampled,
             },
         )
     }
