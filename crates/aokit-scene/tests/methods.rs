@@ -4,7 +4,7 @@ mod common;
 
 use aokit::{AoSettings, GpuContext, Method, NoiseKind, NoiseSettings, Preset, TemporalOffset};
 use aokit_reference::AoOptions;
-use aokit_scene::{Builtin, Camera, Frame, Renderer, Scene, reference};
+use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene, reference};
 use common::gpu;
 use glam::{Vec2, Vec3};
 
@@ -364,4 +364,79 @@ fn distance_fade_intensity_and_method_switches_apply_at_runtime() {
         .unwrap();
     let off = renderer.render(&gpu, camera, SIZE, 0).unwrap();
     assert!(off.ao.iter().all(|&ao| ao == 1.0));
+}
+
+#[test]
+fn the_pixel_radius_clamps_apply_to_every_method() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let perspective = &scene.cameras[0];
+    // Through an orthographic lens a world radius covers the same pixels at every depth, so a
+    // clamp to `p` pixels must give exactly the AO of the world radius that covers `p`.
+    let orthographic = Camera {
+        eye: Vec3::new(4.0, 4.0, 7.0),
+        target: Vec3::new(0.0, 0.8, 0.0),
+        lens: Lens::Orthographic { height: 8.0 },
+        ..perspective.clone()
+    };
+    let pixels = 6.0;
+    let covering = pixels * 8.0 / SIZE[1] as f32;
+    for method in Method::ALL {
+        let name = method.name();
+        let base = settings(&scene, method, Preset::Medium);
+        // A radius far under a pixel everywhere: no AO at all, unless min_radius_px widens it.
+        let tiny = AoSettings {
+            radius: base.radius * 1e-3,
+            ..base
+        };
+        let none = render(&gpu, &scene, perspective, &tiny);
+        assert!(covered(&none).all(|a| a == 1.0), "{name}");
+        let widened = AoSettings {
+            min_radius_px: 8.0,
+            ..tiny
+        };
+        let widened = render(&gpu, &scene, perspective, &widened);
+        let occluded = covered(&widened).filter(|&a| a < 0.9).count();
+        assert!(occluded > 100, "{name}: {occluded} pixels under 0.9");
+
+        let exact = render(
+            &gpu,
+            &scene,
+            &orthographic,
+            &AoSettings {
+                radius: covering,
+                ..base
+            },
+        );
+        for (clamp, settings) in [
+            (
+                "max_radius_px",
+                AoSettings {
+                    radius: covering * 4.0,
+                    max_radius_px: pixels,
+                    ..base
+                },
+            ),
+            (
+                "min_radius_px",
+                AoSettings {
+                    radius: covering / 4.0,
+                    min_radius_px: pixels,
+                    ..base
+                },
+            ),
+        ] {
+            let clamped = render(&gpu, &scene, &orthographic, &settings);
+            let worst = clamped
+                .ao
+                .iter()
+                .zip(&exact.ao)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f32::max);
+            assert!(
+                worst < 1e-3,
+                "{name} / {clamp}: {worst} from the world radius"
+            );
+        }
+    }
 }

@@ -15,7 +15,7 @@
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     // Never more steps than pixels in the radius: they would sample the same texels.
     let steps = max(1u, min(ao.steps, u32(surface.radius_px)));
-    let r2 = ao.radius * ao.radius;
+    let r2 = surface.radius * surface.radius;
     var occlusion = 0.0;
     for (var d = 0u; d < ao.count; d++) {
         let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(ao.count));

@@ -21,7 +21,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         // surface with itself and says nothing.
         let weight = smoothstep(0.0, 0.2, length(offset.xy));
         total += weight;
-        let sample = surface.p + ao.radius * offset;
+        let sample = surface.p + surface.radius * offset;
         if view.orthographic < 0.5 && sample.z >= 0.0 {
             visible += weight;
             continue;
@@ -30,8 +30,8 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         let sample_depth = -sample.z;
         // Occluded when the depth buffer lies in front of the point by more than the bias
         // (self-occlusion of a plane stored at finite precision), and within range of it.
-        let blocked = occluder != NO_SURFACE && occluder + ao.bias < sample_depth;
-        let occlusion = select(0.0, falloff_weight(sample_depth - occluder), blocked);
+        let blocked = occluder != NO_SURFACE && occluder + ao.bias * surface.scale < sample_depth;
+        let occlusion = select(0.0, falloff_weight(surface, sample_depth - occluder), blocked);
         visible += weight * (1.0 - occlusion);
     }
     return Estimate(select(1.0, visible / total, total > 0.0), surface.n);

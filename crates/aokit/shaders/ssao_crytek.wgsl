@@ -17,7 +17,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         let d = vec3<f32>(r_xy * cos(phi), r_xy * sin(phi), z);
         let rotated = vec3<f32>(rotation.x * d.x - rotation.y * d.y, rotation.y * d.x + rotation.x * d.y, d.z);
         let t = fract(halton_3(i + 1u) + noise.y);
-        let sample = surface.p + ao.radius * mix(0.1, 1.0, t * t) * rotated;
+        let sample = surface.p + surface.radius * mix(0.1, 1.0, t * t) * rotated;
         if view.orthographic < 0.5 && sample.z >= 0.0 {
             continue;
         }
@@ -30,8 +30,8 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         // the shaded point's depth instead, which on a plane seen at a grazing angle rejects the
         // plane's own far half and lightens it.
         let sample_depth = -sample.z;
-        let blocked = occluder + ao.bias < sample_depth;
-        occlusion += select(0.0, falloff_weight(sample_depth - occluder), blocked);
+        let blocked = occluder + ao.bias * surface.scale < sample_depth;
+        occlusion += select(0.0, falloff_weight(surface, sample_depth - occluder), blocked);
     }
     return Estimate(1.0 - occlusion / f32(ao.count), surface.n);
 }

@@ -59,13 +59,13 @@ fn side_bits(s: Surface, slice: Slice, side: f32, jitter: f32, lo: f32) -> u32 {
     var previous_depth = s.depth;
     for (var step = 0u; step < ao.steps; step++) {
         let sample = side_sample(s, slice, side, step_distance(step, ao.steps, jitter, s.radius_px));
-        if sample.w == 0.0 || dot(sample.xyz, sample.xyz) >= ao.radius * ao.radius {
+        if sample.w == 0.0 || dot(sample.xyz, sample.xyz) >= s.radius * s.radius {
             previous_depth = -1.0;
             continue;
         }
         let front = s.p + sample.xyz;
         let front_depth = -front.z;
-        let thickness = ao.thickness + ao.thickness_growth * front_depth;
+        let thickness = ao.thickness * s.scale + ao.thickness_growth * front_depth;
         // The back face lies further along the ray from the eye through the front face.
         let back = select(front * ((front_depth + thickness) / front_depth),
                           front - vec3<f32>(0.0, 0.0, thickness), view.orthographic > 0.5);

@@ -604,6 +604,12 @@ pub struct AoSettings {
     /// camera the world radius covers much of the screen, where samples spread thin and leave
     /// the cache (seed 004's Max Radius Pixels).
     pub max_radius_px: f32,
+    /// Smallest screen radius in pixels of the input: where the world radius covers fewer
+    /// pixels (far away), it is widened to this many, so distant geometry keeps a visible
+    /// contact shadow instead of fading to nothing. This departs from the world radius (and
+    /// so from the reference) on purpose; 0, the default, keeps the world radius, and AO stops
+    /// where the radius falls under one pixel.
+    pub min_radius_px: f32,
     /// Self-occlusion bias of the point-sampling methods, as a fraction of the radius: a sample
     /// must lie this far behind the depth buffer to count as occluded.
     pub bias: f32,
@@ -691,6 +697,7 @@ impl AoSettings {
             // Past 256 pixels (a quarter of a 1080p screen) AO no longer reads as contact
             // shadowing, and samples that far apart miss the texture cache.
             max_radius_px: 256.0,
+            min_radius_px: 0.0,
             // 2% of the radius lifts samples off a plane tessellated or stored at 16-24 bits.
             bias: 0.02,
             // About 6 degrees, the tangent elevation HBAO+'s default N.V bias of 0.1 implies.
@@ -737,6 +744,14 @@ impl AoSettings {
         at_least("intensity", self.intensity, 0.0)?;
         positive("power", self.power)?;
         at_least("max_radius_px", self.max_radius_px, 1.0)?;
+        at_least("min_radius_px", self.min_radius_px, 0.0)?;
+        if self.min_radius_px > self.max_radius_px {
+            return Err(SettingsError {
+                field: "min_radius_px",
+                value: self.min_radius_px.to_string(),
+                expected: "pixels in [0, max_radius_px]",
+            });
+        }
         in_unit_range("bias", self.bias)?;
         if !(0.0..std::f32::consts::FRAC_PI_2).contains(&self.angle_bias) {
             return Err(SettingsError {

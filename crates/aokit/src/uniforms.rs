@@ -71,6 +71,7 @@ pub(crate) struct AoUniforms {
     pub intensity: f32,
     pub power: f32,
     pub max_radius_px: f32,
+    pub min_radius_px: f32,
     pub bias: f32,
     pub angle_bias: f32,
     pub fade_mul: f32,
@@ -148,6 +149,7 @@ impl AoUniforms {
             // The kernel measures in working texels; the limit is in the input's pixels, so
             // that a lower resolution covers the same screen area.
             max_radius_px: settings.max_radius_px / settings.resolution.scale() as f32,
+            min_radius_px: settings.min_radius_px / settings.resolution.scale() as f32,
             bias: settings.bias * radius,
             angle_bias: settings.angle_bias,
             fade_mul,
@@ -322,6 +324,7 @@ mod tests {
             intensity,
             power,
             max_radius_px,
+            min_radius_px,
             bias,
             angle_bias,
             fade_mul,

@@ -10,8 +10,9 @@ struct AoUniforms {
     falloff_add: f32,
     intensity: f32,
     power: f32,
-    // Upper clamp of the screen radius, pixels.
+    // Upper and lower clamps of the screen radius, pixels.
     max_radius_px: f32,
+    min_radius_px: f32,
     // Point methods' self-occlusion bias, world units.
     bias: f32,
     // Horizon methods' angle bias, radians.
@@ -64,8 +65,12 @@ struct Surface {
     p: vec3<f32>,
     v: vec3<f32>,
     n: vec3<f32>,
-    // The AO radius on screen, clamped to max_radius_px.
+    // The AO radius on screen, clamped to [min_radius_px, max_radius_px].
     radius_px: f32,
+    // The world radius that covers radius_px here, and its ratio to ao.radius: lengths the
+    // settings give relative to the radius (falloff, bias, thickness) scale with it.
+    radius: f32,
+    scale: f32,
 }
 
 fn load_surface(pixel: vec2<u32>) -> Surface {
@@ -81,7 +86,10 @@ fn load_surface(pixel: vec2<u32>) -> Surface {
     // towards V until they are at most grazing.
     let n = unpack_oct32(textureLoad(normals, pixel, 0).r);
     s.n = normalize(n + max(0.0, 0.01 - dot(n, s.v)) * s.v);
-    s.radius_px = min(pixels_at_depth(ao.radius, s.depth), ao.max_radius_px);
+    let unclamped = pixels_at_depth(ao.radius, s.depth);
+    s.radius_px = clamp(unclamped, ao.min_radius_px, ao.max_radius_px);
+    s.scale = select(1.0, s.radius_px / unclamped, unclamped > 0.0);
+    s.radius = ao.radius * s.scale;
     return s;
 }
 
@@ -143,9 +151,10 @@ fn depth_at(q: vec2<f32>) -> f32 {
     return surface_at(q).depth;
 }
 
-// A sample's weight by its distance from the shaded point: 1 inside, fading to 0 at the radius.
-fn falloff_weight(distance: f32) -> f32 {
-    return saturate(distance * ao.falloff_mul + ao.falloff_add);
+// A sample's weight by its distance from the shaded point: 1 inside, fading to 0 at the
+// surface's radius.
+fn falloff_weight(s: Surface, distance: f32) -> f32 {
+    return saturate(distance / s.scale * ao.falloff_mul + ao.falloff_add);
 }
 
 // Shapes visibility into the stored AO: intensity, power, then the distance fade.
