@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
+use aokit::debug::DebugView;
 use aokit::{AdapterKind, GpuContext};
 use aokit_scene::composite::SpecularOcclusion;
 use aokit_scene::{CameraPath, Renderer, Scene};
@@ -64,6 +65,15 @@ pub struct RenderArgs {
     /// panel swings).
     #[arg(long)]
     pub animate: bool,
+    /// Also write debug views of the last frame, as debug-VIEW.png: depth, working-depth (the
+    /// depth the kernel read below full resolution), normals, edges (depth steps the filters
+    /// and the upsample stop at), bent-normals, raw-ao (before filtering), ao, rejected.
+    #[arg(long, value_name = "VIEW,...", value_delimiter = ',', value_parser = parse_debug_view)]
+    pub debug: Vec<DebugView>,
+}
+
+fn parse_debug_view(s: &str) -> Result<DebugView, String> {
+    s.parse()
 }
 
 fn parse_specular_occlusion(s: &str) -> Result<SpecularOcclusion, String> {
@@ -170,6 +180,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             0.0
         };
         let time = if args.animate { t } else { 0.0 };
+        if i + 1 == args.frames {
+            renderer.debug_views.clone_from(&args.debug);
+        }
         let frame = renderer.render_at(&gpu, &args.path.at(&camera, t), args.size, i, time)?;
         if frame.ao.iter().any(|v| !v.is_finite()) {
             bail!(
@@ -205,26 +218,34 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     write_grey_png(&out.join("ao.png"), frame.size, &frame.ao)?;
     write_exr(&out.join("ao.exr"), frame.size, &[("Y", frame.ao.clone())])?;
     write_rgba_png(&out.join("lit.png"), frame.size, &frame.lit)?;
-    let mut written = vec!["ao.png", "ao.exr", "lit.png"];
+    let mut written: Vec<String> = ["ao.png", "ao.exr", "lit.png"].map(String::from).into();
     if let Some((rejected, size)) = &frame.history_rejected {
         write_grey_png(&out.join("rejected.png"), *size, rejected)?;
-        written.push("rejected.png");
+        written.push("rejected.png".into());
+    }
+    for (view, image) in &frame.debug {
+        let name = format!("debug-{}.png", view.name());
+        write_rgba_png(&out.join(&name), frame.size, image)?;
+        written.push(name);
     }
     if args.frames > 1 {
         // 30 frames per second, the pace the sequence would play at.
         write_gif(&out.join("ao.gif"), frame.size, &previews.0, 33)?;
         write_gif(&out.join("lit.gif"), frame.size, &previews.1, 33)?;
-        written.extend(["frames/", "ao.gif", "lit.gif"]);
+        written.extend(["frames/", "ao.gif", "lit.gif"].map(String::from));
     }
     if args.gbuffer {
-        written.extend(write_gbuffer(
-            out,
-            frame.size,
-            &frame.linear_depth,
-            &frame.normals,
-            &frame.projection,
-            frame.view_from_world,
-        )?);
+        written.extend(
+            write_gbuffer(
+                out,
+                frame.size,
+                &frame.linear_depth,
+                &frame.normals,
+                &frame.projection,
+                frame.view_from_world,
+            )?
+            .map(String::from),
+        );
     }
     println!(
         "rendered `{}` from camera `{}` at {}x{} with {} (radius {}): wrote {} to {}",

@@ -279,3 +279,42 @@ fn a_camera_path_writes_frames_and_animated_previews() {
         );
     }
 }
+
+#[test]
+fn debug_views_are_written_as_pngs_and_unknown_ones_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit(
+        dir.path(),
+        &[
+            "render",
+            "--size",
+            "48x32",
+            "--debug",
+            "edges,normals",
+            "--out",
+            "dbg",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    for file in ["debug-edges.png", "debug-normals.png"] {
+        let image = image::open(dir.path().join("dbg").join(file)).unwrap();
+        assert_eq!((image.width(), image.height()), (48, 32), "{file}");
+    }
+    let out = aokit(dir.path(), &["render", "--debug", "mips"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("working-depth"),
+        "{}",
+        text(&out.stderr)
+    );
+    let out = aokit(
+        dir.path(),
+        &["render", "--size", "48x32", "--debug", "rejected"],
+    );
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("temporal.enabled"),
+        "{}",
+        text(&out.stderr)
+    );
+}

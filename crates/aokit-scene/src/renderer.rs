@@ -1,5 +1,6 @@
 //! Renders a scene through the AO pipeline and reads the results back.
 
+use aokit::debug::{AoDebug, DebugStyle, DebugView};
 use aokit::gpu::{
     create_texture_2d, read_texture, read_texture_f32, read_texture_rg16f, read_texture_rgba16f,
 };
@@ -46,6 +47,9 @@ pub struct Frame {
     /// where its surface was in the previous frame of the sequence; 0 where nothing was drawn
     /// and in a sequence's first frame.
     pub motion_vectors: Vec<Vec2>,
+    /// The [`Renderer::debug_views`] asked for, each an RGBA8 image of `size`, depth shown
+    /// from the nearest to the farthest surface in view.
+    pub debug: Vec<(DebugView, Vec<u8>)>,
 }
 
 /// Why a frame could not be rendered.
@@ -90,6 +94,10 @@ pub struct Renderer {
     /// reprojects by depth and the camera alone, which does not follow moving parts; for
     /// comparisons (docs/denoise.md measures both).
     pub use_motion_vectors: bool,
+    /// Debug views to draw with every frame into [`Frame::debug`].
+    pub debug_views: Vec<DebugView>,
+    /// Compiled the first time a debug view is asked for.
+    debug: Option<AoDebug>,
     /// Start the temporal history over at the next frame.
     reset_history: bool,
     /// Camera (clip from world) and scene time of the last frame, for motion vectors; `None`
@@ -119,6 +127,8 @@ impl Renderer {
             settings: *settings,
             lighting,
             use_motion_vectors: true,
+            debug_views: Vec::new(),
+            debug: None,
             reset_history: false,
             previous: None,
         })
@@ -362,6 +372,23 @@ impl Renderer {
             .transpose()?
             .map(|texels| texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect());
         let linear_depth = read_texture_f32(device, queue, outputs.linear_depth)?;
+        let mut debug = Vec::with_capacity(self.debug_views.len());
+        if !self.debug_views.is_empty() {
+            let style = DebugStyle {
+                depth_range: depth_range(&linear_depth),
+                orthographic: projection.is_orthographic(),
+                ..DebugStyle::default()
+            };
+            let pass = self
+                .debug
+                .get_or_insert_with(|| AoDebug::new(device, queue));
+            for &view in &self.debug_views {
+                let mut encoder = device.create_command_encoder(&Default::default());
+                let image = pass.encode(device, queue, &mut encoder, &outputs, view, &style)?;
+                queue.submit([encoder.finish()]);
+                debug.push((view, read_texture(device, queue, image)?));
+            }
+        }
         let lit = read_texture(device, queue, &lit)?;
         let motion_vectors = read_texture_rg16f(device, queue, &gbuffer.motion)?
             .into_iter()
@@ -391,6 +418,7 @@ impl Renderer {
             history_rejected,
             bent_normals,
             motion_vectors,
+            debug,
         })
     }
 }
@@ -401,5 +429,19 @@ fn pipeline_settings(settings: &AoSettings, lighting: &Lighting) -> AoSettings {
     AoSettings {
         bent_normals: settings.bent_normals || (gtso && settings.method.has_bent_normals()),
         ..*settings
+    }
+}
+
+/// The nearest and farthest surface depths of a frame (0: no surface), as a debug view's
+/// depth range; a range any depth view accepts when there is none.
+fn depth_range(linear_depth: &[f32]) -> [f32; 2] {
+    let (near, far) = linear_depth
+        .iter()
+        .filter(|&&d| d > 0.0)
+        .fold((f32::MAX, 0.0f32), |(n, f), &d| (n.min(d), f.max(d)));
+    if far > near {
+        [near, far]
+    } else {
+        DebugStyle::default().depth_range
     }
 }

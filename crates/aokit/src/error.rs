@@ -24,4 +24,15 @@ pub enum AoError {
         /// The device's `max_texture_dimension_2d`.
         max: u32,
     },
+    /// A debug view was asked of outputs that do not have what it shows.
+    #[error("the `{view}` debug view needs the setting {needs}")]
+    DebugViewUnavailable {
+        /// The view's name.
+        view: &'static str,
+        /// The setting that makes the outputs have it.
+        needs: &'static str,
+    },
+    /// A [`DebugStyle`](crate::debug::DebugStyle) value is out of range.
+    #[error("debug style: {0}")]
+    DebugStyle(String),
 }

@@ -10,6 +10,7 @@
 //! depth in `[0, 1]`, standard or reverse-Z, finite or infinite far plane; the radius is in world
 //! units. See `docs/` in the repository for the method notes.
 
+pub mod debug;
 pub mod error;
 pub mod gpu;
 pub mod inputs;

@@ -210,6 +210,9 @@ pub struct AoOutputs<'a> {
     /// Linear view depth, `R32Float`, 0 where nothing was drawn, at the input's size (below
     /// full resolution the kernel read the downsample's copy).
     pub linear_depth: &'a wgpu::Texture,
+    /// The linear depth the kernel read: [`AoOutputs::linear_depth`] at full resolution, the
+    /// downsample's at [`AoOutputs::working_size`] below it.
+    pub working_linear_depth: &'a wgpu::Texture,
     /// The view-space normals, oct32 (`R32Uint`, see
     /// [`normals::unpack_oct32`](crate::normals::unpack_oct32)), at the input's size: the input
     /// texture itself when it is oct32, else the input decoded or the normals reconstructed
@@ -560,6 +563,10 @@ impl AoPipeline {
             raw_ao_view: &targets.ao.1,
             working_size: working,
             linear_depth: &targets.linear_depth.0,
+            working_linear_depth: match &targets.working {
+                Some(working) => &working.linear_depth.0,
+                None => &targets.linear_depth.0,
+            },
             normals,
             normals_view,
             bent_normals: bent_normals.map(|(texture, _)| texture),

@@ -15,7 +15,17 @@ macro_rules! named_enum {
         }
     ) => {
         $(#[$meta])*
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+        #[derive(
+            Clone,
+            Copy,
+            Debug,
+            Default,
+            PartialEq,
+            Eq,
+            Hash,
+            serde::Serialize,
+            serde::Deserialize,
+        )]
         pub enum $name {
             $($(#[$variant_meta])* #[serde(rename = $text)] $variant,)+
         }
@@ -35,11 +45,12 @@ macro_rules! named_enum {
         impl std::str::FromStr for $name {
             type Err = String;
             fn from_str(s: &str) -> Result<Self, String> {
-                find_by_name(&$name::ALL, $name::name, $what, s)
+                $crate::settings::find_by_name(&$name::ALL, $name::name, $what, s)
             }
         }
     };
 }
+pub(crate) use named_enum;
 
 named_enum! {
     /// The AO method a pipeline runs. docs/methods.md has each one's formula and failure modes.
@@ -396,7 +407,7 @@ impl Default for SpatialSettings {
 }
 
 /// The member of `all` called `wanted`, or an error listing the names on offer.
-fn find_by_name<T: Copy>(
+pub(crate) fn find_by_name<T: Copy>(
     all: &[T],
     name: fn(T) -> &'static str,
     what: &str,

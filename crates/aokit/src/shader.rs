@@ -246,6 +246,12 @@ pub const APPLY_MASK_STENCIL_MULTISAMPLED: ShaderSource = ShaderSource {
     ],
 };
 
+/// Debug views of a frame's intermediates.
+pub const DEBUG_VIEW: ShaderSource = ShaderSource {
+    name: "debug_view",
+    parts: &[ENCODING, include_str!("../shaders/debug_view.wgsl")],
+};
+
 /// The settings the downsample and the upsample share; each pass file adds its textures and
 /// entry point.
 const RESAMPLE: &str = include_str!("../shaders/resample.wgsl");
@@ -340,6 +346,7 @@ pub const ALL: &[ShaderSource] = &[
     APPLY_MASK_TEXTURE_MULTISAMPLED,
     APPLY_MASK_STENCIL,
     APPLY_MASK_STENCIL_MULTISAMPLED,
+    DEBUG_VIEW,
     OCCLUSION_FUNCTIONS,
 ];
 

@@ -166,6 +166,19 @@ impl AoUniforms {
     }
 }
 
+/// Mirrors `DebugUniforms` in `shaders/debug_view.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub(crate) struct DebugUniforms {
+    pub view: u32,
+    pub edge_threshold: f32,
+    pub log_near: f32,
+    pub inv_log_range: f32,
+    pub depth_step: u32,
+    pub scalar_step: u32,
+    pub orthographic: u32,
+}
+
 /// Mirrors `SpatialUniforms` in `shaders/spatial_filter.wgsl`: the spatial filter's settings,
 /// the sigmas as reciprocals so that the shader multiplies.
 #[repr(C)]
@@ -347,6 +360,26 @@ mod tests {
             )
             .unwrap();
         }
+    }
+
+    #[test]
+    fn debug_uniforms_and_codes_match_wgsl() {
+        let fields = crate::field_offsets!(DebugUniforms {
+            view,
+            edge_threshold,
+            log_near,
+            inv_log_range,
+            depth_step,
+            scalar_step,
+            orthographic,
+        });
+        shader::check_layout(
+            &shader::DEBUG_VIEW,
+            "DebugUniforms",
+            fields,
+            size_of::<DebugUniforms>(),
+        )
+        .unwrap();
     }
 
     #[test]

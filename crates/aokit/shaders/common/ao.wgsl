@@ -93,9 +93,10 @@ fn load_surface(pixel: vec2<u32>) -> Surface {
     return s;
 }
 
-// No surface, or a radius under one pixel: nothing in the depth buffer can occlude.
+// No surface, a radius under one pixel, or past max_distance, where the fade leaves AO 1:
+// nothing in the depth buffer can occlude, or nothing of it would show.
 fn nothing_to_sample(s: Surface) -> bool {
-    return s.depth == NO_SURFACE || s.radius_px < 1.0;
+    return s.depth == NO_SURFACE || s.radius_px < 1.0 || s.depth * ao.fade_mul + ao.fade_add <= 0.0;
 }
 
 // Relative depth spread above which a 2x2 footprint is taken to straddle a depth edge. A plane
