@@ -13,6 +13,27 @@ impl Tracer {
     /// that meets geometry at `t < radius` occludes as `options.falloff` says and one that does
     /// not occludes nothing. With cosine-weighted directions the estimator needs no weights: the
     /// cosine of the AO integral is the sampling density. `sampler` decides the ray directions.
+    ///
+    /// ```
+    /// use aokit_reference::{AoOptions, Falloff, PixelSampler, Tracer};
+    /// use glam::Vec3;
+    /// // A point on the floor under a wide ceiling half the radius up.
+    /// let (w, h) = (20.0, 0.5);
+    /// let ceiling = [Vec3::new(-w, h, -w), Vec3::new(w, h, -w),
+    ///                Vec3::new(w, h, w), Vec3::new(-w, h, w)];
+    /// let tracer = Tracer::new(&ceiling, &[0, 1, 2, 0, 2, 3])?;
+    /// let sampler = PixelSampler::new(0, 0);
+    /// let ao = |falloff| {
+    ///     let options = AoOptions { radius: 1.0, spp: 1024, falloff, ..Default::default() };
+    ///     tracer.ambient_occlusion(Vec3::ZERO, Vec3::Y, &options, &sampler)
+    /// };
+    /// // Rays escape when their cosine to the normal is below h / R, which the cosine
+    /// // weighting makes a fraction (h / R)^2 of them.
+    /// assert!((ao(Falloff::None) - 0.25).abs() < 0.02);
+    /// // With a falloff, hits near the radius darken less.
+    /// assert!(ao(Falloff::Linear) > ao(Falloff::None));
+    /// # Ok::<(), aokit_reference::ReferenceError>(())
+    /// ```
     pub fn ambient_occlusion(
         &self,
         point: Vec3,

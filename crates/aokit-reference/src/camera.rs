@@ -3,6 +3,23 @@
 use glam::{DVec3, Mat4, Vec3};
 
 /// What the camera sees through.
+///
+/// ```
+/// use aokit_reference::{Lens, PixelCamera};
+/// use glam::Vec3;
+/// // A top-down map view, 10 world units tall, from 100 units up.
+/// let camera = PixelCamera {
+///     size: [64, 64],
+///     lens: Lens::Orthographic { height: 10.0 },
+///     view_from_world: glam::camera::rh::view::look_at_mat4(
+///         Vec3::new(0.0, 100.0, 0.0), Vec3::ZERO, Vec3::NEG_Z),
+///     near: 1.0,
+///     far: Some(200.0),
+/// };
+/// // Parallel rays: every pixel looks straight down.
+/// assert!((camera.ray(0, 0).direction - Vec3::NEG_Y).length() < 1e-6);
+/// assert!((camera.ray(63, 40).direction - Vec3::NEG_Y).length() < 1e-6);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Lens {
     /// Pinhole with a full vertical field of view in radians.
@@ -20,6 +37,22 @@ pub enum Lens {
 /// A camera as a grid of pixels, matching a rasteriser's: pixel `(x, y)` counts from the top
 /// left and is sampled at its centre `(x + 0.5, y + 0.5)`; view space is right-handed with the
 /// camera looking down -Z; geometry nearer than `near` or beyond `far` is clipped.
+///
+/// ```
+/// use aokit_reference::{Lens, PixelCamera};
+/// use glam::{Mat4, Vec3};
+/// let camera = PixelCamera {
+///     size: [320, 180],
+///     lens: Lens::Perspective { fov_y: 60f32.to_radians() },
+///     view_from_world: Mat4::IDENTITY,
+///     near: 0.1,
+///     far: None,
+/// };
+/// assert_eq!(camera.pixel_count(), 320 * 180);
+/// // Pixel (0, 0) is the top-left one: its ray leans left and up.
+/// let corner = camera.ray(0, 0).direction;
+/// assert!(corner.x < 0.0 && corner.y > 0.0 && corner.z < 0.0);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelCamera {
     /// Width and height in pixels.
@@ -35,6 +68,28 @@ pub struct PixelCamera {
 }
 
 /// A primary ray in world space.
+///
+/// ```
+/// use aokit_reference::{Lens, PixelCamera, Tracer};
+/// use glam::{Mat4, Vec3};
+/// // A wall 4 units in front of the eye.
+/// let wall = [Vec3::new(-9.0, -9.0, -4.0), Vec3::new(9.0, -9.0, -4.0),
+///             Vec3::new(9.0, 9.0, -4.0), Vec3::new(-9.0, 9.0, -4.0)];
+/// let tracer = Tracer::new(&wall, &[0, 1, 2, 0, 2, 3])?;
+/// let camera = PixelCamera {
+///     size: [16, 16],
+///     lens: Lens::Perspective { fov_y: 1.0 },
+///     view_from_world: Mat4::IDENTITY,
+///     near: 0.1,
+///     far: None,
+/// };
+/// let ray = camera.ray(2, 13);
+/// let hit = tracer.closest_hit(ray.origin, ray.direction, ray.t_min, ray.t_max).unwrap();
+/// // Off-centre rays travel farther than the depth the rasteriser stores.
+/// assert!(hit.t > 4.0);
+/// assert!((hit.t * ray.depth_per_t - 4.0).abs() < 1e-4);
+/// # Ok::<(), aokit_reference::ReferenceError>(())
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct PrimaryRay {
     /// World-space origin.
@@ -51,6 +106,23 @@ pub struct PrimaryRay {
 
 impl PixelCamera {
     /// The ray through the centre of pixel `(x, y)`.
+    ///
+    /// ```
+    /// use aokit_reference::{Lens, PixelCamera};
+    /// use glam::{Mat4, Vec3};
+    /// let camera = PixelCamera {
+    ///     size: [3, 3],
+    ///     lens: Lens::Perspective { fov_y: 1.0 },
+    ///     view_from_world: Mat4::from_translation(Vec3::new(0.0, 0.0, -5.0)),
+    ///     near: 0.5,
+    ///     far: Some(50.0),
+    /// };
+    /// // The middle pixel of an odd-sized image looks along the view axis from the eye.
+    /// let ray = camera.ray(1, 1);
+    /// assert!((ray.origin - Vec3::new(0.0, 0.0, 5.0)).length() < 1e-6);
+    /// assert!((ray.direction - Vec3::NEG_Z).length() < 1e-6);
+    /// assert!((ray.t_min - 0.5).abs() < 1e-6 && (ray.t_max - 50.0).abs() < 1e-4);
+    /// ```
     pub fn ray(&self, x: u32, y: u32) -> PrimaryRay {
         self.ray_through(f64::from(x) + 0.5, f64::from(y) + 0.5)
     }
@@ -58,6 +130,21 @@ impl PixelCamera {
     /// The ray through the point `(px, py)` of the image, in pixels from the top-left corner.
     /// The camera math runs in double precision so that rays agree with the rasteriser's to
     /// the last bit of single precision.
+    ///
+    /// ```
+    /// use aokit_reference::{Lens, PixelCamera};
+    /// use glam::{Mat4, Vec3};
+    /// let camera = PixelCamera {
+    ///     size: [4, 2],
+    ///     lens: Lens::Orthographic { height: 2.0 },
+    ///     view_from_world: Mat4::IDENTITY,
+    ///     near: 0.1,
+    ///     far: Some(10.0),
+    /// };
+    /// // Sub-pixel positions, as for supersampling: the image's top-left corner.
+    /// let ray = camera.ray_through(0.0, 0.0);
+    /// assert!((ray.origin - Vec3::new(-2.0, 1.0, 0.0)).length() < 1e-6);
+    /// ```
     pub fn ray_through(&self, px: f64, py: f64) -> PrimaryRay {
         let [w, h] = self.size.map(f64::from);
         let ndc_x = 2.0 * px / w - 1.0;
@@ -94,7 +181,7 @@ impl PixelCamera {
         }
     }
 
-    /// Number of pixels.
+    /// Number of pixels, `width * height`.
     pub fn pixel_count(&self) -> usize {
         self.size[0] as usize * self.size[1] as usize
     }

@@ -1,6 +1,15 @@
 //! Why a reference cannot be traced.
 
 /// Errors of the reference tracer, each naming what is wrong.
+///
+/// ```
+/// use aokit_reference::{AoOptions, ReferenceError};
+/// let options = AoOptions { radius: 0.0, ..Default::default() };
+/// assert_eq!(options.validate(), Err(ReferenceError::Radius(0.0)));
+/// // The message names the setting, for tools to show as it is.
+/// let message = options.validate().unwrap_err().to_string();
+/// assert!(message.contains("radius"));
+/// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ReferenceError {
     /// The radius is not a positive finite number.

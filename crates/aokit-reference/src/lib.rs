@@ -25,6 +25,8 @@
 //! # Ok::<(), aokit_reference::ReferenceError>(())
 //! ```
 
+#![warn(missing_docs)]
+
 mod ao;
 mod camera;
 mod error;

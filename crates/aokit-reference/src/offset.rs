@@ -14,6 +14,22 @@ const ULP_STEP: f32 = 256.0;
 /// corners is kept. The step is a fixed number of float spacings of each coordinate, so it scales
 /// with the coordinate's magnitude (Wächter and Binder, "A Fast and Robust Method for Avoiding
 /// Self-Intersection", Ray Tracing Gems, 2019, whose three constants these are).
+///
+/// ```
+/// use aokit_reference::{Tracer, offset_origin};
+/// use glam::Vec3;
+/// let floor = [Vec3::new(-1e3, 0.0, -1e3), Vec3::new(1e3, 0.0, -1e3),
+///              Vec3::new(1e3, 0.0, 1e3), Vec3::new(-1e3, 0.0, 1e3)];
+/// let tracer = Tracer::new(&floor, &[0, 1, 2, 0, 2, 3])?;
+/// // A hit far from the origin: its position is only as precise as its large coordinates.
+/// let hit = tracer.closest_hit(Vec3::new(700.3, 5.0, -411.7), Vec3::NEG_Y, 0.0, 10.0).unwrap();
+/// let origin = offset_origin(hit.point, hit.normal);
+/// assert!(origin.y > 0.0);
+/// // A ray leaving along the surface no longer finds the surface it starts on.
+/// let along = Vec3::new(1.0, 1e-4, 0.0).normalize();
+/// assert!(!tracer.occluded(origin, along, 1.0));
+/// # Ok::<(), aokit_reference::ReferenceError>(())
+/// ```
 pub fn offset_origin(point: Vec3, normal: Vec3) -> Vec3 {
     let nudge = |p: f32, n: f32| {
         if p.abs() < NEAR_ORIGIN {

@@ -14,6 +14,18 @@ pub const MAX_SPP: u32 = 1 << 20;
 /// With [`Falloff::None`] the reference is ambient occlusion proper: the cosine-weighted fraction
 /// of the hemisphere that reaches `radius` unblocked. The other two are the *obscurance* variants
 /// screen-space methods approximate, where a far occluder darkens less than a near one.
+///
+/// ```
+/// use aokit_reference::{AoOptions, Falloff};
+/// // Names as a command line or settings file gives them.
+/// let falloff: Falloff = "quadratic".parse()?;
+/// assert_eq!(falloff.name(), "quadratic");
+/// // A hit halfway to the radius.
+/// assert_eq!(Falloff::None.occlusion(0.5), 1.0);
+/// assert_eq!(falloff.occlusion(0.5), 0.75);
+/// AoOptions { falloff, ..Default::default() }.validate()?;
+/// # Ok::<(), aokit_reference::ReferenceError>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Falloff {
     /// A hit occludes fully.
@@ -27,6 +39,12 @@ pub enum Falloff {
 
 impl Falloff {
     /// Every variant, in the order of their names in help texts.
+    ///
+    /// ```
+    /// use aokit_reference::Falloff;
+    /// let names: Vec<&str> = Falloff::ALL.iter().map(|f| f.name()).collect();
+    /// assert_eq!(names.join("|"), "none|linear|quadratic");
+    /// ```
     pub const ALL: [Falloff; 3] = [Falloff::None, Falloff::Linear, Falloff::Quadratic];
 
     /// The name used on the command line and in files.
@@ -99,6 +117,12 @@ impl Default for AoOptions {
 
 impl AoOptions {
     /// Checks every field, naming the first one out of range.
+    ///
+    /// ```
+    /// use aokit_reference::{AoOptions, MAX_SPP, ReferenceError};
+    /// let too_many = AoOptions { spp: MAX_SPP + 1, ..Default::default() };
+    /// assert_eq!(too_many.validate(), Err(ReferenceError::Spp(MAX_SPP + 1)));
+    /// ```
     pub fn validate(&self) -> Result<(), ReferenceError> {
         if !(self.radius.is_finite() && self.radius > 0.0) {
             return Err(ReferenceError::Radius(self.radius));

@@ -13,6 +13,30 @@ use crate::tracer::Tracer;
 
 /// A traced image, row by row from the top-left pixel. Pixels that show no surface have AO 1,
 /// depth 0 and a zero normal, as the raster G-buffer leaves them.
+///
+/// ```
+/// use aokit_reference::{AoOptions, Lens, PixelCamera, Tracer};
+/// use glam::{Mat4, Vec3};
+/// // A small square 5 units in front of the eye, on an empty background.
+/// let square = [Vec3::new(-1.0, -1.0, -5.0), Vec3::new(1.0, -1.0, -5.0),
+///               Vec3::new(1.0, 1.0, -5.0), Vec3::new(-1.0, 1.0, -5.0)];
+/// let tracer = Tracer::new(&square, &[0, 1, 2, 0, 2, 3])?;
+/// let camera = PixelCamera {
+///     size: [9, 9],
+///     lens: Lens::Perspective { fov_y: 1.2 },
+///     view_from_world: Mat4::IDENTITY,
+///     near: 0.1,
+///     far: None,
+/// };
+/// let image = tracer.render(&camera, &AoOptions { spp: 4, ..Default::default() }, &|_| {})?;
+/// let pixel = |x: usize, y: usize| y * image.size[0] as usize + x;
+/// let centre = pixel(4, 4);
+/// assert!((image.linear_depth[centre] - 5.0).abs() < 1e-4);
+/// assert!((image.normals[centre] - Vec3::Z).length() < 1e-6);
+/// let corner = pixel(0, 0);
+/// assert_eq!((image.ao[corner], image.linear_depth[corner]), (1.0, 0.0));
+/// # Ok::<(), aokit_reference::ReferenceError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct ReferenceImage {
     /// Width and height in pixels.

@@ -12,6 +12,22 @@ use obvhs::triangle::Triangle;
 use crate::ReferenceError;
 
 /// The closest surface along a ray.
+///
+/// ```
+/// use aokit_reference::{AoOptions, PixelSampler, Tracer};
+/// use glam::Vec3;
+/// let floor = [Vec3::new(-9.0, 0.0, -9.0), Vec3::new(9.0, 0.0, -9.0),
+///              Vec3::new(9.0, 0.0, 9.0), Vec3::new(-9.0, 0.0, 9.0)];
+/// let tracer = Tracer::new(&floor, &[0, 1, 2, 0, 2, 3])?;
+/// let (eye, target) = (Vec3::new(0.0, 2.0, 3.0), Vec3::new(1.0, 0.0, -2.0));
+/// let hit = tracer.closest_hit(eye, (target - eye).normalize(), 0.0, f32::INFINITY).unwrap();
+/// // AO is taken where the primary ray lands, about the normal facing the eye.
+/// assert!(hit.point.distance(target) < 1e-5 && hit.normal == Vec3::Y);
+/// let ao = tracer.ambient_occlusion(hit.point, hit.normal, &AoOptions::default(),
+///                                   &PixelSampler::new(0, 0));
+/// assert_eq!(ao, 1.0);
+/// # Ok::<(), aokit_reference::ReferenceError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
     /// Distance along the (unit) ray direction.
@@ -44,6 +60,18 @@ pub struct Tracer {
 impl Tracer {
     /// Builds the hierarchy over the triangles of an indexed list. Triangles of zero area are
     /// dropped: they cannot block a ray.
+    ///
+    /// ```
+    /// use aokit_reference::{ReferenceError, Tracer};
+    /// use glam::Vec3;
+    /// let positions = [Vec3::ZERO, Vec3::X, Vec3::Y];
+    /// // The second triangle repeats a vertex: it has no area.
+    /// let tracer = Tracer::new(&positions, &[0, 1, 2, 0, 0, 1])?;
+    /// assert_eq!(tracer.triangle_count(), 1);
+    /// let bad = Tracer::new(&positions, &[0, 1, 3]);
+    /// assert!(matches!(bad, Err(ReferenceError::Index { index: 3, .. })));
+    /// # Ok::<(), ReferenceError>(())
+    /// ```
     pub fn new(positions: &[Vec3], indices: &[u32]) -> Result<Self, ReferenceError> {
         if !indices.len().is_multiple_of(3) {
             return Err(ReferenceError::PartialTriangle(indices.len()));
@@ -89,12 +117,39 @@ impl Tracer {
     }
 
     /// Number of triangles traced (after dropping degenerate ones, before any splitting).
+    ///
+    /// ```
+    /// use aokit_reference::Tracer;
+    /// use glam::Vec3;
+    /// let quad = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 0.0), Vec3::Y];
+    /// let tracer = Tracer::new(&quad, &[0, 1, 2, 0, 2, 3])?;
+    /// println!("tracing {} triangles", tracer.triangle_count());
+    /// assert_eq!(tracer.triangle_count(), 2);
+    /// # Ok::<(), aokit_reference::ReferenceError>(())
+    /// ```
     pub fn triangle_count(&self) -> usize {
         self.triangles.len()
     }
 
     /// The closest surface along `origin + t * direction` with `t` in `[t_min, t_max]`.
     /// `direction` must be a unit vector.
+    ///
+    /// ```
+    /// use aokit_reference::Tracer;
+    /// use glam::Vec3;
+    /// // Two walls facing each other along z.
+    /// let wall = |z: f32| {
+    ///     [Vec3::new(-1.0, -1.0, z), Vec3::new(1.0, -1.0, z), Vec3::new(0.0, 1.0, z)]
+    /// };
+    /// let tracer = Tracer::new(&[wall(0.0), wall(-2.0)].concat(), &[0, 1, 2, 3, 4, 5])?;
+    /// let origin = Vec3::new(0.0, 0.0, 1.0);
+    /// let first = tracer.closest_hit(origin, Vec3::NEG_Z, 0.0, f32::INFINITY).unwrap();
+    /// assert_eq!(first.t, 1.0);
+    /// // A near plane at t = 2 skips the first wall.
+    /// let behind = tracer.closest_hit(origin, Vec3::NEG_Z, 2.0, f32::INFINITY).unwrap();
+    /// assert_eq!(behind.t, 3.0);
+    /// # Ok::<(), aokit_reference::ReferenceError>(())
+    /// ```
     pub fn closest_hit(
         &self,
         origin: Vec3,
@@ -127,6 +182,18 @@ impl Tracer {
     }
 
     /// Distance to the first surface within `t_max` along the unit `direction`, or `None`.
+    ///
+    /// ```
+    /// use aokit_reference::Tracer;
+    /// use glam::Vec3;
+    /// let ceiling = [Vec3::new(-5.0, 2.0, -5.0), Vec3::new(5.0, 2.0, -5.0),
+    ///                Vec3::new(0.0, 2.0, 5.0)];
+    /// let tracer = Tracer::new(&ceiling, &[0, 1, 2])?;
+    /// // For obscurance, where how far the occluder is matters, not only whether there is one.
+    /// assert_eq!(tracer.hit_distance(Vec3::ZERO, Vec3::Y, 3.0), Some(2.0));
+    /// assert_eq!(tracer.hit_distance(Vec3::ZERO, Vec3::Y, 1.0), None);
+    /// # Ok::<(), aokit_reference::ReferenceError>(())
+    /// ```
     pub fn hit_distance(&self, origin: Vec3, direction: Vec3, t_max: f32) -> Option<f32> {
         let ray = Ray::new(origin.into(), direction.into(), 0.0, t_max);
         let mut hit = RayHit::none();
@@ -137,6 +204,18 @@ impl Tracer {
 
     /// Whether anything lies within `t_max` along the unit `direction`: stops at the first
     /// surface found, which is cheaper than the closest.
+    ///
+    /// ```
+    /// use aokit_reference::Tracer;
+    /// use glam::Vec3;
+    /// let ceiling = [Vec3::new(-5.0, 2.0, -5.0), Vec3::new(5.0, 2.0, -5.0),
+    ///                Vec3::new(0.0, 2.0, 5.0)];
+    /// let tracer = Tracer::new(&ceiling, &[0, 1, 2])?;
+    /// assert!(tracer.occluded(Vec3::ZERO, Vec3::Y, 3.0));
+    /// // Occluders beyond the AO radius do not count.
+    /// assert!(!tracer.occluded(Vec3::ZERO, Vec3::Y, 1.5));
+    /// # Ok::<(), aokit_reference::ReferenceError>(())
+    /// ```
     pub fn occluded(&self, origin: Vec3, direction: Vec3, t_max: f32) -> bool {
         let ray = Ray::new(origin.into(), direction.into(), 0.0, t_max);
         !self

@@ -12,6 +12,17 @@ use glam::{Mat4, Vec3};
 /// A rigid motion at constant speed: by time `t` the part has turned `t * degrees` about `axis`
 /// through `pivot`, and the pivot has moved by `t * translation`. Constant speed means the part
 /// is still moving at the last frame, where sequences are scored.
+///
+/// ```
+/// use aokit_scene::Motion;
+/// use glam::Vec3;
+/// // A part that slides 2 units along +x while turning half a turn about its own centre.
+/// let centre = Vec3::new(0.0, 1.0, 0.0);
+/// let motion =
+///     Motion { pivot: centre, axis: Vec3::Y, degrees: 180.0, translation: 2.0 * Vec3::X };
+/// let halfway = motion.transform_at(0.5);
+/// assert!((halfway.transform_point3(centre) - Vec3::new(1.0, 1.0, 0.0)).length() < 1e-6);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Motion {
     /// The point the part turns about, where it rests.
@@ -26,6 +37,15 @@ pub struct Motion {
 
 impl Motion {
     /// A move by `translation` without turning.
+    ///
+    /// ```
+    /// use aokit_scene::Motion;
+    /// use glam::Vec3;
+    /// let drawer = Motion::slide(Vec3::new(0.0, 0.0, 0.4));
+    /// let handle = Vec3::new(0.3, 0.8, 0.0);
+    /// let open = drawer.transform_at(1.0).transform_point3(handle);
+    /// assert!((open - Vec3::new(0.3, 0.8, 0.4)).length() < 1e-6);
+    /// ```
     pub fn slide(translation: Vec3) -> Self {
         Self {
             pivot: Vec3::ZERO,
@@ -36,6 +56,18 @@ impl Motion {
     }
 
     /// A turn of `degrees` about `axis` through `pivot`: a door on its hinge.
+    ///
+    /// ```
+    /// use aokit_scene::Motion;
+    /// use glam::Vec3;
+    /// let hinge = Vec3::new(2.0, 0.0, 0.0);
+    /// let door = Motion::swing(hinge, Vec3::Y, 90.0);
+    /// // The hinge stays put while the far edge swings round.
+    /// let at_end = door.transform_at(1.0);
+    /// assert!((at_end.transform_point3(hinge) - hinge).length() < 1e-6);
+    /// let edge = at_end.transform_point3(hinge + Vec3::X);
+    /// assert!((edge - (hinge + Vec3::NEG_Z)).length() < 1e-6);
+    /// ```
     pub fn swing(pivot: Vec3, axis: Vec3, degrees: f32) -> Self {
         Self {
             pivot,
@@ -48,6 +80,16 @@ impl Motion {
     /// A ball of `radius` centred at `center` rolling by `translation` over a floor facing
     /// `up`, without slipping: the point touching the floor stands still, so the ball turns
     /// about `up x translation` by the distance over the radius.
+    ///
+    /// ```
+    /// use aokit_scene::Motion;
+    /// use glam::Vec3;
+    /// let (centre, radius) = (Vec3::new(0.0, 0.5, 0.0), 0.5);
+    /// let ball = Motion::roll(centre, radius, Vec3::new(1.0, 0.0, 0.0), Vec3::Y);
+    /// // Rolling one unit on a radius of 0.5 turns the ball by 2 radians.
+    /// assert!((ball.degrees - 2f32.to_degrees()).abs() < 1e-3);
+    /// assert_eq!(ball.axis, Vec3::NEG_Z);
+    /// ```
     pub fn roll(center: Vec3, radius: f32, translation: Vec3, up: Vec3) -> Self {
         Self {
             pivot: center,
@@ -78,6 +120,24 @@ impl Motion {
 }
 
 /// A rigid part of a scene's mesh that moves over a sequence.
+///
+/// ```
+/// use aokit_scene::{Motion, MovingPart, Scene, shapes};
+/// use glam::Vec3;
+/// let floor_corner = Vec3::new(-5.0, 0.0, 5.0);
+/// let mut mesh = shapes::quad(floor_corner, 10.0 * Vec3::X, -10.0 * Vec3::Z, Vec3::ONE);
+/// // The box's vertices come after the floor's: those are the ones that move.
+/// let first = mesh.positions.len() as u32;
+/// mesh.append(&shapes::cuboid(Vec3::ZERO, Vec3::ONE, 0.0, Vec3::ONE));
+/// let mut scene = Scene::new("sliding box", mesh, Vec::new(), Some(0.5));
+/// scene.moving_parts.push(MovingPart {
+///     vertices: first..scene.mesh.positions.len() as u32,
+///     motion: Motion::slide(Vec3::new(2.0, 0.0, 0.0)),
+/// });
+/// let end = scene.mesh_at(1.0);
+/// assert_eq!(end.positions[0], scene.mesh.positions[0]);
+/// assert_eq!(end.positions[first as usize].x, scene.mesh.positions[first as usize].x + 2.0);
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct MovingPart {
     /// Its vertices in [`Scene::mesh`](crate::Scene::mesh), which holds them at rest (time 0).

@@ -9,6 +9,15 @@ use crate::scene::Scene;
 use crate::shapes::{cuboid, quad, sphere};
 
 /// The built-in scenes.
+///
+/// ```
+/// use aokit_scene::Builtin;
+/// // A test over every built-in, as the CLI's `--scene` names them.
+/// for builtin in Builtin::ALL {
+///     assert_eq!(Builtin::from_name(builtin.name()), Some(builtin));
+/// }
+/// assert_eq!(Builtin::from_name("sponza"), None);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Builtin {
     /// A room without ceiling or front wall, with a sphere and boxes: the classic AO showcase.
@@ -36,11 +45,26 @@ impl Builtin {
     }
 
     /// Looks a built-in up by name.
+    ///
+    /// ```
+    /// use aokit_scene::Builtin;
+    /// assert_eq!(Builtin::from_name("stairs"), Some(Builtin::Stairs));
+    /// // Names are exact, as the CLI prints them.
+    /// assert_eq!(Builtin::from_name("Stairs"), None);
+    /// ```
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|b| b.name() == name)
     }
 
     /// Builds the scene, its moving parts at rest.
+    ///
+    /// ```
+    /// use aokit_scene::Builtin;
+    /// let scene = Builtin::Open.build();
+    /// scene.mesh.validate()?;
+    /// assert!(scene.suggested_radius.is_some() && !scene.cameras.is_empty());
+    /// # Ok::<(), String>(())
+    /// ```
     pub fn build(self) -> Scene {
         let (assembly, cameras, radius) = match self {
             Builtin::Room => room(),

@@ -7,6 +7,19 @@ use serde::{Deserialize, Serialize};
 use crate::mesh::Bounds;
 
 /// What the camera sees through.
+///
+/// ```
+/// use aokit_scene::{Camera, Lens};
+/// use glam::Vec3;
+/// // A plan view of a 20 m floor plan.
+/// let plan = Camera {
+///     lens: Lens::Orthographic { height: 20.0 },
+///     up: Vec3::NEG_Z,
+///     ..Camera::perspective("plan", Vec3::new(0.0, 50.0, 0.0), Vec3::ZERO, 60.0)
+/// };
+/// plan.validate()?;
+/// # Ok::<(), String>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Lens {
     /// Pinhole with a vertical field of view in degrees.
@@ -22,6 +35,17 @@ pub enum Lens {
 }
 
 /// A named camera placed by eye, target and up.
+///
+/// ```
+/// use aokit_scene::Camera;
+/// use glam::Vec3;
+/// let mut camera = Camera::perspective("close-up", Vec3::new(1.0, 1.5, 3.0), Vec3::ZERO, 45.0);
+/// // Fixed clipping planes instead of ones fitted to the scene.
+/// camera.near = Some(0.05);
+/// camera.far = Some(100.0);
+/// camera.validate()?;
+/// # Ok::<(), String>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Camera {
     /// Name used by `--camera`.
@@ -45,6 +69,14 @@ pub struct Camera {
 
 impl Camera {
     /// A perspective camera with +Y up, reverse-Z and an infinite far plane.
+    ///
+    /// ```
+    /// use aokit_scene::Camera;
+    /// use glam::Vec3;
+    /// let (eye, target) = (Vec3::new(0.0, 1.6, 5.0), Vec3::new(0.0, 1.0, 0.0));
+    /// let camera = Camera::perspective("front", eye, target, 60.0);
+    /// assert!(camera.reverse_z && camera.far.is_none());
+    /// ```
     pub fn perspective(name: &str, eye: Vec3, target: Vec3, fov_y_deg: f32) -> Self {
         Self {
             name: name.to_string(),
@@ -59,6 +91,15 @@ impl Camera {
     }
 
     /// A camera that shows all of `bounds` from above and to the side.
+    ///
+    /// ```
+    /// use aokit_scene::{Camera, shapes};
+    /// use glam::Vec3;
+    /// let ball = shapes::sphere(Vec3::new(3.0, 1.0, 0.0), 1.0, Vec3::ONE);
+    /// let camera = Camera::framing(&ball.bounds().unwrap());
+    /// assert_eq!(camera.target, Vec3::new(3.0, 1.0, 0.0));
+    /// assert!(camera.eye.y > camera.target.y);
+    /// ```
     pub fn framing(bounds: &Bounds) -> Self {
         let fov_y_deg = 50.0f32;
         let direction = Vec3::new(0.6, 0.5, 1.0).normalize();
@@ -69,6 +110,15 @@ impl Camera {
     }
 
     /// Checks the placement and lens, naming what is wrong.
+    ///
+    /// ```
+    /// use aokit_scene::Camera;
+    /// use glam::Vec3;
+    /// // Looking straight down with +Y up leaves the image's orientation undefined.
+    /// let top_down = Camera::perspective("top", Vec3::new(0.0, 10.0, 0.0), Vec3::ZERO, 60.0);
+    /// let message = top_down.validate().unwrap_err();
+    /// assert!(message.contains("parallel"));
+    /// ```
     pub fn validate(&self) -> Result<(), String> {
         let forward = self.target - self.eye;
         if !(self.eye.is_finite() && self.target.is_finite() && self.up.is_finite()) {
@@ -110,12 +160,31 @@ impl Camera {
     }
 
     /// World to view transform (right-handed, looking down -Z).
+    ///
+    /// ```
+    /// use aokit_scene::Camera;
+    /// use glam::Vec3;
+    /// let camera = Camera::perspective("c", Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, 60.0);
+    /// let target = camera.view_from_world().transform_point3(camera.target);
+    /// assert!((target - Vec3::new(0.0, 0.0, -4.0)).length() < 1e-6);
+    /// ```
     pub fn view_from_world(&self) -> Mat4 {
         glam::camera::rh::view::look_at_mat4(self.eye, self.target, self.up)
     }
 
     /// The projection for a viewport of `aspect` (width / height), with near and far planes
     /// chosen from `bounds` where the camera leaves them open.
+    ///
+    /// ```
+    /// use aokit_scene::Scene;
+    /// let scene = Scene::open("room").unwrap();
+    /// let camera = scene.camera(None)?;
+    /// let projection = camera.projection(16.0 / 9.0, &scene.bounds);
+    /// projection.validate().unwrap();
+    /// // The fitted near plane is a small fraction of the scene.
+    /// assert!(projection.near < 0.01 * scene.bounds.radius());
+    /// # Ok::<(), aokit_scene::SceneError>(())
+    /// ```
     pub fn projection(&self, aspect: f32, bounds: &Bounds) -> Projection {
         let to_center = (bounds.center() - self.eye).length();
         let radius = bounds.radius().max(1e-3);
@@ -147,6 +216,21 @@ impl Camera {
 
 /// The `camera.json` written beside G-buffer exports: everything needed to turn the depth and
 /// normal images back into view-space geometry. See docs/camera-json.md.
+///
+/// ```
+/// use aokit::Projection;
+/// use aokit_scene::CameraFile;
+/// use glam::Vec3;
+/// use glam::camera::rh::view::look_at_mat4;
+/// let projection = Projection::perspective(1.0, 4.0 / 3.0, 0.1, None);
+/// let view = look_at_mat4(Vec3::new(0.0, 2.0, 5.0), Vec3::ZERO, Vec3::Y);
+/// let json = serde_json::to_string_pretty(&CameraFile::new(&projection, view, [640, 480]))?;
+/// // A tool reading the export back gets the same camera.
+/// let file: CameraFile = serde_json::from_str(&json)?;
+/// assert_eq!(file.projection()?, projection);
+/// assert_eq!(file.view_from_world(), view);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CameraFile {
@@ -174,6 +258,16 @@ pub struct CameraFile {
 
 impl CameraFile {
     /// Describes a rendered image.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use aokit_scene::CameraFile;
+    /// use glam::Mat4;
+    /// let projection = Projection::orthographic(10.0, 2.0, 1.0, 50.0);
+    /// let file = CameraFile::new(&projection, Mat4::IDENTITY, [800, 400]);
+    /// assert_eq!(file.projection, "orthographic");
+    /// assert_eq!((file.ortho_height, file.fov_y_deg), (Some(10.0), None));
+    /// ```
     pub fn new(projection: &Projection, view_from_world: Mat4, size: [u32; 2]) -> Self {
         let (name, fov_y_deg, ortho_height) = match projection.kind {
             ProjectionKind::Perspective { fov_y } => {
@@ -195,6 +289,16 @@ impl CameraFile {
     }
 
     /// The projection described, checked.
+    ///
+    /// ```
+    /// use aokit_scene::CameraFile;
+    /// let json = r#"{"width": 640, "height": 480, "projection": "perspective",
+    ///     "near": 0.1, "far": null, "reverse_z": true,
+    ///     "view_from_world": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}"#;
+    /// let file: CameraFile = serde_json::from_str(json).unwrap();
+    /// // A hand-written file that forgot the field of view.
+    /// assert!(file.projection().unwrap_err().contains("fov_y_deg"));
+    /// ```
     pub fn projection(&self) -> Result<Projection, String> {
         let kind = match (self.projection.as_str(), self.fov_y_deg, self.ortho_height) {
             ("perspective", Some(fov), _) => ProjectionKind::Perspective {
@@ -231,6 +335,17 @@ impl CameraFile {
     }
 
     /// The world-to-view matrix.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use aokit_scene::CameraFile;
+    /// use glam::{Mat4, Vec3};
+    /// let view = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0));
+    /// let file = CameraFile::new(&Projection::perspective(1.0, 1.0, 0.1, None), view, [8, 8]);
+    /// // Stored row-major: the translation ends each row.
+    /// assert_eq!(file.view_from_world[0][3], 1.0);
+    /// assert_eq!(file.view_from_world(), view);
+    /// ```
     pub fn view_from_world(&self) -> Mat4 {
         Mat4::from_cols_array_2d(&self.view_from_world).transpose()
     }

@@ -15,6 +15,23 @@ use crate::shadow::SunView;
 pub const LIT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 /// Lighting of the composite, in world space and linear RGB.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+/// #      camera: &aokit_scene::Camera) -> Result<(), aokit_scene::RenderError> {
+/// use aokit_scene::composite::{Lighting, SpecularOcclusion};
+/// use glam::Vec3;
+/// // Late afternoon: a low, warm sun, and glossier surfaces to show specular occlusion.
+/// renderer.lighting = Lighting {
+///     sun_direction: Vec3::new(-0.8, 0.3, 0.2).normalize(),
+///     sun_color: Vec3::new(1.0, 0.7, 0.45),
+///     specular_occlusion: SpecularOcclusion::Gtso,
+///     roughness: 0.3,
+///     ..Lighting::default()
+/// };
+/// let frame = renderer.render(gpu, camera, [640, 360], 0)?;
+/// # Ok(()) }
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Lighting {
     /// Direction towards the sun.
@@ -43,6 +60,16 @@ pub struct Lighting {
 }
 
 /// How the composite occludes ambient specular light.
+///
+/// ```
+/// use aokit_scene::composite::{Lighting, SpecularOcclusion};
+/// // As `--specular-occlusion` takes it.
+/// let mode: SpecularOcclusion = "gtso".parse()?;
+/// let lighting = Lighting { specular_occlusion: mode, ..Lighting::default() };
+/// assert_eq!(lighting.specular_occlusion.name(), "gtso");
+/// assert!("ssr".parse::<SpecularOcclusion>().unwrap_err().contains("frostbite"));
+/// # Ok::<(), String>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum SpecularOcclusion {
     /// Not at all: the full ambient reflection everywhere, to see what occlusion removes.
@@ -70,6 +97,12 @@ impl SpecularOcclusion {
     ];
 
     /// The name used on the command line.
+    ///
+    /// ```
+    /// use aokit_scene::composite::SpecularOcclusion;
+    /// let names: Vec<&str> = SpecularOcclusion::ALL.map(SpecularOcclusion::name).to_vec();
+    /// assert_eq!(names.join(", "), "none, gtso, frostbite");
+    /// ```
     pub fn name(self) -> &'static str {
         match self {
             SpecularOcclusion::None => "none",
@@ -146,7 +179,8 @@ struct CompositeUniforms {
     _pad: u32,
 }
 
-/// Where and how the frame was seen, for the composite.
+/// Where and how the frame was seen, for the composite. See [`CompositePass::encode`] for a
+/// whole frame.
 pub struct CompositeView<'a> {
     /// The camera's projection.
     pub projection: &'a Projection,
@@ -157,6 +191,16 @@ pub struct CompositeView<'a> {
 }
 
 /// Writes the lit image from the G-buffer and the AO.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device) {
+/// use aokit_scene::composite::{CompositePass, LIT_FORMAT};
+/// let composite = CompositePass::new(device);
+/// // Storage textures cannot be sRGB: the shader encodes, and the texture stores the bytes.
+/// let lit = aokit::gpu::create_texture_2d(device, "lit", [1280, 720], LIT_FORMAT,
+///     wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+/// # }
+/// ```
 pub struct CompositePass {
     kernel: ComputeKernel,
     uniforms: wgpu::Buffer,
@@ -165,6 +209,13 @@ pub struct CompositePass {
 
 impl CompositePass {
     /// Compiles the pass.
+    ///
+    /// ```no_run
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// // Compiled once; each frame only records it.
+    /// let composite = aokit_scene::composite::CompositePass::new(&gpu.device);
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub fn new(device: &wgpu::Device) -> Self {
         let float = wgpu::TextureSampleType::Float { filterable: false };
         let kernel = ComputeKernel::new(
@@ -201,6 +252,50 @@ impl CompositePass {
     /// the normals the AO used (so that shading shows the normal encoding's precision, or the
     /// reconstruction from depth) and, for [`SpecularOcclusion::Gtso`], the bent normals when
     /// `ao` has them.
+    ///
+    /// A whole frame, as [`Renderer`](crate::Renderer) records it:
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, scene: &aokit_scene::Scene,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), Box<dyn std::error::Error>> {
+    /// use aokit::{AoInputs, AoPipeline, AoSettings};
+    /// use aokit_scene::composite::{CompositePass, CompositeView, LIT_FORMAT, Lighting};
+    /// use aokit_scene::gbuffer::{GBuffer, GBufferCamera, GBufferPass, GpuMesh};
+    /// use aokit_scene::shadow::{ShadowPass, SunView};
+    /// let (device, queue) = (&gpu.device, &gpu.queue);
+    /// let size = [640, 360];
+    /// let settings = AoSettings::default();
+    /// let lighting = Lighting::default();
+    /// let mesh = GpuMesh::new(device, &scene.mesh, &scene.moving_parts);
+    /// let (mut gbuffer_pass, shadow_pass) = (GBufferPass::new(device), ShadowPass::new(device));
+    /// let composite = CompositePass::new(device);
+    /// let mut ao = AoPipeline::new(device, queue, &settings)?;
+    ///
+    /// let projection = camera.projection(size[0] as f32 / size[1] as f32, &scene.bounds);
+    /// let view_from_world = camera.view_from_world();
+    /// let gbuffer = GBuffer::new(device, size, settings.normals.encoding);
+    /// let lit = aokit::gpu::create_texture_2d(device, "lit", size, LIT_FORMAT,
+    ///     wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+    /// let mut encoder = device.create_command_encoder(&Default::default());
+    /// gbuffer_pass.encode(gpu, &mut encoder, &mesh, &GBufferCamera {
+    ///     view_from_world,
+    ///     projection: &projection,
+    ///     previous_clip_from_world: projection.clip_from_view() * view_from_world,
+    /// }, &gbuffer);
+    /// let outputs = ao.encode(device, queue, &mut encoder, &AoInputs {
+    ///     normals: Some(&gbuffer.normals),
+    ///     view_from_world,
+    ///     ..AoInputs::new(&gbuffer.depth, projection)
+    /// })?;
+    /// let sun = SunView::new(lighting.sun_direction, &scene.bounds);
+    /// shadow_pass.encode(queue, &mut encoder, &mesh, &sun);
+    /// let view = CompositeView { projection: &projection, view_from_world, sun: &sun };
+    /// composite.encode(device, queue, &mut encoder, &lighting, &view, &gbuffer, &outputs,
+    ///                  &shadow_pass.map, &lit);
+    /// queue.submit([encoder.finish()]);
+    /// let rgba = aokit::gpu::read_texture(device, queue, &lit)?;
+    /// # Ok(()) }
+    /// ```
     #[allow(clippy::too_many_arguments)]
     pub fn encode(
         &self,

@@ -10,6 +10,22 @@ use glam::Vec3;
 use crate::renderer::RenderError;
 
 /// One view's passes on the CPU, row-major from the top-left pixel.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, depth: Vec<f32>, normals: Vec<glam::Vec3>)
+/// #     -> Result<(), aokit_scene::RenderError> {
+/// use aokit::{AoSettings, Projection};
+/// use aokit_scene::external::{Passes, ambient_occlusion};
+/// // Another renderer's 1280x720 export: linear depth and view-space normals.
+/// let passes = Passes {
+///     size: [1280, 720],
+///     linear_depth: &depth,
+///     normals: Some(&normals),
+///     projection: Projection::perspective(1.0, 1280.0 / 720.0, 0.1, None),
+/// };
+/// let ao = ambient_occlusion(gpu, &AoSettings::default(), &passes, 0)?;
+/// # Ok(()) }
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct Passes<'a> {
     /// Width and height in pixels.
@@ -25,6 +41,21 @@ pub struct Passes<'a> {
 /// Passes uploaded once, with a pipeline to run any settings on them. The normals are uploaded
 /// in the settings' [`NormalEncoding`], and again when a later setting changes it, so the AO
 /// shows the encoding's precision as the raster's does.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, passes: &aokit_scene::external::Passes<'_>)
+/// #     -> Result<(), aokit_scene::RenderError> {
+/// use aokit::{AoSettings, Method, Preset};
+/// use aokit_scene::external::ExternalAo;
+/// // Upload once, then compare methods on the same passes.
+/// let mut external = ExternalAo::new(gpu, &AoSettings::default(), passes)?;
+/// for method in Method::ALL {
+///     external.set_settings(gpu, &AoSettings::preset(method, Preset::High))?;
+///     let ao = external.run(gpu, 0)?;
+///     println!("{}: mean AO {}", method.name(), ao.iter().sum::<f32>() / ao.len() as f32);
+/// }
+/// # Ok(()) }
+/// ```
 pub struct ExternalAo {
     depth: wgpu::Texture,
     /// The unit normals as given, kept to encode them again for another encoding.
@@ -38,6 +69,19 @@ pub struct ExternalAo {
 
 impl ExternalAo {
     /// Uploads `passes` and compiles the pipeline for `settings`.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, passes: &aokit_scene::external::Passes<'_>)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::{AoSettings, NormalEncoding};
+    /// use aokit_scene::external::ExternalAo;
+    /// let mut settings = AoSettings::default();
+    /// // What the AO would look like with a 16-bit normal buffer.
+    /// settings.normals.encoding = NormalEncoding::Oct16;
+    /// let mut external = ExternalAo::new(gpu, &settings, passes)?;
+    /// let ao = external.run(gpu, 0)?;
+    /// # Ok(()) }
+    /// ```
     pub fn new(
         gpu: &GpuContext,
         settings: &AoSettings,
@@ -92,6 +136,17 @@ impl ExternalAo {
     }
 
     /// Changes the settings for later runs; the next run starts the temporal history over.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::AoSettings;
+    /// for radius in [0.25, 0.5, 1.0, 2.0] {
+    ///     external.set_settings(gpu, &AoSettings { radius, ..AoSettings::default() })?;
+    ///     let ao = external.run(gpu, 0)?;
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn set_settings(
         &mut self,
         gpu: &GpuContext,
@@ -110,16 +165,41 @@ impl ExternalAo {
     }
 
     /// Times the AO passes of later runs; `false` when the device has no timestamps.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// if external.enable_timing(gpu) {
+    ///     external.run(gpu, 0)?;
+    ///     for pass in external.last_times(gpu).expect("timing is on")? {
+    ///         println!("{:>16} {:.3} ms", pass.name, pass.ms);
+    ///     }
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn enable_timing(&mut self, gpu: &GpuContext) -> bool {
         self.pipeline.enable_timing(&gpu.device, &gpu.queue)
     }
 
-    /// GPU time of each pass of the last run, when timing is on.
+    /// GPU time of each pass of the last run, when timing is on: see
+    /// [`ExternalAo::enable_timing`].
     pub fn last_times(&self, gpu: &GpuContext) -> Option<Result<Vec<PassTime>, GpuError>> {
         self.pipeline.last_pass_times(&gpu.device)
     }
 
-    /// Runs the pipeline and reads the AO back (1 = unoccluded).
+    /// Runs the pipeline and reads the AO back (1 = unoccluded). Runs after the first are
+    /// frames of one sequence, for the temporal filter:
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// // Let the temporal filter converge on the still passes, then keep the last frame.
+    /// let mut ao = Vec::new();
+    /// for frame in 0..16 {
+    ///     ao = external.run(gpu, frame)?;
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn run(&mut self, gpu: &GpuContext, frame_index: u32) -> Result<Vec<f32>, RenderError> {
         let (device, queue) = (&gpu.device, &gpu.queue);
         let mut encoder = device.create_command_encoder(&Default::default());
@@ -140,6 +220,23 @@ impl ExternalAo {
 }
 
 /// Runs the AO pipeline once on `passes` and reads the AO back (1 = unoccluded).
+///
+/// ```no_run
+/// use aokit::{AoSettings, Projection};
+/// use aokit_scene::external::{Passes, ambient_occlusion};
+/// let gpu = aokit::GpuContext::headless()?;
+/// // A wall facing the camera at depth 2: nothing occludes it. Normals come from depth.
+/// let depth = vec![2.0f32; 64 * 64];
+/// let passes = Passes {
+///     size: [64, 64],
+///     linear_depth: &depth,
+///     normals: None,
+///     projection: Projection::perspective(1.0, 1.0, 0.1, None),
+/// };
+/// let ao = ambient_occlusion(&gpu, &AoSettings::default(), &passes, 0)?;
+/// assert!(ao.iter().all(|&a| a > 0.99));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn ambient_occlusion(
     gpu: &GpuContext,
     settings: &AoSettings,

@@ -65,6 +65,16 @@ struct RestPart {
 }
 
 /// A mesh uploaded to the GPU, with its moving parts placed at some time of a sequence.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit_scene::SceneError> {
+/// use aokit_scene::{Scene, gbuffer::GpuMesh};
+/// let scene = Scene::open("room")?;
+/// let mut mesh = GpuMesh::new(device, &scene.mesh, &scene.moving_parts);
+/// // Frame 3 of a 10-frame sequence; motion vectors lead back to frame 2.
+/// mesh.place(queue, 3.0 / 9.0, 2.0 / 9.0);
+/// # Ok(()) }
+/// ```
 pub struct GpuMesh {
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
@@ -103,6 +113,14 @@ impl GpuMesh {
     }
 
     /// Uploads `mesh` with `moving_parts` (ranges of its vertices) at rest, at time 0.
+    ///
+    /// ```no_run
+    /// use aokit_scene::{Builtin, gbuffer::GpuMesh};
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// let scene = Builtin::Stairs.build();
+    /// let mesh = GpuMesh::new(&gpu.device, &scene.mesh, &scene.moving_parts);
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub fn new(device: &wgpu::Device, mesh: &Mesh, moving_parts: &[MovingPart]) -> Self {
         let vertices: Vec<GpuVertex> = (0..mesh.positions.len())
             .map(|i| GpuVertex::of(mesh, i))
@@ -138,6 +156,18 @@ impl GpuMesh {
     /// Places the moving parts where they are at `time`, remembering where they were at
     /// `previous_time` for the motion vectors, as [`Scene::mesh_at`](crate::Scene::mesh_at)
     /// places them. Takes effect for passes submitted afterwards.
+    ///
+    /// ```no_run
+    /// # fn f(queue: &wgpu::Queue, mesh: &mut aokit_scene::gbuffer::GpuMesh) {
+    /// let frames: u32 = 30;
+    /// for frame in 0..frames {
+    ///     let time = frame as f32 / (frames - 1) as f32;
+    ///     let previous = frame.saturating_sub(1) as f32 / (frames - 1) as f32;
+    ///     mesh.place(queue, time, previous);
+    ///     // ... record and submit this frame's passes ...
+    /// }
+    /// # }
+    /// ```
     pub fn place(&mut self, queue: &wgpu::Queue, time: f32, previous_time: f32) {
         if self.placed == (time, previous_time) {
             return;
@@ -169,6 +199,17 @@ impl GpuMesh {
 }
 
 /// The G-buffer textures for one resolution.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, gbuffer: &aokit_scene::gbuffer::GBuffer)
+/// #     -> Result<(), aokit::GpuError> {
+/// use aokit::normals::decode_texels;
+/// // The normals in their own encoding, decoded on the CPU.
+/// let bytes = aokit::gpu::read_texture(&gpu.device, &gpu.queue, &gbuffer.normals)?;
+/// let normals = decode_texels(gbuffer.encoding, &bytes);
+/// assert_eq!(normals.len(), (gbuffer.size[0] * gbuffer.size[1]) as usize);
+/// # Ok(()) }
+/// ```
 pub struct GBuffer {
     /// Width and height in pixels.
     pub size: [u32; 2],
@@ -188,6 +229,16 @@ pub struct GBuffer {
 
 impl GBuffer {
     /// Allocates the targets, with normals in `encoding`.
+    ///
+    /// ```no_run
+    /// use aokit::NormalEncoding;
+    /// use aokit_scene::gbuffer::GBuffer;
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// // A slim G-buffer: 16-bit octahedral normals.
+    /// let gbuffer = GBuffer::new(&gpu.device, [1920, 1080], NormalEncoding::Oct16);
+    /// assert_eq!(gbuffer.normals.format(), NormalEncoding::Oct16.texture_format());
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub fn new(device: &wgpu::Device, size: [u32; 2], encoding: NormalEncoding) -> Self {
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
             | wgpu::TextureUsages::TEXTURE_BINDING
@@ -205,6 +256,22 @@ impl GBuffer {
 }
 
 /// The camera a G-buffer is drawn with, and the one of the frame before.
+///
+/// ```
+/// use aokit_scene::{Camera, gbuffer::GBufferCamera};
+/// use glam::Vec3;
+/// let bounds = aokit_scene::Scene::open("open").unwrap().bounds;
+/// let before = Camera::perspective("c", Vec3::new(0.0, 2.0, 6.0), Vec3::ZERO, 60.0);
+/// let now = Camera { eye: Vec3::new(0.2, 2.0, 6.0), ..before.clone() };
+/// let projection = now.projection(16.0 / 9.0, &bounds);
+/// let camera = GBufferCamera {
+///     view_from_world: now.view_from_world(),
+///     projection: &projection,
+///     // The camera moved: motion vectors lead to where each surface was seen before.
+///     previous_clip_from_world: before.projection(16.0 / 9.0, &bounds).clip_from_view()
+///         * before.view_from_world(),
+/// };
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct GBufferCamera<'a> {
     /// World to view space this frame.
@@ -217,6 +284,27 @@ pub struct GBufferCamera<'a> {
 }
 
 /// Rasterises a [`GpuMesh`] into a [`GBuffer`].
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, mesh: &aokit_scene::gbuffer::GpuMesh,
+/// #      camera: &aokit_scene::Camera, bounds: &aokit_scene::mesh::Bounds) {
+/// use aokit::NormalEncoding;
+/// use aokit_scene::gbuffer::{GBuffer, GBufferCamera, GBufferPass};
+/// let mut pass = GBufferPass::new(&gpu.device);
+/// let size = [800, 600];
+/// let gbuffer = GBuffer::new(&gpu.device, size, NormalEncoding::Oct32);
+/// let projection = camera.projection(800.0 / 600.0, bounds);
+/// let view_from_world = camera.view_from_world();
+/// let mut encoder = gpu.device.create_command_encoder(&Default::default());
+/// pass.encode(gpu, &mut encoder, mesh, &GBufferCamera {
+///     view_from_world,
+///     projection: &projection,
+///     // A still first frame: no motion.
+///     previous_clip_from_world: projection.clip_from_view() * view_from_world,
+/// }, &gbuffer);
+/// gpu.queue.submit([encoder.finish()]);
+/// # }
+/// ```
 pub struct GBufferPass {
     module: wgpu::ShaderModule,
     layout: wgpu::PipelineLayout,
@@ -228,6 +316,12 @@ pub struct GBufferPass {
 
 impl GBufferPass {
     /// Compiles the shader; pipelines are made per normal encoding on first use.
+    ///
+    /// ```no_run
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// let pass = aokit_scene::gbuffer::GBufferPass::new(&gpu.device);
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub fn new(device: &wgpu::Device) -> Self {
         let uniforms = UniformBlock::new(device, "gbuffer", wgpu::ShaderStages::VERTEX_FRAGMENT);
         Self {
@@ -297,7 +391,26 @@ impl GBufferPass {
         })
     }
 
-    /// Records the raster of `mesh` seen by `camera`.
+    /// Records the raster of `mesh` seen by `camera`, clearing `target` first. Then hand
+    /// [`GBuffer::depth`] and [`GBuffer::normals`] to an [`aokit::AoPipeline`]:
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, pass: &mut aokit_scene::gbuffer::GBufferPass,
+    /// #      mesh: &aokit_scene::gbuffer::GpuMesh, gbuffer: &aokit_scene::gbuffer::GBuffer,
+    /// #      camera: &aokit_scene::gbuffer::GBufferCamera<'_>,
+    /// #      ao: &mut aokit::AoPipeline) -> Result<(), aokit::AoError> {
+    /// use aokit::AoInputs;
+    /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    /// pass.encode(gpu, &mut encoder, mesh, camera, gbuffer);
+    /// let outputs = ao.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
+    ///     normals: Some(&gbuffer.normals),
+    ///     motion_vectors: Some(&gbuffer.motion),
+    ///     view_from_world: camera.view_from_world,
+    ///     ..AoInputs::new(&gbuffer.depth, *camera.projection)
+    /// })?;
+    /// gpu.queue.submit([encoder.finish()]);
+    /// # Ok(()) }
+    /// ```
     pub fn encode(
         &mut self,
         gpu: &GpuContext,

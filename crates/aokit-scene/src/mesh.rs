@@ -3,6 +3,21 @@
 use glam::{Mat4, Vec3};
 
 /// An indexed triangle list with a normal and an albedo per vertex.
+///
+/// ```
+/// use aokit_scene::mesh::Mesh;
+/// use glam::Vec3;
+/// // One red triangle facing +Z.
+/// let mesh = Mesh {
+///     positions: vec![Vec3::ZERO, Vec3::X, Vec3::Y],
+///     normals: vec![Vec3::Z; 3],
+///     albedo: vec![Vec3::new(0.8, 0.1, 0.1); 3],
+///     indices: vec![0, 1, 2],
+/// };
+/// mesh.validate()?;
+/// assert_eq!(mesh.triangle_count(), 1);
+/// # Ok::<(), String>(())
+/// ```
 #[derive(Clone, Debug, Default)]
 pub struct Mesh {
     /// World-space positions.
@@ -16,6 +31,13 @@ pub struct Mesh {
 }
 
 /// Axis-aligned bounds.
+///
+/// ```
+/// use aokit_scene::mesh::Bounds;
+/// use glam::Vec3;
+/// let room = Bounds { min: Vec3::new(-4.0, 0.0, -3.0), max: Vec3::new(4.0, 3.0, 3.0) };
+/// assert_eq!(room.center(), Vec3::new(0.0, 1.5, 0.0));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bounds {
     /// Smallest corner.
@@ -26,11 +48,29 @@ pub struct Bounds {
 
 impl Bounds {
     /// Centre point.
+    ///
+    /// ```
+    /// use aokit_scene::shapes::cuboid;
+    /// use glam::Vec3;
+    /// let table = cuboid(Vec3::new(1.0, 0.0, 1.0), Vec3::new(2.0, 0.8, 1.0), 0.0, Vec3::ONE);
+    /// // Where a camera framing the table looks.
+    /// let target = table.bounds().unwrap().center();
+    /// assert!((target - Vec3::new(2.0, 0.4, 1.5)).length() < 1e-6);
+    /// ```
     pub fn center(&self) -> Vec3 {
         0.5 * (self.min + self.max)
     }
 
     /// Half the diagonal: the radius of a sphere around the centre holding the box.
+    ///
+    /// ```
+    /// use aokit_scene::mesh::Bounds;
+    /// use glam::Vec3;
+    /// let bounds = Bounds { min: Vec3::ZERO, max: Vec3::new(3.0, 4.0, 12.0) };
+    /// assert_eq!(bounds.radius(), 6.5);
+    /// // An AO radius a few hundredths of the scene's size.
+    /// let radius = 0.02 * bounds.radius();
+    /// ```
     pub fn radius(&self) -> f32 {
         0.5 * (self.max - self.min).length()
     }
@@ -38,11 +78,27 @@ impl Bounds {
 
 impl Mesh {
     /// Number of triangles.
+    ///
+    /// ```
+    /// use aokit_scene::shapes::cuboid;
+    /// use glam::Vec3;
+    /// // Six faces of two triangles each.
+    /// assert_eq!(cuboid(Vec3::ZERO, Vec3::ONE, 0.0, Vec3::ONE).triangle_count(), 12);
+    /// ```
     pub fn triangle_count(&self) -> usize {
         self.indices.len() / 3
     }
 
     /// Bounds of all vertices, `None` for an empty mesh.
+    ///
+    /// ```
+    /// use aokit_scene::{mesh::Mesh, shapes::sphere};
+    /// use glam::Vec3;
+    /// let ball = sphere(Vec3::new(0.0, 1.0, 0.0), 1.0, Vec3::ONE);
+    /// let bounds = ball.bounds().unwrap();
+    /// assert!((bounds.min - Vec3::new(-1.0, 0.0, -1.0)).length() < 1e-5);
+    /// assert!(Mesh::default().bounds().is_none());
+    /// ```
     pub fn bounds(&self) -> Option<Bounds> {
         let first = *self.positions.first()?;
         let (min, max) = self
@@ -53,6 +109,19 @@ impl Mesh {
     }
 
     /// Appends `other`, transformed by `transform` (normals by its inverse transpose).
+    ///
+    /// ```
+    /// use aokit_scene::{mesh::Mesh, shapes::cuboid};
+    /// use glam::{Mat4, Vec3};
+    /// // A row of five pillars from one instance.
+    /// let pillar = cuboid(Vec3::ZERO, Vec3::new(0.2, 2.0, 0.2), 0.0, Vec3::ONE);
+    /// let mut row = Mesh::default();
+    /// for i in 0..5 {
+    ///     row.append_transformed(&pillar, Mat4::from_translation(Vec3::new(i as f32, 0.0, 0.0)));
+    /// }
+    /// assert_eq!(row.triangle_count(), 5 * pillar.triangle_count());
+    /// assert!((row.bounds().unwrap().max.x - 4.2).abs() < 1e-6);
+    /// ```
     pub fn append_transformed(&mut self, other: &Mesh, transform: Mat4) {
         let base = self.positions.len() as u32;
         let normal_matrix = transform.inverse().transpose();
@@ -82,11 +151,28 @@ impl Mesh {
     }
 
     /// Appends `other` unchanged.
+    ///
+    /// ```
+    /// use aokit_scene::shapes::{quad, sphere};
+    /// use glam::Vec3;
+    /// let mut mesh = quad(Vec3::new(-2.0, 0.0, 2.0), 4.0 * Vec3::X, -4.0 * Vec3::Z, Vec3::ONE);
+    /// mesh.append(&sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, Vec3::ONE));
+    /// mesh.validate()?;
+    /// # Ok::<(), String>(())
+    /// ```
     pub fn append(&mut self, other: &Mesh) {
         self.append_transformed(other, Mat4::IDENTITY);
     }
 
     /// Checks that every index is in range and every position finite, naming what is wrong.
+    ///
+    /// ```
+    /// use aokit_scene::shapes::quad;
+    /// use glam::Vec3;
+    /// let mut mesh = quad(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE);
+    /// mesh.indices.extend([0, 2, 9]);
+    /// assert_eq!(mesh.validate().unwrap_err(), "index 9 out of range for 4 vertices");
+    /// ```
     pub fn validate(&self) -> Result<(), String> {
         let n = self.positions.len();
         if self.normals.len() != n || self.albedo.len() != n {
@@ -116,6 +202,20 @@ impl Mesh {
 /// with one vertex per triangle corner. A corner's normal averages the area-weighted normals of
 /// the triangles around its vertex that lie within `crease_degrees` of its own triangle, so
 /// curved surfaces come out smooth while box edges stay sharp; 0 gives flat shading.
+///
+/// ```
+/// use aokit_scene::mesh::with_generated_normals;
+/// use glam::Vec3;
+/// // Two faces of a box meeting at a right angle along the x axis.
+/// let positions = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 0.0, 1.0), Vec3::new(0.0, 0.0, 1.0),
+///                  Vec3::new(1.0, -1.0, 0.0), Vec3::new(0.0, -1.0, 0.0)];
+/// let indices = [0, 3, 2, 0, 2, 1, 0, 1, 4, 0, 4, 5];
+/// let mesh = with_generated_normals(&positions, &indices, Vec3::splat(0.7), 30.0);
+/// // 90 degrees is past the crease angle: each face keeps its own normal.
+/// assert_eq!(mesh.normals[0], Vec3::Y);
+/// assert_eq!(mesh.normals[6], Vec3::NEG_Z);
+/// assert_eq!(mesh.positions.len(), indices.len());
+/// ```
 pub fn with_generated_normals(
     positions: &[Vec3],
     indices: &[u32],

@@ -5,6 +5,18 @@ use glam::{Mat3, Vec3};
 use crate::camera::Camera;
 
 /// How a camera moves over a sequence of frames.
+///
+/// ```
+/// use aokit_scene::{Camera, CameraPath};
+/// use glam::Vec3;
+/// let path: CameraPath = "orbit".parse()?;
+/// let camera = Camera::perspective("c", Vec3::new(0.0, 2.0, 6.0), Vec3::ZERO, 60.0);
+/// // The cameras of a 5-frame sequence.
+/// let cameras: Vec<Camera> = (0..5).map(|i| path.at(&camera, i as f32 / 4.0)).collect();
+/// // An orbit keeps its distance to the target.
+/// assert!(cameras.iter().all(|c| (c.eye.distance(c.target) - camera.eye.length()).abs() < 1e-4));
+/// # Ok::<(), String>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CameraPath {
     /// The camera does not move: what is left changing is the sampling noise (flicker).
@@ -27,6 +39,12 @@ impl CameraPath {
     ];
 
     /// The name used on the command line.
+    ///
+    /// ```
+    /// use aokit_scene::CameraPath;
+    /// let help = CameraPath::ALL.map(CameraPath::name).join(", ");
+    /// assert_eq!(help, "still, orbit, dolly, strafe");
+    /// ```
     pub fn name(self) -> &'static str {
         match self {
             CameraPath::Still => "still",

@@ -7,6 +7,16 @@ use crate::camera::Camera;
 use crate::scene::Scene;
 
 /// A tracer over the scene's triangles, its moving parts at rest.
+///
+/// ```
+/// use glam::Vec3;
+/// let scene = aokit_scene::Scene::open("open")?;
+/// let tracer = aokit_scene::reference::tracer(&scene)?;
+/// // The scene is one floor at height 0.
+/// let hit = tracer.closest_hit(Vec3::new(3.0, 10.0, -7.0), Vec3::NEG_Y, 0.0, f32::INFINITY);
+/// assert!(hit.is_some_and(|h| (h.t - 10.0).abs() < 1e-5 && h.normal == Vec3::Y));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn tracer(scene: &Scene) -> Result<Tracer, ReferenceError> {
     tracer_at(scene, 0.0)
 }
@@ -14,6 +24,19 @@ pub fn tracer(scene: &Scene) -> Result<Tracer, ReferenceError> {
 /// A tracer over the scene's triangles at `time` of a sequence
 /// ([`Scene::mesh_at`]), as [`Renderer::render_at`](crate::Renderer::render_at) draws them.
 /// It builds a BVH each call: for a per-frame reference of a moving scene.
+///
+/// ```
+/// use aokit_scene::{Scene, reference::tracer_at};
+/// let scene = Scene::open("room")?;
+/// let frames = 3;
+/// for frame in 0..frames {
+///     let time = frame as f32 / (frames - 1) as f32;
+///     // The triangles as the raster draws them in this frame.
+///     let tracer = tracer_at(&scene, time)?;
+///     // ... trace this frame's reference ...
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn tracer_at(scene: &Scene, time: f32) -> Result<Tracer, ReferenceError> {
     let mesh = scene.mesh_at(time);
     Tracer::new(&mesh.positions, &mesh.indices)
@@ -21,6 +44,21 @@ pub fn tracer_at(scene: &Scene, time: f32) -> Result<Tracer, ReferenceError> {
 
 /// The pixel grid `camera` gets at `size`, with exactly the projection and clipping planes the
 /// raster uses ([`Renderer::projection`](crate::Renderer::projection)).
+///
+/// ```
+/// use aokit_reference::AoOptions;
+/// use aokit_scene::{Scene, reference};
+/// let scene = Scene::open("room")?;
+/// let camera = scene.camera(None)?;
+/// // A thumbnail of the ground truth, to compare with the raster's AO pixel by pixel.
+/// let pixels = reference::pixel_camera(&scene, &camera, [16, 9]);
+/// let options = AoOptions { radius: scene.suggested_radius.unwrap_or(1.0), spp: 8,
+///                           ..Default::default() };
+/// let image = reference::tracer(&scene)?.render(&pixels, &options, &|_| {})?;
+/// assert_eq!(image.ao.len(), 16 * 9);
+/// assert!(image.ao.iter().any(|&ao| ao < 1.0));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn pixel_camera(scene: &Scene, camera: &Camera, size: [u32; 2]) -> PixelCamera {
     let projection = camera.projection(size[0] as f32 / size[1] as f32, &scene.bounds);
     let lens = match projection.kind {

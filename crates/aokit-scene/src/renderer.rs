@@ -16,6 +16,18 @@ use crate::scene::Scene;
 use crate::shadow::{ShadowPass, SunView};
 
 /// One rendered view, on the CPU, row by row from the top-left pixel.
+///
+/// ```no_run
+/// # fn f(frame: &aokit_scene::Frame) {
+/// let [width, height] = frame.size;
+/// let centre = (height / 2 * width + width / 2) as usize;
+/// // Depth 0 marks the sky: no surface, so no AO to speak of.
+/// if frame.linear_depth[centre] > 0.0 {
+///     println!("AO {} at depth {}", frame.ao[centre], frame.linear_depth[centre]);
+/// }
+/// let covered = frame.linear_depth.iter().filter(|&&d| d > 0.0).count();
+/// # }
+/// ```
 #[derive(Clone, Debug)]
 pub struct Frame {
     /// Width and height in pixels.
@@ -53,6 +65,18 @@ pub struct Frame {
 }
 
 /// Why a frame could not be rendered.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+/// #      camera: &aokit_scene::Camera) {
+/// use aokit_scene::RenderError;
+/// match renderer.render(gpu, camera, [100_000, 100], 0) {
+///     Err(RenderError::Size { reason, .. }) => eprintln!("pick a smaller image: {reason}"),
+///     Err(other) => eprintln!("{other}"),
+///     Ok(frame) => println!("{} pixels", frame.ao.len()),
+/// }
+/// # }
+/// ```
 #[derive(Debug, thiserror::Error)]
 pub enum RenderError {
     /// The resolution is empty or beyond the device.
@@ -77,6 +101,27 @@ pub enum RenderError {
 }
 
 /// A scene on the GPU with the passes to render it.
+///
+/// A moving sequence, where the temporal filter and the motion vectors carry from frame to
+/// frame:
+///
+/// ```no_run
+/// use aokit::AoSettings;
+/// use aokit_scene::{CameraPath, Renderer, Scene};
+/// let gpu = aokit::GpuContext::headless()?;
+/// let scene = Scene::open("room")?;
+/// let start = scene.camera(Some("front"))?;
+/// let mut settings = AoSettings::default();
+/// settings.temporal.enabled = true;
+/// let mut renderer = Renderer::new(&gpu, &scene, &settings)?;
+/// let frames = 8;
+/// for frame in 0..frames {
+///     let t = frame as f32 / (frames - 1) as f32;
+///     let camera = CameraPath::Orbit.at(&start, t);
+///     let image = renderer.render_at(&gpu, &camera, [480, 270], frame, t)?;
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub struct Renderer {
     mesh: GpuMesh,
     bounds: crate::mesh::Bounds,
@@ -107,6 +152,18 @@ pub struct Renderer {
 
 impl Renderer {
     /// Uploads `scene` and compiles the passes for `settings`.
+    ///
+    /// ```no_run
+    /// use aokit::{AoSettings, Method, Preset};
+    /// use aokit_scene::{Renderer, Scene};
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// let scene = Scene::open("stairs")?;
+    /// let mut settings = AoSettings::preset(Method::Hbao, Preset::Medium);
+    /// // The scene's own scale, rather than the default of one unit.
+    /// settings.radius = scene.suggested_radius.unwrap_or(settings.radius);
+    /// let renderer = Renderer::new(&gpu, &scene, &settings)?;
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn new(
         gpu: &GpuContext,
         scene: &Scene,
@@ -138,11 +195,32 @@ impl Renderer {
     /// history starts over and the frame has no motion. Frames rendered one after the other are
     /// otherwise taken as a sequence: each reprojects the previous one, and its motion vectors
     /// lead there.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      scene: &aokit_scene::Scene) -> Result<(), Box<dyn std::error::Error>> {
+    /// // One image per camera of the scene: each is a cut, not a move.
+    /// for (i, camera) in scene.cameras.iter().enumerate() {
+    ///     renderer.reset_history();
+    ///     let frame = renderer.render(gpu, camera, [640, 360], i as u32)?;
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn reset_history(&mut self) {
         self.reset_history = true;
     }
 
     /// The AO settings as given to [`Renderer::new`] or [`Renderer::set_settings`].
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// // Halve the radius, keeping everything else.
+    /// let mut settings = *renderer.settings();
+    /// settings.radius *= 0.5;
+    /// renderer.set_settings(gpu, &settings)?;
+    /// # Ok(()) }
+    /// ```
     pub fn settings(&self) -> &AoSettings {
         &self.settings
     }
@@ -151,21 +229,60 @@ impl Renderer {
     /// [`AoSettings::bent_normals`] turned on when the composite uses
     /// [`SpecularOcclusion::Gtso`] and the method has bent normals. The caller's settings are
     /// left as they were, and [`Frame::bent_normals`] follows them.
+    ///
+    /// ```no_run
+    /// # fn f(renderer: &mut aokit_scene::Renderer) {
+    /// use aokit_scene::composite::SpecularOcclusion;
+    /// renderer.lighting.specular_occlusion = SpecularOcclusion::Gtso;
+    /// let running = renderer.pipeline_settings();
+    /// // GTSO needs bent normals, which only the slice methods compute.
+    /// assert_eq!(running.bent_normals,
+    ///            renderer.settings().bent_normals || running.method.has_bent_normals());
+    /// # }
+    /// ```
     pub fn pipeline_settings(&self) -> AoSettings {
         pipeline_settings(&self.settings, &self.lighting)
     }
 
     /// Times the AO passes of later frames; `false` when the device has no timestamps.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), aokit_scene::RenderError> {
+    /// if !renderer.enable_timing(gpu) {
+    ///     eprintln!("{} has no GPU timestamps", gpu.describe());
+    /// }
+    /// renderer.render(gpu, camera, [1920, 1080], 0)?;
+    /// if let Some(times) = renderer.last_ao_times(gpu) {
+    ///     let total: f64 = times?.iter().map(|t| t.ms).sum();
+    ///     println!("AO took {total:.2} ms");
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn enable_timing(&mut self, gpu: &GpuContext) -> bool {
         self.ao.enable_timing(&gpu.device, &gpu.queue)
     }
 
-    /// GPU time of each AO pass of the last frame, when timing is on.
+    /// GPU time of each AO pass of the last frame, when timing is on: see
+    /// [`Renderer::enable_timing`].
     pub fn last_ao_times(&self, gpu: &GpuContext) -> Option<Result<Vec<PassTime>, GpuError>> {
         self.ao.last_pass_times(&gpu.device)
     }
 
     /// Changes the AO settings for later frames.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::{AoSettings, Method, Preset};
+    /// // The same view with each method; the kernels compile once, on first use.
+    /// for method in Method::ALL {
+    ///     renderer.set_settings(gpu, &AoSettings::preset(method, Preset::Medium))?;
+    ///     renderer.reset_history();
+    ///     let frame = renderer.render(gpu, camera, [640, 360], 0)?;
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn set_settings(
         &mut self,
         gpu: &GpuContext,
@@ -182,6 +299,17 @@ impl Renderer {
 
     /// The projection `camera` gets at `size`, near and far planes fitted to the scene; the
     /// reference tracer's [`pixel_camera`](crate::reference::pixel_camera) uses the same.
+    ///
+    /// ```no_run
+    /// # fn f(renderer: &aokit_scene::Renderer, camera: &aokit_scene::Camera) {
+    /// // Turn a pixel's linear depth into a view-space position, as the AO kernels see it.
+    /// let size = [640, 360];
+    /// let projection = renderer.projection(camera, size);
+    /// let ndc = aokit::projection::pixel_to_ndc(glam::Vec2::new(320.0, 180.0),
+    ///                                           glam::Vec2::new(640.0, 360.0));
+    /// let point = projection.view_position_from_linear(ndc, 4.0);
+    /// # }
+    /// ```
     pub fn projection(&self, camera: &Camera, size: [u32; 2]) -> Projection {
         camera.projection(size[0] as f32 / size[1] as f32, &self.bounds)
     }
@@ -234,6 +362,24 @@ impl Renderer {
     /// For running an [`AoPipeline`] of one's own on the G-buffer: `aokit bench` does, to time
     /// the AO passes alone, on [`GBuffer::depth`], [`GBuffer::normals`] and
     /// [`GBuffer::motion`] with the returned projection and `camera.view_from_world()`.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), Box<dyn std::error::Error>> {
+    /// use aokit::{AoInputs, AoPipeline, AoSettings, NormalEncoding};
+    /// let (gbuffer, projection) =
+    ///     renderer.render_gbuffer(gpu, camera, [1920, 1080], NormalEncoding::Oct32)?;
+    /// let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?;
+    /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    /// let outputs = pipeline.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
+    ///     normals: Some(&gbuffer.normals),
+    ///     view_from_world: camera.view_from_world(),
+    ///     ..AoInputs::new(&gbuffer.depth, projection)
+    /// })?;
+    /// gpu.queue.submit([encoder.finish()]);
+    /// let ao = aokit::gpu::read_texture_f32(&gpu.device, &gpu.queue, outputs.ao)?;
+    /// # Ok(()) }
+    /// ```
     pub fn render_gbuffer(
         &mut self,
         gpu: &GpuContext,
@@ -264,6 +410,16 @@ impl Renderer {
 
     /// Renders G-buffer, AO and lit image for `camera` at `size` with the scene at rest, and
     /// reads them back: [`Renderer::render_at`] at time 0.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      scene: &aokit_scene::Scene) -> Result<(), Box<dyn std::error::Error>> {
+    /// let camera = scene.camera(Some("corner"))?;
+    /// let frame = renderer.render(gpu, &camera, [1280, 720], 0)?;
+    /// // `lit` is RGBA8, sRGB-encoded: ready for an image file.
+    /// assert_eq!(frame.lit.len(), 1280 * 720 * 4);
+    /// # Ok(()) }
+    /// ```
     pub fn render(
         &mut self,
         gpu: &GpuContext,
@@ -278,6 +434,19 @@ impl Renderer {
     /// where they are at `time` (0 to 1 over a sequence, see
     /// [`Scene::mesh_at`](crate::Scene::mesh_at)), and reads them back. The motion vectors
     /// lead to the previous frame's camera and time.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), aokit_scene::RenderError> {
+    /// // The still camera watches the scene's parts move over 12 frames.
+    /// for frame in 0..12 {
+    ///     let time = frame as f32 / 11.0;
+    ///     let image = renderer.render_at(gpu, camera, [640, 360], frame, time)?;
+    ///     let fastest = image.motion_vectors.iter().map(|m| m.length()).fold(0.0, f32::max);
+    ///     println!("frame {frame}: parts move up to {fastest:.1} pixels");
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn render_at(
         &mut self,
         gpu: &GpuContext,

@@ -11,6 +11,15 @@ use crate::load;
 use crate::mesh::{Bounds, Mesh};
 
 /// Everything the renderer and the reference tracer need to know about a scene.
+///
+/// ```
+/// let scene = aokit_scene::Scene::open("stairs")?;
+/// for note in &scene.notes {
+///     eprintln!("{}: {note}", scene.name);
+/// }
+/// println!("{} triangles, {} cameras", scene.mesh.triangle_count(), scene.cameras.len());
+/// # Ok::<(), aokit_scene::SceneError>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct Scene {
     /// Built-in name or file stem.
@@ -32,6 +41,17 @@ pub struct Scene {
 }
 
 /// Why a scene could not be opened.
+///
+/// ```
+/// use aokit_scene::{Scene, SceneError};
+/// match Scene::open("sponza.fbx") {
+///     Err(SceneError::Unknown(spec)) => assert_eq!(spec, "sponza.fbx"),
+///     other => panic!("{other:?}"),
+/// }
+/// // The message lists what would have worked.
+/// let message = Scene::open("rooom").unwrap_err().to_string();
+/// assert!(message.contains("room, stairs"));
+/// ```
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
     /// Neither a built-in name nor an existing file.
@@ -72,6 +92,17 @@ impl Scene {
     ///
     /// # Panics
     /// If the mesh is empty: built-ins never are, and loaders check first.
+    ///
+    /// ```
+    /// use aokit_scene::{Camera, Scene, shapes};
+    /// use glam::Vec3;
+    /// let floor_corner = Vec3::new(-3.0, 0.0, 3.0);
+    /// let mut mesh = shapes::quad(floor_corner, 6.0 * Vec3::X, -6.0 * Vec3::Z, Vec3::ONE);
+    /// mesh.append(&shapes::sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, Vec3::new(0.8, 0.3, 0.2)));
+    /// let camera = Camera::perspective("front", Vec3::new(0.0, 1.0, 3.0), Vec3::ZERO, 50.0);
+    /// let scene = Scene::new("ball on a floor", mesh, vec![camera], Some(0.25));
+    /// assert_eq!(scene.bounds.max.y, 1.0);
+    /// ```
     pub fn new(
         name: &str,
         mesh: Mesh,
@@ -151,6 +182,15 @@ impl Scene {
 
     /// Picks a camera by name or index; with `None`, the first camera, or a framing camera when
     /// the scene has none.
+    ///
+    /// ```
+    /// let scene = aokit_scene::Scene::open("room")?;
+    /// // As `--camera` takes it: a name, or an index into the scene's list.
+    /// assert_eq!(scene.camera(Some("corner"))?, scene.camera(Some("1"))?);
+    /// assert_eq!(scene.camera(None)?.name, "front");
+    /// assert!(scene.camera(Some("attic")).is_err());
+    /// # Ok::<(), aokit_scene::SceneError>(())
+    /// ```
     pub fn camera(&self, selector: Option<&str>) -> Result<Camera, SceneError> {
         let Some(wanted) = selector else {
             return Ok(self

@@ -25,6 +25,13 @@ pub const SHADOW: ShaderSource = ShaderSource {
 };
 
 /// Every program of this crate.
+///
+/// ```
+/// // Catches a WGSL error on the CPU, before any device is opened.
+/// for shader in aokit_scene::shaders::ALL {
+///     shader.validate().unwrap_or_else(|e| panic!("{}: {e}", shader.name));
+/// }
+/// ```
 pub const ALL: &[ShaderSource] = &[GBUFFER, COMPOSITE, SHADOW];
 
 #[cfg(test)]

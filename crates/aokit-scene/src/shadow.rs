@@ -21,6 +21,19 @@ struct ShadowUniforms {
 }
 
 /// Where the sun's view sits for a scene.
+///
+/// ```
+/// use aokit_scene::{Scene, shadow::{SHADOW_MAP_SIZE, SunView}};
+/// use glam::Vec3;
+/// let scene = Scene::open("room").unwrap();
+/// let sun = SunView::new(Vec3::new(0.3, 1.0, 0.15), &scene.bounds);
+/// // Every point of the scene lands inside the shadow map and its depth range.
+/// let corner = sun.light_clip_from_world.project_point3(scene.bounds.max);
+/// assert!(corner.x.abs() <= 1.0 && corner.y.abs() <= 1.0 && (0.0..=1.0).contains(&corner.z));
+/// // One texel covers the scene's diameter over the map's size.
+/// let diameter = 2.0 * scene.bounds.radius();
+/// assert!((sun.texel_size * SHADOW_MAP_SIZE as f32 - diameter).abs() < 1e-4);
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct SunView {
     /// World to the shadow map's clip space (standard depth, near = 0).
@@ -31,6 +44,15 @@ pub struct SunView {
 
 impl SunView {
     /// An orthographic view along `-sun_direction` holding all of `bounds`.
+    ///
+    /// ```
+    /// use aokit_scene::composite::Lighting;
+    /// use aokit_scene::shadow::SunView;
+    /// let scene = aokit_scene::Builtin::Stairs.build();
+    /// // The sun the composite lights with, so shadows fall where the light comes from.
+    /// let sun = SunView::new(Lighting::default().sun_direction, &scene.bounds);
+    /// assert!(sun.texel_size > 0.0);
+    /// ```
     pub fn new(sun_direction: Vec3, bounds: &Bounds) -> Self {
         let radius = bounds.radius().max(1e-3);
         let center = bounds.center();
@@ -51,6 +73,20 @@ impl SunView {
 }
 
 /// Renders the shadow map.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, scene: &aokit_scene::Scene,
+/// #      mesh: &aokit_scene::gbuffer::GpuMesh) {
+/// use aokit_scene::shadow::{ShadowPass, SunView};
+/// use glam::Vec3;
+/// let pass = ShadowPass::new(&gpu.device);
+/// let sun = SunView::new(Vec3::new(0.3, 1.0, 0.15), &scene.bounds);
+/// let mut encoder = gpu.device.create_command_encoder(&Default::default());
+/// pass.encode(&gpu.queue, &mut encoder, mesh, &sun);
+/// gpu.queue.submit([encoder.finish()]);
+/// // `pass.map` now holds the depth seen from the sun, for the composite to compare against.
+/// # }
+/// ```
 pub struct ShadowPass {
     pipeline: wgpu::RenderPipeline,
     uniforms: UniformBlock<ShadowUniforms>,
@@ -60,6 +96,14 @@ pub struct ShadowPass {
 
 impl ShadowPass {
     /// Compiles the pass and allocates the map.
+    ///
+    /// ```no_run
+    /// use aokit_scene::shadow::{SHADOW_MAP_SIZE, ShadowPass};
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// let pass = ShadowPass::new(&gpu.device);
+    /// assert_eq!(pass.map.width(), SHADOW_MAP_SIZE);
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub fn new(device: &wgpu::Device) -> Self {
         let uniforms = UniformBlock::new(device, "shadow", wgpu::ShaderStages::VERTEX);
         let pipeline_layout = uniforms.pipeline_layout(device, "shadow");
@@ -105,7 +149,18 @@ impl ShadowPass {
         }
     }
 
-    /// Records the shadow map of `mesh` seen from `sun`.
+    /// Records the shadow map of `mesh` seen from `sun`. The sun only needs a new map when it
+    /// or the mesh moves:
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, pass: &aokit_scene::shadow::ShadowPass,
+    /// #      mesh: &mut aokit_scene::gbuffer::GpuMesh, sun: &aokit_scene::shadow::SunView) {
+    /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    /// mesh.place(&gpu.queue, 0.5, 0.4);
+    /// pass.encode(&gpu.queue, &mut encoder, mesh, sun);
+    /// gpu.queue.submit([encoder.finish()]);
+    /// # }
+    /// ```
     pub fn encode(
         &self,
         queue: &wgpu::Queue,

@@ -5,6 +5,15 @@ use glam::{Mat4, Quat, Vec3};
 use crate::mesh::Mesh;
 
 /// A parallelogram from `corner` spanned by `u` and `v`; its front faces `u x v`.
+///
+/// ```
+/// use aokit_scene::shapes::quad;
+/// use glam::Vec3;
+/// // A 4 m wall along x, 3 m high, facing +z.
+/// let wall = quad(Vec3::new(-2.0, 0.0, 0.0), 4.0 * Vec3::X, 3.0 * Vec3::Y, Vec3::splat(0.75));
+/// assert!(wall.normals.iter().all(|&n| n == Vec3::Z));
+/// assert_eq!(wall.triangle_count(), 2);
+/// ```
 pub fn quad(corner: Vec3, u: Vec3, v: Vec3, albedo: Vec3) -> Mesh {
     let normal = u.cross(v).normalize();
     Mesh {
@@ -17,6 +26,17 @@ pub fn quad(corner: Vec3, u: Vec3, v: Vec3, albedo: Vec3) -> Mesh {
 
 /// A box with flat faces, given by its minimum corner and size, turned `yaw_degrees` about the
 /// vertical axis through its centre.
+///
+/// ```
+/// use aokit_scene::shapes::cuboid;
+/// use glam::Vec3;
+/// // A crate 1 m on a side on the floor, turned 30 degrees.
+/// let wood = Vec3::new(0.55, 0.38, 0.24);
+/// let crate_box = cuboid(Vec3::new(-0.5, 0.0, -0.5), Vec3::ONE, 30.0, wood);
+/// let bounds = crate_box.bounds().unwrap();
+/// // Turning about the vertical axis keeps it standing on the floor.
+/// assert!(bounds.min.y.abs() < 1e-6 && (bounds.max.y - 1.0).abs() < 1e-6);
+/// ```
 pub fn cuboid(min: Vec3, size: Vec3, yaw_degrees: f32, albedo: Vec3) -> Mesh {
     let half = 0.5 * size;
     let mut local = Mesh::default();
@@ -42,6 +62,17 @@ pub fn cuboid(min: Vec3, size: Vec3, yaw_degrees: f32, albedo: Vec3) -> Mesh {
 
 /// A UV sphere with smooth normals, fine enough that its facets stay under a pixel of depth
 /// error at the sizes the built-in scenes show it.
+///
+/// ```
+/// use aokit_scene::shapes::sphere;
+/// use glam::Vec3;
+/// let centre = Vec3::new(0.0, 0.5, 0.0);
+/// let ball = sphere(centre, 0.5, Vec3::ONE);
+/// // Smooth shading: each normal points away from the centre.
+/// for (p, n) in ball.positions.iter().zip(&ball.normals) {
+///     assert!(((*p - centre) * 2.0 - *n).length() < 1e-5);
+/// }
+/// ```
 pub fn sphere(center: Vec3, radius: f32, albedo: Vec3) -> Mesh {
     const SEGMENTS: u32 = 96;
     const RINGS: u32 = 48;

@@ -5,6 +5,22 @@ use crate::projection::ProjectionError;
 use crate::settings::SettingsError;
 
 /// Everything [`AoPipeline`](crate::AoPipeline) can refuse.
+///
+/// The checks the pipeline runs can be run up front, before any device exists, and their
+/// errors convert with `?`:
+///
+/// ```
+/// use aokit::{AoError, AoSettings, Projection};
+/// fn check(settings: &AoSettings, projection: &Projection) -> Result<(), AoError> {
+///     settings.validate()?;
+///     projection.validate()?;
+///     Ok(())
+/// }
+/// let projection = Projection::perspective(1.0, 16.0 / 9.0, 0.1, None);
+/// let settings = AoSettings { radius: -1.0, ..AoSettings::default() };
+/// let err = check(&settings, &projection).unwrap_err();
+/// assert!(matches!(err, AoError::Settings(ref e) if e.field == "radius"), "{err}");
+/// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum AoError {
     /// A setting is out of range.

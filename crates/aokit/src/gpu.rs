@@ -6,6 +6,16 @@
 use std::fmt;
 
 /// How an adapter was found, for the one-line notice tools print.
+///
+/// ```no_run
+/// use aokit::{AdapterKind, GpuContext};
+/// let gpu = GpuContext::headless()?;
+/// if gpu.adapter_kind() == AdapterKind::Software {
+///     eprintln!("note: no GPU found, running on {} (slow, but the results are the same)",
+///               gpu.describe());
+/// }
+/// # Ok::<(), aokit::GpuError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AdapterKind {
     /// A GPU (discrete, integrated or virtual).
@@ -15,6 +25,16 @@ pub enum AdapterKind {
 }
 
 /// Why no device could be created.
+///
+/// ```no_run
+/// use aokit::{GpuContext, GpuError};
+/// match GpuContext::headless() {
+///     Ok(gpu) => println!("{}", gpu.describe()),
+///     // The message says what to install; a test suite may prefer to skip.
+///     Err(GpuError::NoAdapter { .. }) => eprintln!("skipping: no GPU adapter"),
+///     Err(e) => panic!("{e}"),
+/// }
+/// ```
 #[derive(Debug, thiserror::Error)]
 pub enum GpuError {
     /// No adapter exists on any enabled backend.
@@ -52,6 +72,14 @@ pub enum GpuError {
 }
 
 /// A device and queue with the adapter they came from.
+///
+/// ```no_run
+/// use aokit::{AoPipeline, AoSettings, GpuContext};
+/// let gpu = GpuContext::headless()?;
+/// let pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?;
+/// println!("{} on {:?}", gpu.adapter_info.name, gpu.adapter_info.backend);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub struct GpuContext {
     /// The logical device.
     pub device: wgpu::Device,
@@ -85,6 +113,15 @@ impl GpuContext {
     }
 
     /// The async form of [`GpuContext::headless`].
+    ///
+    /// ```no_run
+    /// async fn start() -> Result<aokit::GpuContext, aokit::GpuError> {
+    ///     // Inside an async runtime, where blocking on the adapter would stall other tasks.
+    ///     aokit::GpuContext::headless_async().await
+    /// }
+    /// let gpu = pollster::block_on(start())?;
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub async fn headless_async() -> Result<Self, GpuError> {
         let descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
         let backends = descriptor.backends;
@@ -126,12 +163,19 @@ impl GpuContext {
         })
     }
 
-    /// Hardware or software.
+    /// Hardware or software. See [`AdapterKind`] for an example.
     pub fn adapter_kind(&self) -> AdapterKind {
         adapter_kind(&self.adapter_info)
     }
 
     /// `name (backend, driver)`, for logs and reports.
+    ///
+    /// ```no_run
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// // Benchmarks are only comparable on the same adapter: record which one.
+    /// let header = format!("# adapter: {}", gpu.describe());
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub fn describe(&self) -> String {
         let info = &self.adapter_info;
         let driver = [info.driver.as_str(), info.driver_info.as_str()]
@@ -194,6 +238,15 @@ fn choose_adapter(
 }
 
 /// A 2D texture with one mip level and one sample, the kind every aokit pass uses.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device) {
+/// use aokit::gpu::create_texture_2d;
+/// // A depth target for a renderer's own raster pass, which the AO pipeline then reads.
+/// let depth = create_texture_2d(device, "depth", [1920, 1080], wgpu::TextureFormat::Depth32Float,
+///     wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING);
+/// # }
+/// ```
 pub fn create_texture_2d(
     device: &wgpu::Device,
     label: &str,
@@ -219,6 +272,17 @@ pub fn create_texture_2d(
 
 /// A 2D texture filled from tightly packed rows of `bytes` (one mip level), with
 /// `TEXTURE_BINDING | COPY_DST` usage.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::GpuError> {
+/// use aokit::gpu::upload_texture_2d;
+/// // Linear depth from a file or a CPU renderer, as the AO pipeline accepts it.
+/// let size = [320, 240];
+/// let depth = vec![5.0f32; 320 * 240];
+/// let texture = upload_texture_2d(device, queue, "depth", size, wgpu::TextureFormat::R32Float,
+///                                 bytemuck::cast_slice(&depth))?;
+/// # Ok(()) }
+/// ```
 pub fn upload_texture_2d(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
@@ -262,6 +326,18 @@ pub fn upload_texture_2d(
 }
 
 /// A uniform buffer the size of `T`, to be filled with `queue.write_buffer`.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) {
+/// use aokit::gpu::create_uniform_buffer;
+/// // Mirrors a WGSL `struct Tint { color: vec4<f32> }`.
+/// #[repr(C)]
+/// #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+/// struct Tint { color: [f32; 4] }
+/// let buffer = create_uniform_buffer::<Tint>(device, "tint");
+/// queue.write_buffer(&buffer, 0, bytemuck::bytes_of(&Tint { color: [1.0, 0.5, 0.2, 1.0] }));
+/// # }
+/// ```
 pub fn create_uniform_buffer<T: bytemuck::Pod>(device: &wgpu::Device, label: &str) -> wgpu::Buffer {
     device.create_buffer(&wgpu::BufferDescriptor {
         label: Some(label),
@@ -284,6 +360,15 @@ fn texel_size(format: wgpu::TextureFormat) -> Result<u32, GpuError> {
 /// Copies mip level 0 of a 2D texture to the CPU, tightly packed, row by row.
 ///
 /// Blocks until the GPU has finished. Depth textures return their depth aspect.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, normals: &wgpu::Texture,
+/// #      encoding: aokit::NormalEncoding) -> Result<(), aokit::GpuError> {
+/// // A G-buffer's normals, decoded on the CPU from the texels' bytes.
+/// let bytes = aokit::gpu::read_texture(device, queue, normals)?;
+/// let decoded = aokit::normals::decode_texels(encoding, &bytes);
+/// # Ok(()) }
+/// ```
 pub fn read_texture(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
@@ -355,6 +440,15 @@ pub fn read_texture(
 }
 
 /// Reads back a single-channel `f32` texture (`R32Float` or `Depth32Float`).
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, outputs: &aokit::AoOutputs<'_>)
+/// #     -> Result<(), aokit::GpuError> {
+/// // After the frame's commands were submitted.
+/// let ao = aokit::gpu::read_texture_f32(device, queue, outputs.ao)?;
+/// let mean = ao.iter().sum::<f32>() / ao.len() as f32;
+/// # Ok(()) }
+/// ```
 pub fn read_texture_f32(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
@@ -373,6 +467,18 @@ pub fn read_texture_f32(
 }
 
 /// Reads back an `Rgba16Float` texture (the bent normals) as `f32` texels.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, outputs: &aokit::AoOutputs<'_>)
+/// #     -> Result<(), aokit::GpuError> {
+/// if let Some(bent) = outputs.bent_normals {
+///     for [x, y, z, ao] in aokit::gpu::read_texture_rgba16f(device, queue, bent)? {
+///         // The mean unoccluded direction, and the kernel's AO alongside.
+///         let direction = glam::Vec3::new(x, y, z);
+///     }
+/// }
+/// # Ok(()) }
+/// ```
 pub fn read_texture_rgba16f(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
@@ -382,6 +488,15 @@ pub fn read_texture_rgba16f(
 }
 
 /// Reads back an `Rg16Float` texture (motion vectors) as `f32` texels.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, motion: &wgpu::Texture)
+/// #     -> Result<(), aokit::GpuError> {
+/// let offsets = aokit::gpu::read_texture_rg16f(device, queue, motion)?;
+/// let fastest = offsets.iter().map(|[x, y]| x.hypot(*y)).fold(0.0, f32::max);
+/// println!("surfaces moved up to {fastest} pixels since the last frame");
+/// # Ok(()) }
+/// ```
 pub fn read_texture_rg16f(
     device: &wgpu::Device,
     queue: &wgpu::Queue,

@@ -27,6 +27,13 @@ pub struct Mt19937 {
 
 impl Mt19937 {
     /// Seeds the generator as the paper's 2002 initialisation does (`std::mt19937(seed)`).
+    ///
+    /// ```
+    /// use aokit::noise::Mt19937;
+    /// // The same seed gives the same stream on every platform.
+    /// let (mut a, mut b) = (Mt19937::new(42), Mt19937::new(42));
+    /// assert!((0..1000).all(|_| a.next_u32() == b.next_u32()));
+    /// ```
     pub fn new(seed: u32) -> Self {
         let mut state = [0u32; 624];
         state[0] = seed;
@@ -40,6 +47,14 @@ impl Mt19937 {
     }
 
     /// The next 32 random bits.
+    ///
+    /// ```
+    /// use aokit::noise::Mt19937;
+    /// let mut rng = Mt19937::new(5489);
+    /// // The C++ standard fixes the 10000th output of `std::mt19937` with the default seed.
+    /// let ten_thousandth = (0..10_000).map(|_| rng.next_u32()).last();
+    /// assert_eq!(ten_thousandth, Some(4123659995));
+    /// ```
     pub fn next_u32(&mut self) -> u32 {
         if self.index == 624 {
             self.twist();
@@ -53,6 +68,14 @@ impl Mt19937 {
     }
 
     /// A value in `[0, 1)` from the next 32 bits: their top 24, which an `f32` holds exactly.
+    ///
+    /// ```
+    /// use aokit::noise::Mt19937;
+    /// let mut rng = Mt19937::new(1);
+    /// // Random rotations for a 4x4 noise tile.
+    /// let angles: Vec<f32> = (0..16).map(|_| rng.next_f32() * std::f32::consts::TAU).collect();
+    /// assert!(angles.iter().all(|a| (0.0..std::f32::consts::TAU).contains(a)));
+    /// ```
     pub fn next_f32(&mut self) -> f32 {
         unit_from_fixed(self.next_u32())
     }
@@ -214,6 +237,19 @@ impl EnergyField {
 ///
 /// # Panics
 /// When `size` is 24 or less: the filter would overlap itself on the torus.
+///
+/// ```
+/// use aokit::noise::void_and_cluster;
+/// let size = 32;
+/// let ranks = void_and_cluster(size, 7);
+/// // Thresholding at any count keeps that many pixels: a dither pattern of that density.
+/// let quarter = ranks.iter().filter(|&&r| r < (size * size / 4) as u32).count();
+/// assert_eq!(quarter, size * size / 4);
+/// // Every pixel has its own rank.
+/// let mut sorted = ranks.clone();
+/// sorted.sort_unstable();
+/// assert!(sorted.iter().enumerate().all(|(i, &r)| r == i as u32));
+/// ```
 pub fn void_and_cluster(size: usize, seed: u32) -> Vec<u32> {
     let count = size * size;
     let mut initial = EnergyField::new(size);
@@ -264,6 +300,14 @@ const BLUE_SEEDS: [u32; 2] = [1, 2];
 ///
 /// # Panics
 /// For other sizes.
+///
+/// ```
+/// let tile = aokit::noise::blue_noise(64);
+/// assert_eq!(tile.len(), 64 * 64);
+/// // Both channels spread their values evenly over [0, 1): each rank appears once.
+/// let below_half = tile.iter().filter(|t| t[0] < 0.5).count();
+/// assert_eq!(below_half, 64 * 64 / 2);
+/// ```
 pub fn blue_noise(size: u32) -> &'static [[f32; 2]] {
     static TILES: [OnceLock<Vec<[f32; 2]>>; 2] = [OnceLock::new(), OnceLock::new()];
     let slot = match size {
@@ -298,6 +342,15 @@ const WHITE_SIZE: u32 = 4;
 
 /// Seed 004's "Spatial Distribution" noise: a 4x4 tile of MT19937 values, texel by texel in row
 /// order, two per texel.
+///
+/// ```
+/// use aokit::noise::{Mt19937, white_noise};
+/// let tile = white_noise();
+/// assert_eq!(tile.len(), 16);
+/// // The twister's reference stream, two values per texel.
+/// let mut rng = Mt19937::new(5489);
+/// assert_eq!(tile[0], [rng.next_f32(), rng.next_f32()]);
+/// ```
 pub fn white_noise() -> &'static [[f32; 2]] {
     static TILE: OnceLock<Vec<[f32; 2]>> = OnceLock::new();
     TILE.get_or_init(|| {
@@ -309,6 +362,14 @@ pub fn white_noise() -> &'static [[f32; 2]] {
 }
 
 /// A square tile of noise, two values per texel, row major, repeated over the image.
+///
+/// ```
+/// use aokit::noise::{Tile, white_noise};
+/// let tile = Tile { size: 4, texels: white_noise() };
+/// // Two texels in the first row of the tile.
+/// assert_eq!(tile.texel([1, 0]), tile.texels[1]);
+/// assert_eq!(tile.texel([3, 0]), tile.texels[3]);
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct Tile {
     /// Texels per side.
@@ -319,12 +380,31 @@ pub struct Tile {
 
 impl Tile {
     /// The texel that lands on `pixel` when the tile repeats from the image's corner.
+    ///
+    /// ```
+    /// use aokit::noise::tile;
+    /// use aokit::{NoiseKind, NoiseSettings};
+    /// let settings = NoiseSettings { kind: NoiseKind::White, ..NoiseSettings::default() };
+    /// let white = tile(&settings).unwrap();
+    /// // The pattern repeats every `size` pixels in both directions.
+    /// assert_eq!(white.texel([1, 2]), white.texel([1 + white.size, 2 + 3 * white.size]));
+    /// ```
     pub fn texel(&self, pixel: [u32; 2]) -> [f32; 2] {
         self.texels[((pixel[1] % self.size) * self.size + pixel[0] % self.size) as usize]
     }
 }
 
 /// The tile a noise kind reads from a texture: `None` for the kinds computed in the shader.
+///
+/// ```
+/// use aokit::noise::tile;
+/// use aokit::{NoiseKind, NoiseSettings};
+/// let blue = NoiseSettings { kind: NoiseKind::Blue, blue_size: 64, ..NoiseSettings::default() };
+/// assert_eq!(tile(&blue).map(|t| t.size), Some(64));
+/// // Interleaved gradient noise needs no texture.
+/// let ign = NoiseSettings { kind: NoiseKind::Ign, ..NoiseSettings::default() };
+/// assert!(tile(&ign).is_none());
+/// ```
 pub fn tile(settings: &NoiseSettings) -> Option<Tile> {
     match settings.kind {
         NoiseKind::Blue => Some(Tile {
@@ -340,6 +420,17 @@ pub fn tile(settings: &NoiseSettings) -> Option<Tile> {
 }
 
 /// The value of the `NOISE_*` constant in `shaders/common/noise.wgsl` that selects `kind`.
+///
+/// ```
+/// use aokit::noise::{kind_code, temporal_code};
+/// use aokit::{NoiseKind, NoiseSettings};
+/// let settings = NoiseSettings { kind: NoiseKind::Blue, ..NoiseSettings::default() };
+/// // The `kind` and `temporal` arguments of noise.wgsl's `pixel_noise`, for a shader of one's
+/// // own to read from its uniform buffer.
+/// let words = [kind_code(settings.kind), temporal_code(settings.temporal)];
+/// let bytes: &[u8] = bytemuck::cast_slice(&words);
+/// assert_eq!(words[0], 1);
+/// ```
 pub fn kind_code(kind: NoiseKind) -> u32 {
     match kind {
         NoiseKind::Ign => 0,
@@ -352,6 +443,13 @@ pub fn kind_code(kind: NoiseKind) -> u32 {
 }
 
 /// The value of the `TEMPORAL_*` constant in `shaders/common/noise.wgsl` that selects `offset`.
+///
+/// ```
+/// use aokit::TemporalOffset;
+/// use aokit::noise::temporal_code;
+/// let codes: Vec<u32> = TemporalOffset::ALL.map(temporal_code).to_vec();
+/// assert_eq!(codes, [0, 1]);
+/// ```
 pub fn temporal_code(offset: TemporalOffset) -> u32 {
     match offset {
         TemporalOffset::GoldenRatio => 0,
@@ -362,6 +460,14 @@ pub fn temporal_code(offset: TemporalOffset) -> u32 {
 /// Interleaved gradient noise (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
 /// Advanced Warfare") at a continuous pixel position. Jimenez's 52.9829189 is written as the
 /// `f32` it rounds to.
+///
+/// ```
+/// use aokit::noise::interleaved_gradient_noise;
+/// // Values for a pixel row, each in [0, 1) and far from its neighbour's.
+/// let row: Vec<f32> = (0..8).map(|x| interleaved_gradient_noise([x as f32, 0.0])).collect();
+/// assert!(row.iter().all(|v| (0.0..1.0).contains(v)));
+/// assert!(row.windows(2).all(|w| (w[0] - w[1]).abs() > 0.05));
+/// ```
 pub fn interleaved_gradient_noise(p: [f32; 2]) -> f32 {
     fract(52.982_918 * fract(p[0] * 0.067_110_56 + p[1] * 0.005_837_15))
 }
@@ -373,6 +479,14 @@ const IGN_FRAME_SHIFT: f32 = 5.588_238;
 /// copy would only add a constant to the first value, locking each pixel's rotation to its
 /// jitter. The pattern shifts 5.588238 pixels each frame (Jimenez's shift), over a 64-frame
 /// cycle.
+///
+/// ```
+/// use aokit::noise::ign_noise;
+/// let pixel = [37, 12];
+/// // Each frame shows the pixel new values, and the cycle closes after 64 frames.
+/// assert_ne!(ign_noise(pixel, 0), ign_noise(pixel, 1));
+/// assert_eq!(ign_noise(pixel, 3), ign_noise(pixel, 67));
+/// ```
 pub fn ign_noise(pixel: [u32; 2], frame: u32) -> [f32; 2] {
     let shift = IGN_FRAME_SHIFT * (frame % 64) as f32;
     let p = [pixel[0] as f32 + shift, pixel[1] as f32 + shift];
@@ -391,6 +505,16 @@ pub const GTAO_OFFSETS: [f32; 4] = [0.0, 0.5, 0.25, 0.75];
 /// multiples of 1/16 for the rotation and `((y - x) & 3) / 4` for the step offset, turned by
 /// [`GTAO_ROTATIONS`] with the frame and offset by [`GTAO_OFFSETS`] every 6 frames, so the 24
 /// frames of a cycle see every combination once.
+///
+/// ```
+/// use aokit::noise::gtao_noise;
+/// use std::collections::HashSet;
+/// // One pixel over GTAO's 24-frame cycle: 6 rotations times 4 step offsets, all different.
+/// let cycle: HashSet<[u32; 2]> = (0..24)
+///     .map(|frame| gtao_noise([5, 9], frame).map(f32::to_bits))
+///     .collect();
+/// assert_eq!(cycle.len(), 24);
+/// ```
 pub fn gtao_noise(pixel: [u32; 2], frame: u32) -> [f32; 2] {
     let [x, y] = pixel;
     let spatial = ((((x.wrapping_add(y)) & 3) << 2) + (x & 3)) as f32 / 16.0;
@@ -404,6 +528,14 @@ pub fn gtao_noise(pixel: [u32; 2], frame: u32) -> [f32; 2] {
 
 /// The index, `0..16`, of the 4x4 Bayer dither matrix (Bayer 1973) at `pixel`: the 2x2 matrix
 /// `[[0, 2], [3, 1]]` of the low coordinate bits, times 4, plus that of the next bits.
+///
+/// ```
+/// use aokit::noise::bayer_index;
+/// let first_row: Vec<u32> = (0..4).map(|x| bayer_index([x, 0])).collect();
+/// assert_eq!(first_row, [0, 8, 2, 10]);
+/// // The matrix repeats every 4 pixels.
+/// assert_eq!(bayer_index([6, 5]), bayer_index([2, 1]));
+/// ```
 pub fn bayer_index(pixel: [u32; 2]) -> u32 {
     let level = |x: u32, y: u32| (((x ^ y) & 1) << 1) | (y & 1);
     4 * level(pixel[0], pixel[1]) + level(pixel[0] >> 1, pixel[1] >> 1)
@@ -412,6 +544,12 @@ pub fn bayer_index(pixel: [u32; 2]) -> u32 {
 /// Seed 004's "Dither": the Bayer index over 16, and its 4-bit reversal over 16 as the second
 /// value. Bit reversal is the radical inverse, so a tile's 16 pairs are the 16-point Hammersley
 /// set: every box of area 1/16 with power-of-two sides holds exactly one pair.
+///
+/// ```
+/// use aokit::noise::bayer_noise;
+/// // The index 8 is 0b1000: its 4-bit reversal is 1.
+/// assert_eq!(bayer_noise([1, 0]), [8.0 / 16.0, 1.0 / 16.0]);
+/// ```
 pub fn bayer_noise(pixel: [u32; 2]) -> [f32; 2] {
     let index = bayer_index(pixel);
     [
@@ -430,6 +568,18 @@ const R2_FIXED: [u32; 2] = [3_242_174_889, 2_447_445_414];
 const GOLDEN_FIXED: u32 = 2_654_435_769;
 
 /// Point `index` of the R2 sequence (Roberts 2018): `fract(0.5 + index * (1/g, 1/g^2))`.
+///
+/// ```
+/// use aokit::noise::r2;
+/// assert_eq!(r2(0), [0.5, 0.5]);
+/// // 16 points cover the square evenly: each quarter of it holds some.
+/// let points: Vec<[f32; 2]> = (0..16).map(r2).collect();
+/// for quarter in 0..4 {
+///     let (x, y) = ((quarter % 2) as f32 * 0.5, (quarter / 2) as f32 * 0.5);
+///     let inside = |p: &&[f32; 2]| p[0] >= x && p[0] < x + 0.5 && p[1] >= y && p[1] < y + 0.5;
+///     assert!(points.iter().filter(inside).count() >= 2);
+/// }
+/// ```
 pub fn r2(index: u32) -> [f32; 2] {
     R2_FIXED.map(|a| unit_from_fixed(index.wrapping_mul(a).wrapping_add(1 << 31)))
 }
@@ -440,6 +590,13 @@ pub const HILBERT_ORDER: u32 = 6;
 /// The distance along the Hilbert curve (Hilbert 1891) filling the `2^order` square to the
 /// cell `(x, y)`: per level, the quadrant's place in the curve's U, then the coordinates turned
 /// into that quadrant's orientation.
+///
+/// ```
+/// use aokit::noise::hilbert_index;
+/// // The order-1 curve is a U: (0, 0), (0, 1), (1, 1), (1, 0).
+/// let u: Vec<u32> = [[0, 0], [0, 1], [1, 1], [1, 0]].map(|p| hilbert_index(p, 1)).to_vec();
+/// assert_eq!(u, [0, 1, 2, 3]);
+/// ```
 pub fn hilbert_index(pixel: [u32; 2], order: u32) -> u32 {
     let n = 1u32 << order;
     let [mut x, mut y] = pixel.map(|c| c & (n - 1));
@@ -464,12 +621,30 @@ pub fn hilbert_index(pixel: [u32; 2], order: u32) -> u32 {
 /// The R2 point at the pixel's place along the Hilbert curve of a [`HILBERT_ORDER`] tile: the
 /// curve keeps consecutive indices next to each other, so neighbouring pixels get R2's
 /// well-spread consecutive points.
+///
+/// ```
+/// use aokit::noise::{HILBERT_ORDER, hilbert_r2_noise};
+/// let side = 1 << HILBERT_ORDER;
+/// // A tile of the pattern: it repeats every `side` pixels.
+/// assert_eq!(hilbert_r2_noise([3, 4]), hilbert_r2_noise([3 + side, 4]));
+/// ```
 pub fn hilbert_r2_noise(pixel: [u32; 2]) -> [f32; 2] {
     r2(hilbert_index(pixel, HILBERT_ORDER))
 }
 
 /// How far tiled noise moves at `frame`: frame times the golden ratio's fraction on both values,
 /// or R2's frame-th step, `fract(frame * (1/g, 1/g^2))`. Frame 0 is not moved.
+///
+/// ```
+/// use aokit::TemporalOffset;
+/// use aokit::noise::temporal_offset;
+/// assert_eq!(temporal_offset(TemporalOffset::R2, 0), [0.0, 0.0]);
+/// // The golden ratio moves both values alike; R2 moves them apart.
+/// let [a, b] = temporal_offset(TemporalOffset::GoldenRatio, 5);
+/// assert_eq!(a, b);
+/// let [a, b] = temporal_offset(TemporalOffset::R2, 5);
+/// assert_ne!(a, b);
+/// ```
 pub fn temporal_offset(offset: TemporalOffset, frame: u32) -> [f32; 2] {
     match offset {
         TemporalOffset::GoldenRatio => [unit_from_fixed(frame.wrapping_mul(GOLDEN_FIXED)); 2],
@@ -480,6 +655,17 @@ pub fn temporal_offset(offset: TemporalOffset, frame: u32) -> [f32; 2] {
 /// The two noise values of `pixel` at `frame`, as `pixel_noise` in `shaders/common/noise.wgsl`
 /// computes them. Interleaved gradient noise and GTAO's pattern move with the frame their own
 /// way; the tiled kinds (`blue`, `bayer`, `white`, `hilbert-r2`) move by [`temporal_offset`].
+///
+/// ```
+/// use aokit::noise::pixel_noise;
+/// use aokit::{NoiseKind, NoiseSettings};
+/// // The rotation the kernels give pixel (10, 20) over 4 frames of Bayer noise.
+/// let settings = NoiseSettings { kind: NoiseKind::Bayer, ..NoiseSettings::default() };
+/// let angles: Vec<f32> = (0..4)
+///     .map(|frame| pixel_noise(&settings, [10, 20], frame)[0] * std::f32::consts::TAU)
+///     .collect();
+/// assert!(angles.windows(2).all(|w| w[0] != w[1]));
+/// ```
 pub fn pixel_noise(settings: &NoiseSettings, pixel: [u32; 2], frame: u32) -> [f32; 2] {
     let tiled = match settings.kind {
         NoiseKind::Ign => return ign_noise(pixel, frame),
@@ -496,6 +682,12 @@ pub fn pixel_noise(settings: &NoiseSettings, pixel: [u32; 2], frame: u32) -> [f3
 
 /// Point `index` of the first two dimensions of the Sobol sequence (Sobol 1967), in index
 /// order (not Gray-code order), to 24 bits: `sobol_2d` in `shaders/common/noise.wgsl`.
+///
+/// ```
+/// use aokit::noise::sobol_2d;
+/// let first: Vec<[f32; 2]> = (0..4).map(sobol_2d).collect();
+/// assert_eq!(first, [[0.0, 0.0], [0.5, 0.5], [0.25, 0.75], [0.75, 0.25]]);
+/// ```
 pub fn sobol_2d(index: u32) -> [f32; 2] {
     let mut i = index;
     let mut column = 0x8000_0000u32;
@@ -514,6 +706,12 @@ pub fn sobol_2d(index: u32) -> [f32; 2] {
 }
 
 /// Radical inverse of `index` in base 3 (Halton 1960): `halton_3` in `shaders/common/noise.wgsl`.
+///
+/// ```
+/// use aokit::noise::halton_3;
+/// // 5 is 12 in base 3; mirrored about the point, 0.21 in base 3 = 2/3 + 1/9.
+/// assert!((halton_3(5) - 7.0 / 9.0).abs() < 1e-7);
+/// ```
 pub fn halton_3(index: u32) -> f32 {
     let mut i = index;
     let mut scale = 1.0 / 3.0;
@@ -530,6 +728,19 @@ pub fn halton_3(index: u32) -> f32 {
 /// of the values less their mean, with frequency `(u, v)` at index `v * size + u`. So scaled,
 /// white noise of variance s^2 has expected power s^2 at every frequency. A plain separable DFT:
 /// meant for tiles of up to a few hundred texels.
+///
+/// ```
+/// use aokit::noise::{Mt19937, power_spectrum};
+/// let size = 16;
+/// let mut rng = Mt19937::new(3);
+/// let white: Vec<f32> = (0..size * size).map(|_| rng.next_f32()).collect();
+/// let power = power_spectrum(&white, size);
+/// // The mean is taken out, so frequency (0, 0) holds nothing.
+/// assert!(power[0] < 1e-9);
+/// // Parseval: the powers add up to the tile's variance times its texel count (1/12 each).
+/// let total: f64 = power.iter().sum();
+/// assert!((total / (size * size) as f64 - 1.0 / 12.0).abs() < 0.02);
+/// ```
 pub fn power_spectrum(values: &[f32], size: usize) -> Vec<f64> {
     assert_eq!(values.len(), size * size, "a {size}x{size} tile");
     let mean = values.iter().map(|&v| f64::from(v)).sum::<f64>() / values.len() as f64;
@@ -566,6 +777,16 @@ pub fn power_spectrum(values: &[f32], size: usize) -> Vec<f64> {
 /// The mean of a [`power_spectrum`] over rings of frequency radius `0, 1, ..., size / 2`
 /// (cycles per tile, the radius rounded, frequencies above `size / 2` taken as negative).
 /// Index `r` is the ring of radius `r`; ring 0 holds the (zero) mean.
+///
+/// ```
+/// use aokit::noise::{blue_noise, power_spectrum, radial_average};
+/// let size = 64;
+/// let first: Vec<f32> = blue_noise(64).iter().map(|t| t[0]).collect();
+/// let rings = radial_average(&power_spectrum(&first, size), size);
+/// assert_eq!(rings.len(), size / 2 + 1);
+/// // Blue noise: little power at low frequencies, where white noise would have 1/12.
+/// assert!(rings[1..=4].iter().all(|&p| p < 0.1 / 12.0));
+/// ```
 pub fn radial_average(power: &[f64], size: usize) -> Vec<f64> {
     let rings = size / 2 + 1;
     let mut sum = vec![0.0; rings];

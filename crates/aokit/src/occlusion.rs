@@ -58,6 +58,16 @@ fn saturate(x: f32) -> f32 {
 /// is clamped to `[0, 1]`, the range it was fitted on. Black albedo gives `visibility` back
 /// (within 1e-5); the fit reaches 1.0001 at `visibility` 1 with white albedo, so the result is
 /// clamped to 1: an unoccluded pixel keeps exactly its lighting.
+///
+/// ```
+/// use aokit::occlusion::multi_bounce_gtao;
+/// use glam::Vec3;
+/// // Ambient light on a red wall in a corner: the red channel bounces, green and blue barely.
+/// let (ao, albedo, ambient) = (0.6, Vec3::new(0.8, 0.1, 0.1), Vec3::splat(0.5));
+/// let visibility = multi_bounce_gtao(ao, albedo);
+/// let diffuse = ambient * albedo * visibility;
+/// assert!(visibility.x > 0.7 && (visibility.y - ao).abs() < 0.02);
+/// ```
 pub fn multi_bounce_gtao(visibility: f32, albedo: Vec3) -> Vec3 {
     let x = saturate(visibility);
     let albedo = albedo.map(saturate);
@@ -77,6 +87,15 @@ pub fn multi_bounce_gtao(visibility: f32, albedo: Vec3) -> Vec3 {
 /// An empirical fit: 1 when `ao` is 1, 0 when `ao` is 0, close to `ao` for rough surfaces, and
 /// darker than `ao` for smooth surfaces seen at grazing angles (small `n_dot_v`), where the
 /// reflection skims the occluders. Inputs are clamped to `[0, 1]`, NaN to 0.
+///
+/// ```
+/// use aokit::occlusion::specular_occlusion_frostbite;
+/// let ao = 0.6;
+/// // Rough surfaces: close to the AO.
+/// assert!((specular_occlusion_frostbite(0.9, ao, 1.0) - ao).abs() < 0.05);
+/// // Smooth ones seen at a grazing angle lose more of their reflection.
+/// assert!(specular_occlusion_frostbite(0.05, ao, 0.0) < ao - 0.15);
+/// ```
 pub fn specular_occlusion_frostbite(n_dot_v: f32, ao: f32, roughness: f32) -> f32 {
     let n_dot_v = saturate(n_dot_v);
     let ao = saturate(ao);
@@ -110,6 +129,18 @@ pub fn specular_occlusion_frostbite(n_dot_v: f32, ao: f32, roughness: f32) -> f3
 /// Degenerate inputs give a finite value in `[0, 1]`: `ao` and `roughness` are clamped (NaN to
 /// 0), and when either vector is zero or not finite the direction is unknown, so the cones are
 /// taken as coaxial (`d = 0`) and only their sizes count.
+///
+/// ```
+/// use aokit::occlusion::specular_occlusion_gtso;
+/// use glam::Vec3;
+/// // The open side of a half-occluded surface leans towards +x (the bent normal).
+/// let (bent, ao, roughness) = (Vec3::new(0.5, 0.0, 0.866), 0.5, 0.3);
+/// let towards = Vec3::new(0.5, 0.0, 0.866);
+/// let away = Vec3::new(-0.7, 0.0, 0.714);
+/// // A reflection into the opening is kept; one into the occluder is hidden.
+/// assert_eq!(specular_occlusion_gtso(bent, towards, ao, roughness), 1.0);
+/// assert!(specular_occlusion_gtso(bent, away, ao, roughness) < 0.05);
+/// ```
 pub fn specular_occlusion_gtso(
     bent_normal: Vec3,
     reflection: Vec3,

@@ -13,6 +13,16 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 use serde::{Deserialize, Serialize};
 
 /// The shape of the view volume.
+///
+/// ```
+/// use aokit::{Projection, ProjectionKind};
+/// let p = Projection::perspective(50f32.to_radians(), 1.5, 0.1, None);
+/// let description = match p.kind {
+///     ProjectionKind::Perspective { fov_y } => format!("{:.0} degree lens", fov_y.to_degrees()),
+///     ProjectionKind::Orthographic { height } => format!("{height} units tall"),
+/// };
+/// assert_eq!(description, "50 degree lens");
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case", tag = "kind")]
 pub enum ProjectionKind {
@@ -52,6 +62,13 @@ pub struct Projection {
 }
 
 /// Why a [`Projection`] cannot be used.
+///
+/// ```
+/// use aokit::{Projection, ProjectionError};
+/// // Degrees where radians were meant.
+/// let p = Projection::perspective(60.0, 16.0 / 9.0, 0.1, None);
+/// assert!(matches!(p.validate(), Err(ProjectionError::FieldOfView(_))));
+/// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ProjectionError {
     /// The near plane is not a positive finite number.
@@ -81,6 +98,16 @@ pub enum ProjectionError {
 
 impl Projection {
     /// A perspective projection, reverse-Z (the precise choice for float depth buffers).
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// // 60 degrees vertically, 16:9, near plane 10 cm, no far plane.
+    /// let p = Projection::perspective(60f32.to_radians(), 16.0 / 9.0, 0.1, None);
+    /// p.validate()?;
+    /// // Reverse-Z: the near plane is at depth 1.
+    /// assert!((p.ndc_depth(0.1) - 1.0).abs() < 1e-6);
+    /// # Ok::<(), aokit::ProjectionError>(())
+    /// ```
     pub fn perspective(fov_y: f32, aspect: f32, near: f32, far: Option<f32>) -> Self {
         Self {
             kind: ProjectionKind::Perspective { fov_y },
@@ -92,6 +119,14 @@ impl Projection {
     }
 
     /// An orthographic projection `height` world units tall, reverse-Z.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// // A top-down view of a 40 m level, camera 100 m up.
+    /// let p = Projection::orthographic(40.0, 1.0, 1.0, 200.0);
+    /// // Linear in depth: halfway to the far plane is halfway in NDC.
+    /// assert!((p.ndc_depth(100.5) - 0.5).abs() < 1e-6);
+    /// ```
     pub fn orthographic(height: f32, aspect: f32, near: f32, far: f32) -> Self {
         Self {
             kind: ProjectionKind::Orthographic { height },
@@ -103,11 +138,25 @@ impl Projection {
     }
 
     /// The same projection with the given depth direction.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// // A renderer with a conventional depth buffer: near 0, far 1.
+    /// let p = Projection::perspective(1.0, 1.0, 0.1, Some(500.0)).with_reverse_z(false);
+    /// assert_eq!(p.far_ndc_depth(), 1.0);
+    /// ```
     pub fn with_reverse_z(self, reverse_z: bool) -> Self {
         Self { reverse_z, ..self }
     }
 
     /// Checks every parameter, naming the first one that is unusable.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// let p = Projection::perspective(1.0, 1.0, 1.0, Some(0.5));
+    /// let message = p.validate().unwrap_err().to_string();
+    /// assert!(message.contains("far plane"), "{message}");
+    /// ```
     pub fn validate(&self) -> Result<(), ProjectionError> {
         if !(self.near.is_finite() && self.near > 0.0) {
             return Err(ProjectionError::Near(self.near));
@@ -142,6 +191,12 @@ impl Projection {
     }
 
     /// `true` for orthographic projections.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// assert!(Projection::orthographic(10.0, 1.0, 0.1, 100.0).is_orthographic());
+    /// assert!(!Projection::perspective(1.0, 1.0, 0.1, None).is_orthographic());
+    /// ```
     pub fn is_orthographic(&self) -> bool {
         matches!(self.kind, ProjectionKind::Orthographic { .. })
     }
@@ -175,6 +230,19 @@ impl Projection {
     }
 
     /// The clip-from-view matrix (wgpu clip space, depth in `[0, 1]`).
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use glam::Vec3;
+    /// let p = Projection::perspective(1.2, 16.0 / 9.0, 0.1, None);
+    /// // The vertex shader's matrix, for exactly the depth the AO pipeline then reads.
+    /// let eye = Vec3::new(0.0, 2.0, 5.0);
+    /// let view_from_world = glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y);
+    /// let clip_from_world = p.clip_from_view() * view_from_world;
+    /// let ndc = clip_from_world.project_point3(Vec3::ZERO);
+    /// assert!(ndc.x.abs() < 1e-6 && ndc.y.abs() < 1e-6);
+    /// assert!((p.linear_depth(ndc.z) - 29f32.sqrt()).abs() < 1e-4);
+    /// ```
     pub fn clip_from_view(&self) -> Mat4 {
         let e = self.half_extent();
         let (a, b) = self.depth_terms();
@@ -196,6 +264,16 @@ impl Projection {
     }
 
     /// Coefficients `c` with `linear = (c.x * ndc + c.y) / (c.z * ndc + c.w)`.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// // Four numbers for a shader's uniforms cover every kind of projection.
+    /// let p = Projection::perspective(1.0, 1.0, 0.5, Some(100.0)).with_reverse_z(false);
+    /// let c = p.linearize_coefficients();
+    /// let linear = |ndc: f32| (c.x * ndc + c.y) / (c.z * ndc + c.w);
+    /// assert!((linear(0.0) - 0.5).abs() < 1e-5);
+    /// assert!((linear(1.0) - 100.0).abs() < 1e-2);
+    /// ```
     pub fn linearize_coefficients(&self) -> Vec4 {
         let (a, b) = self.depth_terms();
         if self.is_orthographic() {
@@ -208,12 +286,27 @@ impl Projection {
     }
 
     /// Linear view depth (distance along -Z) of an NDC depth value.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// let p = Projection::perspective(1.0, 1.0, 0.1, None);
+    /// // A depth buffer value read back, in world units from the camera.
+    /// assert!((p.linear_depth(0.01) - 10.0).abs() < 1e-4);
+    /// ```
     pub fn linear_depth(&self, ndc_depth: f32) -> f32 {
         let c = self.linearize_coefficients();
         (c.x * ndc_depth + c.y) / (c.z * ndc_depth + c.w)
     }
 
     /// NDC depth of a point at the given linear view depth.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// // A synthetic depth buffer: a wall 4 units away, as the rasteriser would write it.
+    /// let p = Projection::perspective(1.0, 1.0, 0.1, None);
+    /// let depth = vec![p.ndc_depth(4.0); 64 * 64];
+    /// assert!((p.linear_depth(depth[0]) - 4.0).abs() < 1e-4);
+    /// ```
     pub fn ndc_depth(&self, linear_depth: f32) -> f32 {
         let (a, b) = self.depth_terms();
         if self.is_orthographic() {
@@ -224,11 +317,28 @@ impl Projection {
     }
 
     /// The depth buffer value of empty pixels: the far plane's NDC depth.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// let p = Projection::perspective(1.0, 1.0, 0.1, None);
+    /// // The clear value of the depth attachment, so that untouched pixels read as sky.
+    /// let clear = wgpu::LoadOp::Clear(p.far_ndc_depth());
+    /// assert_eq!(p.far_ndc_depth(), 0.0);
+    /// ```
     pub fn far_ndc_depth(&self) -> f32 {
         if self.reverse_z { 0.0 } else { 1.0 }
     }
 
     /// View-space position of a point with NDC `xy` and the given linear depth.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use glam::{Vec2, Vec3};
+    /// // 90 degrees vertically: the top edge of the image at depth 2 is 2 units up.
+    /// let p = Projection::perspective(90f32.to_radians(), 1.0, 0.1, None);
+    /// let top = p.view_position_from_linear(Vec2::new(0.0, 1.0), 2.0);
+    /// assert!((top - Vec3::new(0.0, 2.0, -2.0)).length() < 1e-5);
+    /// ```
     pub fn view_position_from_linear(&self, ndc_xy: Vec2, linear_depth: f32) -> Vec3 {
         let e = self.half_extent();
         let scale = if self.is_orthographic() {
@@ -240,17 +350,45 @@ impl Projection {
     }
 
     /// View-space position of a point with NDC `xy` and NDC depth.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use aokit::projection::pixel_to_ndc;
+    /// use glam::Vec2;
+    /// let p = Projection::perspective(1.0, 640.0 / 480.0, 0.1, None);
+    /// // Pixel (320, 100) of a 640x480 depth buffer holding 0.02, back in view space.
+    /// let ndc = pixel_to_ndc(Vec2::new(320.0, 100.0), Vec2::new(640.0, 480.0));
+    /// let point = p.view_position(ndc, 0.02);
+    /// assert!((point.z + 5.0).abs() < 1e-4 && point.y > 0.0);
+    /// ```
     pub fn view_position(&self, ndc_xy: Vec2, ndc_depth: f32) -> Vec3 {
         self.view_position_from_linear(ndc_xy, self.linear_depth(ndc_depth))
     }
 
     /// Multiplier from NDC `xy` to view `xy`; perspective results are then scaled by linear depth.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use glam::Vec2;
+    /// let p = Projection::perspective(1.0, 2.0, 0.1, None);
+    /// // The half extent of the view at depth 1: tan(fov / 2), times the aspect across.
+    /// let scale = p.ndc_to_view_scale();
+    /// assert!((scale - Vec2::new(2.0 * 0.5f32.tan(), 0.5f32.tan())).length() < 1e-6);
+    /// ```
     pub fn ndc_to_view_scale(&self) -> Vec2 {
         self.half_extent()
     }
 
     /// Pixels covered by one world unit at linear depth 1 (perspective) or at any depth
     /// (orthographic), for a viewport `height_px` pixels tall.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// let p = Projection::perspective(90f32.to_radians(), 16.0 / 9.0, 0.1, None);
+    /// // How many pixels an AO radius of 0.5 spans at depth 10 on a 1080p screen.
+    /// let pixels = 0.5 * p.pixels_per_unit(1080.0) / 10.0;
+    /// assert!((pixels - 27.0).abs() < 1e-3);
+    /// ```
     pub fn pixels_per_unit(&self, height_px: f32) -> f32 {
         0.5 * height_px / self.half_extent().y
     }
@@ -258,6 +396,15 @@ impl Projection {
 
 /// NDC `xy` of the centre of pixel `(x, y)` in a `width x height` image (y down in pixels, up in
 /// NDC).
+///
+/// ```
+/// use aokit::projection::pixel_to_ndc;
+/// use glam::Vec2;
+/// let size = Vec2::new(1920.0, 1080.0);
+/// // Pixel centres: the top-left pixel is half a pixel in from the corner (-1, 1).
+/// let top_left = pixel_to_ndc(Vec2::ZERO, size);
+/// assert!((top_left - Vec2::new(-1.0 + 1.0 / 1920.0, 1.0 - 1.0 / 1080.0)).length() < 1e-6);
+/// ```
 pub fn pixel_to_ndc(pixel: Vec2, size: Vec2) -> Vec2 {
     let uv = (pixel + 0.5) / size;
     Vec2::new(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0)

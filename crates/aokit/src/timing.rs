@@ -6,6 +6,20 @@ use crate::gpu::GpuError;
 const MAX_PASSES: u32 = 16;
 
 /// GPU time of one pass.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, pipeline: &mut aokit::AoPipeline)
+/// #     -> Result<(), aokit::GpuError> {
+/// if pipeline.enable_timing(device, queue) {
+///     // ... encode and submit a frame ...
+///     if let Some(times) = pipeline.last_pass_times(device) {
+///         for aokit::PassTime { name, ms } in times? {
+///             println!("{name:>20} {ms:7.3} ms");
+///         }
+///     }
+/// }
+/// # Ok(()) }
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct PassTime {
     /// The pass, as its shader is named (`gtao`, `linear_depth`, ...).
@@ -15,6 +29,11 @@ pub struct PassTime {
 }
 
 /// A query set with two timestamps per pass, resolved once per frame.
+///
+/// [`AoPipeline`](crate::AoPipeline) owns one once
+/// [`enable_timing`](crate::AoPipeline::enable_timing) succeeds, and hands it to its passes
+/// through [`PassContext::timer`](crate::passes::PassContext::timer); read the times with
+/// [`last_pass_times`](crate::AoPipeline::last_pass_times) (see [`PassTime`]).
 pub struct PassTimer {
     queries: wgpu::QuerySet,
     resolved: wgpu::Buffer,

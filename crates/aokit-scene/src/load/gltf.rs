@@ -11,6 +11,16 @@ use crate::mesh::{Mesh, with_generated_normals};
 use crate::scene::{Scene, SceneError};
 
 /// Loads a glTF file. Textures are not read: albedo is each material's base colour factor.
+///
+/// ```no_run
+/// use std::path::Path;
+/// let scene = aokit_scene::load::gltf::load(Path::new("assets/Sponza.glb"))?;
+/// // The file's own cameras, in document order, for `--camera`.
+/// for (i, camera) in scene.cameras.iter().enumerate() {
+///     println!("{i}: {}", camera.name);
+/// }
+/// # Ok::<(), aokit_scene::SceneError>(())
+/// ```
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
     let parse = |reason: String| SceneError::Parse {
         path: path.to_path_buf(),

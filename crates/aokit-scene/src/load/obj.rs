@@ -16,6 +16,23 @@ use crate::scene::{Scene, SceneError};
 const CREASE_DEGREES: f32 = 35.0;
 
 /// Loads an OBJ file and its camera sidecar.
+///
+/// ```
+/// use std::fs;
+/// let dir = tempfile::tempdir()?;
+/// let path = dir.path().join("ramp.obj");
+/// // A ramp without normals or materials: the loader fills both in and says so.
+/// fs::write(&path, "v 0 0 0\nv 2 0 0\nv 2 1 -2\nv 0 1 -2\nf 1 2 3 4\n")?;
+/// fs::write(dir.path().join("ramp-cameras.json"), r#"{"suggested_ao_radius": 0.3,
+///     "cameras": [{"name": "side", "eye": [5, 1, 0], "target": [1, 0.5, -1],
+///                  "fov_y_deg": 50}]}"#)?;
+/// let scene = aokit_scene::load::obj::load(&path)?;
+/// assert_eq!((scene.name.as_str(), scene.mesh.triangle_count()), ("ramp", 2));
+/// assert_eq!(scene.suggested_radius, Some(0.3));
+/// assert_eq!(scene.cameras[0].name, "side");
+/// assert!(scene.notes.iter().any(|note| note.contains("no normals")));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
     let parse = |reason: String| SceneError::Parse {
         path: path.to_path_buf(),
