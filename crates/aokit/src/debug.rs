@@ -15,6 +15,19 @@ pub const DEBUG_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 named_enum! {
     /// What a debug view shows. Pixels without a surface are black, except in the AO views.
+    ///
+    /// ```
+    /// use aokit::debug::DebugView;
+    /// // A viewer's `--debug-view` flag, and a key that steps to the next view.
+    /// let view: DebugView = "bent-normals".parse()?;
+    /// let next = |v: DebugView| {
+    ///     let i = DebugView::ALL.iter().position(|&w| w == v).unwrap();
+    ///     DebugView::ALL[(i + 1) % DebugView::ALL.len()]
+    /// };
+    /// assert_eq!(next(view), DebugView::RawAo);
+    /// assert_eq!(next(DebugView::Rejected).name(), "depth");
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum DebugView ("debug view") {
         /// Linear depth, near white to far black on a log scale ([`DebugStyle::depth_range`]).
         #[default]
@@ -57,6 +70,20 @@ impl DebugView {
 }
 
 /// How the debug views map values to colours.
+///
+/// ```
+/// use aokit::Projection;
+/// use aokit::debug::DebugStyle;
+/// // A top-down orthographic camera with the ground at depth 100 and the highest roof at 60:
+/// // the greys span those depths instead of the default 0.1 to 1000.
+/// let projection = Projection::orthographic(40.0, 1.0, 1.0, 200.0);
+/// let style = DebugStyle {
+///     depth_range: [60.0, 100.0],
+///     orthographic: projection.is_orthographic(),
+///     ..DebugStyle::default()
+/// };
+/// assert!(style.orthographic);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DebugStyle {
     /// Linear depths shown white and black (near, far); both positive, near below far.
@@ -103,6 +130,23 @@ pub struct AoDebug {
 
 impl AoDebug {
     /// Compiles the debug pass.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::AoError> {
+    /// use aokit::debug::{AoDebug, DebugView};
+    /// // Made once next to the pipeline, so that switching views costs no compile.
+    /// struct Viewer {
+    ///     pipeline: aokit::AoPipeline,
+    ///     debug: AoDebug,
+    ///     view: Option<DebugView>,
+    /// }
+    /// let viewer = Viewer {
+    ///     pipeline: aokit::AoPipeline::new(device, queue, &aokit::AoSettings::default())?,
+    ///     debug: AoDebug::new(device, queue),
+    ///     view: None,
+    /// };
+    /// # Ok(()) }
+    /// ```
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Self {
         let unfilterable = wgpu::TextureSampleType::Float { filterable: false };
         let stand_in = |format, bytes: &[u8]| {
@@ -134,6 +178,23 @@ impl AoDebug {
     /// (`Rgba8Unorm`, the input's size), valid until the next call. Fails, naming the
     /// setting, when the outputs lack what the view shows (bent normals, the temporal
     /// filter's mask), or when `style` is out of range.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, pipeline: &mut aokit::AoPipeline,
+    /// #      debug: &mut aokit::debug::AoDebug, inputs: &aokit::AoInputs<'_>)
+    /// #      -> Result<(), Box<dyn std::error::Error>> {
+    /// use aokit::debug::{DebugStyle, DebugView};
+    /// let mut encoder = device.create_command_encoder(&Default::default());
+    /// let outputs = pipeline.encode(device, queue, &mut encoder, inputs)?;
+    /// // Into the same encoder, while the outputs still hold this frame.
+    /// let image = debug.encode(device, queue, &mut encoder, &outputs, DebugView::Normals,
+    ///                          &DebugStyle::default())?;
+    /// queue.submit([encoder.finish()]);
+    /// // RGBA, 4 bytes a pixel, row by row: ready for a PNG encoder.
+    /// let rgba = aokit::gpu::read_texture(device, queue, image)?;
+    /// assert_eq!(rgba.len(), 4 * (image.width() * image.height()) as usize);
+    /// # Ok(()) }
+    /// ```
     pub fn encode(
         &mut self,
         device: &wgpu::Device,

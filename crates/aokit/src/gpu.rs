@@ -163,7 +163,19 @@ impl GpuContext {
         })
     }
 
-    /// Hardware or software. See [`AdapterKind`] for an example.
+    /// Hardware or software.
+    ///
+    /// ```no_run
+    /// use aokit::{AdapterKind, GpuContext};
+    /// let gpu = GpuContext::headless()?;
+    /// // A software rasteriser takes seconds a frame at 1080p: benchmark a smaller image there.
+    /// let size = match gpu.adapter_kind() {
+    ///     AdapterKind::Hardware => [1920, 1080],
+    ///     AdapterKind::Software => [480, 270],
+    /// };
+    /// println!("{}x{} on {}", size[0], size[1], gpu.describe());
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
     pub fn adapter_kind(&self) -> AdapterKind {
         adapter_kind(&self.adapter_info)
     }

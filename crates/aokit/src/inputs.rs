@@ -7,6 +7,29 @@ use crate::projection::Projection;
 use crate::settings::NormalEncoding;
 
 /// Per-frame inputs of [`AoPipeline::encode`](crate::AoPipeline::encode).
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder,
+/// #      pipeline: &mut aokit::AoPipeline, depth: &wgpu::Texture, normals: &wgpu::Texture,
+/// #      motion: &wgpu::Texture, projection: aokit::Projection, view_from_world: glam::Mat4,
+/// #      frame: u32, camera_cut: bool) -> Result<(), aokit::AoError> {
+/// // The second player's half of a split screen: view 1 keeps a temporal history apart from
+/// // the first player's, and the motion vectors reproject the players' moving characters.
+/// let inputs = aokit::AoInputs {
+///     depth,
+///     normals: Some(normals),
+///     projection,
+///     view_from_world,
+///     frame_index: frame,
+///     view_id: 1,
+///     motion_vectors: Some(motion),
+///     reset_history: camera_cut,
+///     mask: None,
+/// };
+/// let outputs = pipeline.encode(device, queue, encoder, &inputs)?;
+/// // ... the second player's lighting pass binds `outputs.ao_view` ...
+/// # Ok(()) }
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct AoInputs<'a> {
     /// The depth buffer, with `TEXTURE_BINDING` usage: any depth format (`Depth32Float`,
@@ -89,6 +112,14 @@ pub enum AoMask<'a> {
 }
 
 /// Formats an [`AoMask::Texture`] may have.
+///
+/// ```
+/// use aokit::inputs::MASK_TEXTURE_FORMATS;
+/// // The smallest target a renderer's mask pass can draw into.
+/// assert!(MASK_TEXTURE_FORMATS.contains(&wgpu::TextureFormat::R8Unorm));
+/// // Single-channel only, even where the first channel would hold the mask.
+/// assert!(!MASK_TEXTURE_FORMATS.contains(&wgpu::TextureFormat::Rg8Unorm));
+/// ```
 pub const MASK_TEXTURE_FORMATS: [wgpu::TextureFormat; 3] = [
     wgpu::TextureFormat::R8Unorm,
     wgpu::TextureFormat::R16Float,
@@ -97,6 +128,13 @@ pub const MASK_TEXTURE_FORMATS: [wgpu::TextureFormat; 3] = [
 
 impl AoMask<'_> {
     /// The mask's texture.
+    ///
+    /// ```no_run
+    /// # fn f(mask: &aokit::AoMask<'_>, depth: &wgpu::Texture) {
+    /// // Whichever kind of mask it is, a window resize must remake it with the depth.
+    /// debug_assert_eq!(mask.texture().size(), depth.size(), "mask left at the old size");
+    /// # }
+    /// ```
     pub fn texture(&self) -> &wgpu::Texture {
         match self {
             AoMask::Texture(texture) | AoMask::Stencil { texture, .. } => texture,
@@ -135,6 +173,24 @@ impl<'a> AoInputs<'a> {
 }
 
 /// Why the inputs cannot be used.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, pipeline: &mut aokit::AoPipeline,
+/// #      inputs: &aokit::AoInputs<'_>) -> Result<(), aokit::AoError> {
+/// use aokit::{AoError, InputError};
+/// let mut encoder = device.create_command_encoder(&Default::default());
+/// match pipeline.encode(device, queue, &mut encoder, inputs) {
+///     Ok(outputs) => { /* ... bind `outputs.ao_view` in the lighting pass ... */ }
+///     // The renderer resized its depth but not yet its other targets: light this frame
+///     // without AO rather than stop.
+///     Err(AoError::Input(InputError::SizeMismatch { what, depth, other })) => {
+///         eprintln!("no AO this frame: depth is {depth:?}, {what} {other:?}");
+///     }
+///     Err(e) => return Err(e),
+/// }
+/// queue.submit([encoder.finish()]);
+/// # Ok(()) }
+/// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum InputError {
     /// The depth texture is neither a depth format nor `R32Float`.
@@ -183,6 +239,22 @@ pub enum InputError {
 impl AoInputs<'_> {
     /// The resolution the inputs describe, after checking formats (the normals' against
     /// `encoding`), usages and sizes.
+    ///
+    /// ```no_run
+    /// # fn f(inputs: &aokit::AoInputs<'_>, settings: &aokit::AoSettings) {
+    /// use aokit::InputError;
+    /// // Checked once when the G-buffer is made, rather than by every frame's `encode`.
+    /// match inputs.validate(settings.normals.encoding) {
+    ///     Ok([width, height]) => println!("AO at {width}x{height}"),
+    ///     Err(InputError::NormalsFormat { format, encoding }) => panic!(
+    ///         "the G-buffer's normals are {format:?}, but normals.encoding = {} needs {:?}",
+    ///         encoding.name(),
+    ///         encoding.texture_format()
+    ///     ),
+    ///     Err(e) => panic!("{e}"),
+    /// }
+    /// # }
+    /// ```
     pub fn validate(&self, encoding: NormalEncoding) -> Result<[u32; 2], InputError> {
         let depth = self.depth;
         if !(depth.format().has_depth_aspect() || depth.format() == wgpu::TextureFormat::R32Float) {

@@ -10,6 +10,8 @@
 //! depth in `[0, 1]`, standard or reverse-Z, finite or infinite far plane; the radius is in world
 //! units. See `docs/` in the repository for the method notes.
 
+#![warn(missing_docs)]
+
 pub mod debug;
 pub mod error;
 pub mod gpu;

@@ -378,7 +378,35 @@ pub struct Tile {
     pub texels: &'static [[f32; 2]],
 }
 
+/// Format of an uploaded [`Tile`]: two 32-bit floats hold the ranks of a 128x128 tile exactly.
+pub const TILE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
+
 impl Tile {
+    /// The tile as the [`TILE_FORMAT`] texture aokit's kernels read (binding 7 of
+    /// `shaders/common/ao.wgsl`), for a kernel of one's own that reads noise the way they do.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) {
+    /// use aokit::{NoiseKind, NoiseSettings};
+    /// let settings =
+    ///     NoiseSettings { kind: NoiseKind::Blue, blue_size: 128, ..NoiseSettings::default() };
+    /// let tile = aokit::noise::tile(&settings).expect("blue noise is a tile");
+    /// let texture = tile.upload(device, queue);
+    /// assert_eq!(texture.width(), 128);
+    /// # }
+    /// ```
+    pub fn upload(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture {
+        crate::gpu::upload_texture_2d(
+            device,
+            queue,
+            "aokit noise tile",
+            [self.size; 2],
+            TILE_FORMAT,
+            bytemuck::cast_slice(self.texels),
+        )
+        .expect("a noise tile holds size * size texels")
+    }
+
     /// The texel that lands on `pixel` when the tile repeats from the image's corner.
     ///
     /// ```

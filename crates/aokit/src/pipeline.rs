@@ -190,6 +190,30 @@ impl Denoiser {
 /// What [`AoPipeline::encode`] produced. The textures stay valid until the next `encode` with a
 /// different size or resolution. Each says its size: the input's, or
 /// [`AoOutputs::working_size`] for what the kernel wrote before the upsample.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, outputs: &aokit::AoOutputs<'_>) {
+/// // `R32Float` is not filterable: the lighting layout declares the AO as
+/// // `Float { filterable: false }` and the shader reads it with `textureLoad`.
+/// let mut entries = vec![wgpu::BindGroupEntry {
+///     binding: 0,
+///     resource: wgpu::BindingResource::TextureView(outputs.ao_view),
+/// }];
+/// // Bent normals exist only when the settings ask for them (with gtao or vbao); `layout`
+/// // has binding 1 exactly then.
+/// if let Some(bent_normals) = outputs.bent_normals_view {
+///     entries.push(wgpu::BindGroupEntry {
+///         binding: 1,
+///         resource: wgpu::BindingResource::TextureView(bent_normals),
+///     });
+/// }
+/// let lighting = device.create_bind_group(&wgpu::BindGroupDescriptor {
+///     label: Some("lighting ao"),
+///     layout,
+///     entries: &entries,
+/// });
+/// # }
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct AoOutputs<'a> {
     /// Ambient occlusion, `R32Float`, 1 = unoccluded, at the input's size: the kernel's AO
@@ -272,7 +296,20 @@ pub struct AoPipeline {
 }
 
 impl AoPipeline {
-    /// Compiles the passes the settings need.
+    /// Compiles the passes the settings need. Fails, naming the field, when the settings are
+    /// out of range.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::AoError> {
+    /// use aokit::{AoPipeline, AoSettings, Method, Preset, Resolution};
+    /// // An integrated GPU: the cheap preset, with the kernel at half resolution.
+    /// let settings = AoSettings {
+    ///     resolution: Resolution::Half,
+    ///     ..AoSettings::preset(Method::Gtao, Preset::Low)
+    /// };
+    /// let pipeline = AoPipeline::new(device, queue, &settings)?;
+    /// # Ok(()) }
+    /// ```
     pub fn new(
         device: &wgpu::Device,
         queue: &wgpu::Queue,
@@ -305,6 +342,20 @@ impl AoPipeline {
 
     /// Times every pass with GPU timestamps from now on. Returns `false`, and changes nothing,
     /// when the device was not created with `Features::TIMESTAMP_QUERY`.
+    ///
+    /// ```no_run
+    /// # fn f(adapter: &wgpu::Adapter) -> Result<(), Box<dyn std::error::Error>> {
+    /// // Timestamps are optional: request them where the adapter has them.
+    /// let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+    ///     required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
+    ///     ..Default::default()
+    /// }))?;
+    /// let mut pipeline = aokit::AoPipeline::new(&device, &queue, &aokit::AoSettings::default())?;
+    /// if !pipeline.enable_timing(&device, &queue) {
+    ///     eprintln!("no GPU timestamps on {}: pass times unavailable", adapter.get_info().name);
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn enable_timing(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) -> bool {
         if self.timer.is_none() {
             self.timer = PassTimer::new(device, queue);
@@ -314,6 +365,20 @@ impl AoPipeline {
 
     /// GPU time of each pass of the last encoded frame, once its commands were submitted;
     /// `None` unless [`AoPipeline::enable_timing`] succeeded. Blocks until the GPU is done.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, pipeline: &mut aokit::AoPipeline,
+    /// #      inputs: &aokit::AoInputs<'_>) -> Result<(), Box<dyn std::error::Error>> {
+    /// let mut encoder = device.create_command_encoder(&Default::default());
+    /// pipeline.encode(device, queue, &mut encoder, inputs)?;
+    /// queue.submit([encoder.finish()]);
+    /// // Only after the submit: the read waits for the GPU to run this frame's passes.
+    /// if let Some(times) = pipeline.last_pass_times(device) {
+    ///     let total_ms: f64 = times?.iter().map(|t| t.ms).sum();
+    ///     println!("AO: {total_ms:.2} ms");
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn last_pass_times(
         &self,
         device: &wgpu::Device,
@@ -322,6 +387,14 @@ impl AoPipeline {
     }
 
     /// The settings in use.
+    ///
+    /// ```no_run
+    /// # fn f(pipeline: &aokit::AoPipeline) {
+    /// // An overlay shows what runs: a rejected `set_settings` left these unchanged.
+    /// let s = pipeline.settings();
+    /// println!("{} at {} resolution, radius {}", s.method.name(), s.resolution.name(), s.radius);
+    /// # }
+    /// ```
     pub fn settings(&self) -> &AoSettings {
         &self.settings
     }
@@ -333,6 +406,20 @@ impl AoPipeline {
     /// and the downsample and upsample compile the first time they are needed) or the normals
     /// need a decode or reconstruction not used before (its kernel compiles once, at the next
     /// `encode`).
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, pipeline: &mut aokit::AoPipeline,
+    /// #      slider: f32) -> Result<(), aokit::AoError> {
+    /// use aokit::AoSettings;
+    /// // A radius slider: only the settings buffer is rewritten, nothing compiles.
+    /// let settings = AoSettings { radius: slider, ..*pipeline.settings() };
+    /// pipeline.set_settings(device, queue, &settings)?;
+    /// // Dragged to 0: refused, and the pipeline keeps the radius it had.
+    /// let zero = AoSettings { radius: 0.0, ..settings };
+    /// assert!(pipeline.set_settings(device, queue, &zero).is_err());
+    /// assert_eq!(pipeline.settings().radius, settings.radius);
+    /// # Ok(()) }
+    /// ```
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
@@ -354,6 +441,31 @@ impl AoPipeline {
     /// Records the passes for one frame into `encoder`. Intermediate textures are (re)created
     /// when the input size or the resolution changes. The outputs borrow the inputs' textures
     /// too: with oct32 input normals, [`AoOutputs::normals`] is the input texture.
+    ///
+    /// ```no_run
+    /// # fn light(encoder: &mut wgpu::CommandEncoder, ao: &wgpu::TextureView) {}
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, pipeline: &mut aokit::AoPipeline,
+    /// #      player: aokit::AoInputs<'_>, mirror_depth: &wgpu::Texture,
+    /// #      mirror_projection: aokit::Projection, mirror_view: glam::Mat4)
+    /// #      -> Result<(), aokit::AoError> {
+    /// use aokit::AoInputs;
+    /// let mut encoder = device.create_command_encoder(&Default::default());
+    /// let outputs = pipeline.encode(device, queue, &mut encoder, &player)?;
+    /// // Lit before the next `encode`, which may write over these textures.
+    /// light(&mut encoder, outputs.ao_view);
+    /// // A mirror seen from its own camera: view 1 has a temporal history of its own, so the
+    /// // player's frames never blend into it.
+    /// let mirror = AoInputs {
+    ///     view_id: 1,
+    ///     view_from_world: mirror_view,
+    ///     frame_index: player.frame_index,
+    ///     ..AoInputs::new(mirror_depth, mirror_projection)
+    /// };
+    /// let outputs = pipeline.encode(device, queue, &mut encoder, &mirror)?;
+    /// light(&mut encoder, outputs.ao_view);
+    /// queue.submit([encoder.finish()]);
+    /// # Ok(()) }
+    /// ```
     pub fn encode<'a>(
         &'a mut self,
         device: &wgpu::Device,

@@ -54,6 +54,18 @@ pub(crate) use named_enum;
 
 named_enum! {
     /// The AO method a pipeline runs. docs/methods.md has each one's formula and failure modes.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method};
+    /// // `--method hbao-plus` on the command line, `method = "hbao-plus"` in a settings file.
+    /// let method: Method = "hbao-plus".parse()?;
+    /// let settings = AoSettings { method, ..AoSettings::default() };
+    /// assert_eq!(settings.method, Method::HbaoPlus);
+    /// // A typo is answered with the names on offer.
+    /// let err = "gtoa".parse::<Method>().unwrap_err();
+    /// assert!(err.contains("ssao-crytek, ssao, hbao, hbao-plus, gtao, vbao"), "{err}");
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum Method ("method") {
         /// Crytek's 2007 SSAO: points in a sphere around the pixel tested against the depth
         /// buffer.
@@ -79,6 +91,18 @@ named_enum! {
 
 impl Method {
     /// Whether the method integrates over slices and so can return bent normals.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method, Preset};
+    /// let mut settings = AoSettings::preset(Method::Hbao, Preset::High);
+    /// // Ask for bent normals only where the method computes them: elsewhere validation fails.
+    /// settings.bent_normals = settings.method.has_bent_normals();
+    /// settings.validate().unwrap();
+    /// assert!(!settings.bent_normals);
+    /// let slice_methods: Vec<Method> =
+    ///     Method::ALL.into_iter().filter(|m| m.has_bent_normals()).collect();
+    /// assert_eq!(slice_methods, [Method::Gtao, Method::Vbao]);
+    /// ```
     pub fn has_bent_normals(self) -> bool {
         matches!(self, Method::Gtao | Method::Vbao)
     }
@@ -86,6 +110,17 @@ impl Method {
 
 named_enum! {
     /// Quality levels, from cheapest to most accurate.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method, Preset};
+    /// // A quality menu, cheapest first, with what each entry costs.
+    /// let costs = Preset::ALL.map(|p| AoSettings::preset(Method::Gtao, p).samples_per_pixel());
+    /// assert_eq!(costs, [4, 8, 18, 54]);
+    /// for (preset, samples) in Preset::ALL.iter().zip(costs) {
+    ///     println!("{:>6}: {samples} depth samples per pixel", preset.name());
+    /// }
+    /// assert_eq!("ultra".parse::<Preset>(), Ok(Preset::Ultra));
+    /// ```
     pub enum Preset ("preset") {
         /// Fewest samples: for low-end GPUs.
         Low = "low",
@@ -103,6 +138,21 @@ named_enum! {
     /// How a normal texture stores view-space unit normals: what the pipeline decodes from
     /// [`AoInputs::normals`](crate::AoInputs::normals), and what the scene renderer writes into
     /// its G-buffer. docs/normals.md has each one's texture format and measured error.
+    ///
+    /// ```
+    /// use aokit::NormalEncoding;
+    /// let encoding: NormalEncoding = "oct24".parse()?;
+    /// assert_eq!(encoding.texture_format(), wgpu::TextureFormat::Rgba8Unorm);
+    /// // The texture's format does not tell the encodings apart: five share `R32Uint`, so the
+    /// // settings must name the one the renderer writes.
+    /// let in_r32: Vec<&str> = NormalEncoding::ALL
+    ///     .into_iter()
+    ///     .filter(|e| e.texture_format() == wgpu::TextureFormat::R32Uint)
+    ///     .map(|e| e.name())
+    ///     .collect();
+    /// assert_eq!(in_r32, ["oct32", "xy", "spherical", "stereographic", "lambert"]);
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum NormalEncoding ("normal encoding") {
         /// Octahedral, two 16-bit unorms packed in an `R32Uint` texel.
         #[default]
@@ -131,6 +181,16 @@ named_enum! {
 
 named_enum! {
     /// Where the AO kernels' normals come from.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, NormalSource};
+    /// // Compare the G-buffer's normals with the best reconstruction from depth without
+    /// // touching the renderer: the normal texture it passes is checked but not read.
+    /// let mut settings = AoSettings::default();
+    /// settings.normals.source = "depth-5tap".parse()?;
+    /// assert_eq!(settings.normals.source, NormalSource::Depth5tap);
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum NormalSource ("normal source") {
         /// The normal texture given in the inputs; without one, the best reconstruction from
         /// depth (`depth-5tap`).
@@ -148,6 +208,19 @@ named_enum! {
 }
 
 /// Normal storage and source.
+///
+/// ```
+/// use aokit::{AoSettings, NormalEncoding, NormalsSettings};
+/// // A renderer whose G-buffer holds half-float xyz normals: the pipeline decodes them.
+/// let settings = AoSettings {
+///     normals: NormalsSettings {
+///         encoding: NormalEncoding::Rgba16f,
+///         ..NormalsSettings::default()
+///     },
+///     ..AoSettings::default()
+/// };
+/// assert_eq!(settings.normals.encoding.texture_format(), wgpu::TextureFormat::Rgba16Float);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct NormalsSettings {
@@ -160,6 +233,21 @@ pub struct NormalsSettings {
 named_enum! {
     /// The per-pixel noise that rotates and jitters every method's samples. docs/noise.md has
     /// each one's spectrum and the error it leaves.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, NoiseKind};
+    /// // One setting per noise for a side-by-side comparison, named as the CLI names them.
+    /// let runs: Vec<(String, AoSettings)> = NoiseKind::ALL
+    ///     .into_iter()
+    ///     .map(|kind| {
+    ///         let mut settings = AoSettings::default();
+    ///         settings.noise.kind = kind;
+    ///         (format!("ao-{}.png", kind.name()), settings)
+    ///     })
+    ///     .collect();
+    /// assert_eq!(runs[0].0, "ao-ign.png");
+    /// assert_eq!("blue".parse::<NoiseKind>(), Ok(NoiseKind::Blue));
+    /// ```
     pub enum NoiseKind ("noise kind") {
         /// Interleaved gradient noise (Jimenez 2014).
         #[default]
@@ -181,6 +269,17 @@ named_enum! {
 
 named_enum! {
     /// How tiled noise moves from frame to frame.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, NoiseKind, TemporalOffset};
+    /// let mut settings = AoSettings::default();
+    /// settings.noise.kind = NoiseKind::Blue;
+    /// // Offset the two noise values by different amounts each frame, rather than by the same
+    /// // golden-ratio step.
+    /// settings.noise.temporal = "r2".parse()?;
+    /// assert_eq!(settings.noise.temporal, TemporalOffset::R2);
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum TemporalOffset ("temporal offset") {
         /// Adds the frame index times the golden ratio's fraction to each value.
         #[default]
@@ -191,6 +290,17 @@ named_enum! {
 }
 
 /// Sampling noise.
+///
+/// ```
+/// use aokit::{AoSettings, NoiseKind, NoiseSettings};
+/// let noise = NoiseSettings { kind: NoiseKind::Blue, blue_size: 128, ..NoiseSettings::default() };
+/// let settings = AoSettings { noise, ..AoSettings::default() };
+/// settings.validate()?;
+/// // Only 64- and 128-pixel tiles are generated.
+/// let odd = AoSettings { noise: NoiseSettings { blue_size: 96, ..noise }, ..settings };
+/// assert_eq!(odd.validate().unwrap_err().field, "noise.blue_size");
+/// # Ok::<(), aokit::SettingsError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct NoiseSettings {
@@ -216,6 +326,16 @@ impl Default for NoiseSettings {
 
 named_enum! {
     /// How the spatial filter weighs a neighbour by its depth difference from the centre.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, DepthWeight};
+    /// let mut settings = AoSettings::default();
+    /// settings.spatial.enabled = true;
+    /// // One compare per tap instead of an `exp`, for a GPU short of arithmetic.
+    /// settings.spatial.depth_weight = "threshold".parse()?;
+    /// assert_eq!(settings.spatial.depth_weight, DepthWeight::Threshold);
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum DepthWeight ("depth weight") {
         /// A Gaussian of the relative depth difference: neighbours fade out smoothly.
         #[default]
@@ -228,6 +348,19 @@ named_enum! {
 
 /// The spatial denoiser: a separable bilateral blur of the AO, run after the method kernel.
 /// docs/denoise.md has the formulas and the measured errors.
+///
+/// ```
+/// use aokit::{AoSettings, Method, Preset, SpatialSettings};
+/// // The low preset's 4 samples are noisy: a wider blur, sigma kept at half the radius.
+/// let spatial =
+///     SpatialSettings { enabled: true, radius: 5, sigma: 2.5, ..SpatialSettings::default() };
+/// let settings = AoSettings { spatial, ..AoSettings::preset(Method::Gtao, Preset::Low) };
+/// settings.validate()?;
+/// // The workgroup's tile holds at most 8 pixels on each side.
+/// let wide = AoSettings { spatial: SpatialSettings { radius: 9, ..spatial }, ..settings };
+/// assert_eq!(wide.validate().unwrap_err().field, "spatial.radius");
+/// # Ok::<(), aokit::SettingsError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SpatialSettings {
@@ -250,6 +383,19 @@ pub struct SpatialSettings {
 }
 
 /// The temporal denoiser: each frame's AO blended with its reprojected history (docs/denoise.md).
+///
+/// ```
+/// use aokit::{AoSettings, TemporalSettings};
+/// // A fixed camera (a menu backdrop): the history always lines up, so a longer one only
+/// // removes more noise, about ten frames' worth.
+/// let temporal = TemporalSettings { enabled: true, blend: 0.9, ..TemporalSettings::default() };
+/// let settings = AoSettings { temporal, ..AoSettings::default() };
+/// settings.validate()?;
+/// // A blend of 1 would keep the first frame forever.
+/// let frozen = AoSettings { temporal: TemporalSettings { blend: 1.0, ..temporal }, ..settings };
+/// assert_eq!(frozen.validate().unwrap_err().field, "temporal.blend");
+/// # Ok::<(), aokit::SettingsError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct TemporalSettings {
@@ -295,6 +441,15 @@ named_enum! {
     /// The resolution the AO kernel (and, with [`FilterResolution::Working`], the filters) runs
     /// at; the result is upsampled to the input's resolution. docs/denoise.md has the measured
     /// error of each.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Resolution};
+    /// // A `--resolution` flag whose help lists the values.
+    /// assert_eq!(Resolution::ALL.map(Resolution::name), ["full", "half", "quarter"]);
+    /// let settings = AoSettings { resolution: "half".parse()?, ..AoSettings::default() };
+    /// assert_eq!(settings.resolution.working_size([1920, 1080]), [960, 540]);
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum Resolution ("resolution") {
         /// Every pixel.
         #[default]
@@ -308,6 +463,13 @@ named_enum! {
 
 impl Resolution {
     /// Input pixels per working texel along each axis: 1, 2 or 4.
+    ///
+    /// ```
+    /// use aokit::Resolution;
+    /// // The kernel's share of its full-resolution cost, for a budget estimate.
+    /// let share = |r: Resolution| 1.0 / (r.scale() * r.scale()) as f32;
+    /// assert_eq!(Resolution::ALL.map(share), [1.0, 0.25, 0.0625]);
+    /// ```
     pub fn scale(self) -> u32 {
         match self {
             Resolution::Full => 1,
@@ -318,6 +480,14 @@ impl Resolution {
 
     /// The working size for an input of `size` pixels: `ceil(size / scale)`, so that the last
     /// texel of an odd size covers the pixels left over.
+    ///
+    /// ```
+    /// use aokit::Resolution;
+    /// assert_eq!(Resolution::Quarter.working_size([1920, 1080]), [480, 270]);
+    /// // One more pixel needs one more texel, which covers it alone.
+    /// assert_eq!(Resolution::Quarter.working_size([1921, 1081]), [481, 271]);
+    /// assert_eq!(Resolution::Full.working_size([1921, 1081]), [1921, 1081]);
+    /// ```
     pub fn working_size(self, size: [u32; 2]) -> [u32; 2] {
         size.map(|side| side.div_ceil(self.scale()))
     }
@@ -326,6 +496,19 @@ impl Resolution {
 named_enum! {
     /// Which input pixel of each block a working-resolution texel takes its depth (and that
     /// pixel's normal and motion) from, when [`AoSettings::resolution`] is below full.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Downsample, Resolution};
+    /// // Half resolution keeping each block's nearest surface, so that thin foreground
+    /// // objects (railings, foliage) still reach the kernel.
+    /// let settings = AoSettings {
+    ///     resolution: Resolution::Half,
+    ///     downsample: "min".parse()?,
+    ///     ..AoSettings::default()
+    /// };
+    /// assert_eq!(settings.downsample, Downsample::Min);
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum Downsample ("downsample") {
         /// A fixed pixel: the top-left one of the block's central 2x2 (seed 001's choice). The
         /// default: one load per texel and no lean towards either side of an edge. `max` and
@@ -350,6 +533,19 @@ named_enum! {
 named_enum! {
     /// How working-resolution AO becomes full-resolution AO: each pixel combines the 2x2
     /// working texels around it by their depth's agreement with its own (docs/denoise.md).
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Resolution, Upsample};
+    /// // Without the filters the equally weighted upsample scores best.
+    /// let settings = AoSettings {
+    ///     resolution: Resolution::Half,
+    ///     upsample: "bilateral".parse()?,
+    ///     ..AoSettings::default()
+    /// };
+    /// assert_eq!(settings.upsample, Upsample::Bilateral);
+    /// assert_eq!(Upsample::default().name(), "bilateral-bilinear");
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum Upsample ("upsample") {
         /// The texels on the pixel's surface (relative depth difference below
         /// `upsample_threshold`), equally weighted (seed 001's final choice): the lowest error
@@ -368,6 +564,19 @@ named_enum! {
 
 named_enum! {
     /// Where the spatial and temporal filters run when [`AoSettings::resolution`] is below full.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, FilterResolution, Resolution};
+    /// // Quarter-resolution AO whose blocks the spatial filter smooths after the upsample.
+    /// let mut settings = AoSettings {
+    ///     resolution: Resolution::Quarter,
+    ///     filter_resolution: "full".parse()?,
+    ///     ..AoSettings::default()
+    /// };
+    /// settings.spatial.enabled = true;
+    /// assert_eq!(settings.filter_resolution, FilterResolution::Full);
+    /// # Ok::<(), String>(())
+    /// ```
     pub enum FilterResolution ("filter resolution") {
         /// At the working resolution, before the upsample. The default: the filters cost a
         /// quarter (half resolution) or a sixteenth (quarter) of what they cost at full
@@ -457,6 +666,14 @@ fn preset_step_power(method: Method) -> f32 {
 }
 
 /// Sample count of the point-sampling methods (`ssao-crytek`, `ssao`).
+///
+/// ```
+/// use aokit::{AoSettings, Method, Preset};
+/// // A still for a comparison: twice the high preset's samples.
+/// let mut settings = AoSettings::preset(Method::Ssao, Preset::High);
+/// settings.ssao.sample_count *= 2;
+/// assert_eq!(settings.samples_per_pixel(), 36);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SsaoSettings {
@@ -472,6 +689,13 @@ impl Default for SsaoSettings {
 
 impl SsaoSettings {
     /// Sample count of a preset.
+    ///
+    /// ```
+    /// use aokit::{Preset, SsaoSettings};
+    /// // Each preset's whole budget goes to points, one depth sample each.
+    /// let counts = Preset::ALL.map(|p| SsaoSettings::preset(p).sample_count);
+    /// assert_eq!(counts, [4, 8, 18, 54]);
+    /// ```
     pub fn preset(preset: Preset) -> Self {
         Self {
             sample_count: preset_samples(preset),
@@ -480,6 +704,16 @@ impl SsaoSettings {
 }
 
 /// Ray-marching counts of `hbao` and `hbao-plus`.
+///
+/// ```
+/// use aokit::{AoSettings, HbaoSettings, Method, Preset};
+/// // Eight directions of four steps: the cost is their product.
+/// let settings = AoSettings {
+///     hbao: HbaoSettings { direction_count: 8, step_count: 4 },
+///     ..AoSettings::preset(Method::HbaoPlus, Preset::High)
+/// };
+/// assert_eq!(settings.samples_per_pixel(), 32);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct HbaoSettings {
@@ -498,6 +732,12 @@ impl Default for HbaoSettings {
 impl HbaoSettings {
     /// Counts of a preset: directions times steps equals the preset's samples, split as
     /// measured best (lowest mean RMSE against the reference, docs/methods.md).
+    ///
+    /// ```
+    /// use aokit::{HbaoSettings, Preset};
+    /// let high = HbaoSettings::preset(Preset::High);
+    /// assert_eq!((high.direction_count, high.step_count), (3, 6));
+    /// ```
     pub fn preset(preset: Preset) -> Self {
         let (direction_count, step_count) = match preset {
             Preset::Low => (2, 2),
@@ -513,6 +753,18 @@ impl HbaoSettings {
 }
 
 /// GTAO's sampling and its thickness heuristic.
+///
+/// ```
+/// use aokit::{AoSettings, GtaoSettings, Method, Preset};
+/// // Poles and railings: let the horizon fall back behind them rather than treat the scene
+/// // as a height field whose occluders reach down forever.
+/// let gtao = GtaoSettings { thickness: 0.5, ..GtaoSettings::preset(Preset::High) };
+/// let settings = AoSettings { gtao, ..AoSettings::preset(Method::Gtao, Preset::High) };
+/// settings.validate()?;
+/// let over = AoSettings { gtao: GtaoSettings { thickness: 1.5, ..gtao }, ..settings };
+/// assert_eq!(over.validate().unwrap_err().field, "gtao.thickness");
+/// # Ok::<(), aokit::SettingsError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct GtaoSettings {
@@ -539,6 +791,16 @@ impl Default for GtaoSettings {
 
 impl GtaoSettings {
     /// Sample counts of a preset.
+    ///
+    /// ```
+    /// use aokit::{GtaoSettings, Preset};
+    /// // Steps go to both sides of every slice: the budget is 2 x slices x steps.
+    /// let samples = Preset::ALL.map(|p| {
+    ///     let g = GtaoSettings::preset(p);
+    ///     2 * g.slice_count * g.steps_per_side
+    /// });
+    /// assert_eq!(samples, [4, 8, 18, 54]);
+    /// ```
     pub fn preset(preset: Preset) -> Self {
         let (slice_count, steps_per_side) = preset_slices(preset);
         Self {
@@ -551,6 +813,17 @@ impl GtaoSettings {
 }
 
 /// The visibility bitmask method's sampling and occluder thickness.
+///
+/// ```
+/// use aokit::{AoSettings, Method, Preset};
+/// // A large outdoor scene: far occluders get thicker, as their depth is less certain.
+/// let mut settings = AoSettings::preset(Method::Vbao, Preset::High);
+/// settings.vbao.thickness_growth = 0.01;
+/// settings.validate()?;
+/// settings.vbao.thickness = 0.0;
+/// assert_eq!(settings.validate().unwrap_err().field, "vbao.thickness");
+/// # Ok::<(), aokit::SettingsError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct VbaoSettings {
@@ -574,6 +847,18 @@ impl Default for VbaoSettings {
 
 impl VbaoSettings {
     /// Sample counts of a preset.
+    ///
+    /// ```
+    /// use aokit::{GtaoSettings, Preset, VbaoSettings};
+    /// // GTAO's slices and steps, so that the two compare at equal cost.
+    /// let vbao = VbaoSettings::preset(Preset::Medium);
+    /// let gtao = GtaoSettings::preset(Preset::Medium);
+    /// assert_eq!(
+    ///     (vbao.slice_count, vbao.steps_per_side),
+    ///     (gtao.slice_count, gtao.steps_per_side)
+    /// );
+    /// assert_eq!(vbao.thickness, 0.6);
+    /// ```
     pub fn preset(preset: Preset) -> Self {
         let (slice_count, steps_per_side) = preset_slices(preset);
         Self {
@@ -678,6 +963,20 @@ impl Default for AoSettings {
 }
 
 /// A setting outside the range it can take.
+///
+/// ```
+/// use aokit::{AoSettings, SettingsError};
+/// let mut settings = AoSettings::default();
+/// settings.gtao.slice_count = 0;
+/// // A settings panel highlights the field by its dotted path, as `--set` takes it.
+/// let SettingsError { field, value, expected } = settings.validate().unwrap_err();
+/// assert_eq!(field, "gtao.slice_count");
+/// assert_eq!((value.as_str(), expected), ("0", "an integer in 1..=64"));
+/// assert_eq!(
+///     settings.validate().unwrap_err().to_string(),
+///     "setting `gtao.slice_count` = 0 is out of range: an integer in 1..=64"
+/// );
+/// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error("setting `{field}` = {value} is out of range: {expected}")]
 pub struct SettingsError {
@@ -696,6 +995,16 @@ pub const MAX_SAMPLE_COUNT: u32 = 64;
 impl AoSettings {
     /// A method at a preset quality, with a radius of 1 world unit. Every method's own sampling
     /// is set to the preset, so switching `method` later keeps the quality level.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method, Preset};
+    /// // A scene modelled in centimetres: a 1 m radius is 100 units.
+    /// let mut settings =
+    ///     AoSettings { radius: 100.0, ..AoSettings::preset(Method::Gtao, Preset::Low) };
+    /// // Every method's sampling is at the preset: another method costs the same.
+    /// settings.method = Method::Hbao;
+    /// assert_eq!(settings.samples_per_pixel(), 4);
+    /// ```
     pub fn preset(method: Method, preset: Preset) -> Self {
         Self {
             method,
@@ -738,6 +1047,16 @@ impl AoSettings {
     }
 
     /// Depth samples the AO kernel takes per pixel: the cost that does not depend on the GPU.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method, Preset};
+    /// // Every method gets the same budget at a preset, so they compare at equal cost.
+    /// let gtao = AoSettings::preset(Method::Gtao, Preset::High);
+    /// let ssao = AoSettings::preset(Method::Ssao, Preset::High);
+    /// assert_eq!(gtao.samples_per_pixel(), ssao.samples_per_pixel());
+    /// // GTAO: 2 sides x 3 slices x 3 steps.
+    /// assert_eq!(gtao.samples_per_pixel(), 18);
+    /// ```
     pub fn samples_per_pixel(&self) -> u32 {
         match self.method {
             Method::SsaoCrytek => self.ssao_crytek.sample_count,
@@ -749,6 +1068,18 @@ impl AoSettings {
     }
 
     /// Checks every field, naming the first one out of range.
+    ///
+    /// ```
+    /// use aokit::AoSettings;
+    /// let mut settings = AoSettings::default();
+    /// settings.max_distance = 50.0;
+    /// // A fade longer than the distance it ends at.
+    /// settings.distance_falloff = 80.0;
+    /// assert_eq!(settings.validate().unwrap_err().field, "distance_falloff");
+    /// settings.distance_falloff = 10.0;
+    /// settings.validate()?;
+    /// # Ok::<(), aokit::SettingsError>(())
+    /// ```
     pub fn validate(&self) -> Result<(), SettingsError> {
         positive("radius", self.radius)?;
         in_unit_range("falloff", self.falloff)?;

@@ -11,6 +11,27 @@ use crate::settings::Method;
 /// Camera conventions, the `ViewUniforms` binding and position reconstruction.
 pub const VIEW: &str = include_str!("../shaders/common/view.wgsl");
 /// Normal encodings (`pack_oct32`, `unpack_oct32`, ...).
+///
+/// ```
+/// use aokit::shader::{self, ShaderSource};
+/// // A G-buffer pass that writes normals exactly as the pipeline decodes them: oct32, into an
+/// // `R32Uint` target.
+/// const GBUFFER: ShaderSource = ShaderSource {
+///     name: "gbuffer",
+///     parts: &[shader::ENCODING, "
+/// struct Surface {
+///     @builtin(position) position: vec4<f32>,
+///     @location(0) view_normal: vec3<f32>,
+/// }
+///
+/// @fragment
+/// fn fs_main(surface: Surface) -> @location(0) u32 {
+///     return pack_oct32(normalize(surface.view_normal));
+/// }"],
+/// };
+/// GBUFFER.validate()?;
+/// # Ok::<(), String>(())
+/// ```
 pub const ENCODING: &str = include_str!("../shaders/common/encoding.wgsl");
 /// Per-pixel noise.
 pub const NOISE: &str = include_str!("../shaders/common/noise.wgsl");
@@ -23,6 +44,32 @@ pub const SLICE: &str = include_str!("../shaders/common/slice.wgsl");
 pub const OCCLUSION: &str = include_str!("../shaders/common/occlusion.wgsl");
 
 /// One WGSL program: the snippets it needs followed by its own file.
+///
+/// ```
+/// use aokit::shader::{self, ShaderSource};
+/// // A companion crate's overlay of the normals the kernel read, darkened by the AO: aokit's
+/// // view uniforms (binding 0) and oct32 decoding are pasted in, not copied.
+/// const NORMALS_OVERLAY: ShaderSource = ShaderSource {
+///     name: "normals_overlay",
+///     parts: &[shader::VIEW, shader::ENCODING, "
+/// @group(0) @binding(1) var normals: texture_2d<u32>;
+/// @group(0) @binding(2) var ao: texture_2d<f32>;
+/// @group(0) @binding(3) var overlay: texture_storage_2d<rgba8unorm, write>;
+///
+/// @compute @workgroup_size(8, 8)
+/// fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+///     if any(vec2<f32>(id.xy) >= view.size) {
+///         return;
+///     }
+///     let n = unpack_oct32(textureLoad(normals, id.xy, 0).r);
+///     let a = textureLoad(ao, id.xy, 0).r;
+///     textureStore(overlay, id.xy, vec4<f32>((n * 0.5 + 0.5) * a, 1.0));
+/// }"],
+/// };
+/// // naga finds WGSL errors in a unit test, before any device exists.
+/// NORMALS_OVERLAY.validate()?;
+/// # Ok::<(), String>(())
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct ShaderSource {
     /// Name of the pass, used as the module label.
@@ -304,6 +351,15 @@ pub const GTAO: ShaderSource = method_kernel!("gtao", SLICE);
 pub const VBAO: ShaderSource = method_kernel!("vbao", SLICE);
 
 /// The kernel of `method`.
+///
+/// ```
+/// use aokit::{AoSettings, Method, shader};
+/// // The WGSL behind the settings, for a bug report or a shader debugger.
+/// let settings = AoSettings::preset(Method::HbaoPlus, aokit::Preset::High);
+/// let program = shader::method(settings.method);
+/// assert_eq!(program.name, "hbao_plus");
+/// assert!(program.source().contains(shader::SLICE));
+/// ```
 pub fn method(method: Method) -> ShaderSource {
     match method {
         Method::SsaoCrytek => SSAO_CRYTEK,
@@ -352,11 +408,35 @@ pub const ALL: &[ShaderSource] = &[
 
 impl ShaderSource {
     /// The assembled WGSL text.
+    ///
+    /// ```
+    /// // A driver reported an error at line 120 of `gtao`: lines count from the first snippet.
+    /// let wgsl = aokit::shader::GTAO.source();
+    /// let line = wgsl.lines().nth(120 - 1).expect("gtao is longer than 120 lines");
+    /// eprintln!("gtao:120: {line}");
+    /// ```
     pub fn source(&self) -> String {
         self.parts.join("\n")
     }
 
     /// Compiles the program on `device`.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, layout: &wgpu::PipelineLayout,
+    /// #      program: &aokit::shader::ShaderSource) {
+    /// // A pipeline of one's own shape (here an entry point not called `main`), where
+    /// // `ComputeKernel` does not fit.
+    /// let module = program.create_module(device);
+    /// let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+    ///     label: Some(program.name),
+    ///     layout: Some(layout),
+    ///     module: &module,
+    ///     entry_point: Some("reduce_rows"),
+    ///     compilation_options: Default::default(),
+    ///     cache: None,
+    /// });
+    /// # }
+    /// ```
     pub fn create_module(&self, device: &wgpu::Device) -> wgpu::ShaderModule {
         device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(self.name),
@@ -365,6 +445,17 @@ impl ShaderSource {
     }
 
     /// The `@workgroup_size` of the program's compute entry point `main`, from parsing it.
+    ///
+    /// ```
+    /// use aokit::shader;
+    /// // Workgroups to dispatch for one thread per pixel of a 1920x1080 image, the last row
+    /// // and column partly outside.
+    /// let [x, y, _] = shader::GTAO.workgroup_size()?;
+    /// assert_eq!([1920u32.div_ceil(x), 1080u32.div_ceil(y)], [240, 135]);
+    /// // The spatial filter's horizontal pass runs along rows, 64 pixels a workgroup.
+    /// assert_eq!(shader::SPATIAL_FILTER_HORIZONTAL.workgroup_size()?, [64, 1, 1]);
+    /// # Ok::<(), String>(())
+    /// ```
     pub fn workgroup_size(&self) -> Result<[u32; 3], String> {
         self.parse(&self.source())?
             .entry_points
@@ -376,6 +467,22 @@ impl ShaderSource {
 
     /// Parses and validates the program with naga, as wgpu does, without a device. Returns the
     /// module so tests can inspect it (e.g. struct layouts).
+    ///
+    /// ```
+    /// use aokit::shader::{self, ShaderSource};
+    /// // Every program the library compiles validates without a device...
+    /// for program in shader::ALL {
+    ///     program.validate()?;
+    /// }
+    /// // ...while one's own error names the program and quotes the offending line.
+    /// const WRONG_ARGUMENT: ShaderSource = ShaderSource {
+    ///     name: "wrong_argument",
+    ///     parts: &[shader::ENCODING, "fn f() -> u32 { return pack_oct32(vec2<f32>(0.0)); }"],
+    /// };
+    /// let err = WRONG_ARGUMENT.validate().unwrap_err();
+    /// assert!(err.starts_with("wrong_argument: ") && err.contains("pack_oct32"), "{err}");
+    /// # Ok::<(), String>(())
+    /// ```
     pub fn validate(&self) -> Result<naga::Module, String> {
         let source = self.source();
         let module = self.parse(&source)?;
@@ -411,6 +518,18 @@ fn struct_layout(module: &naga::Module, name: &str) -> Option<(Vec<(String, usiz
 
 /// The value of the WGSL constant `name` of type `u32`, for tests that prove codes shared
 /// between Rust and WGSL agree.
+///
+/// ```
+/// use aokit::{NormalEncoding, shader};
+/// // The `ENCODING_*` constants of the WGSL snippet match the Rust codes.
+/// let module = shader::DECODE_NORMALS_UINT.validate()?;
+/// for encoding in NormalEncoding::ALL {
+///     let name = format!("ENCODING_{}", encoding.name().to_uppercase());
+///     assert_eq!(shader::u32_constant(&module, &name), Some(encoding.shader_code()), "{name}");
+/// }
+/// assert_eq!(shader::u32_constant(&module, "NO_SUCH_CONSTANT"), None);
+/// # Ok::<(), String>(())
+/// ```
 pub fn u32_constant(module: &naga::Module, name: &str) -> Option<u32> {
     let (_, constant) = module
         .constants

@@ -28,13 +28,14 @@ pub struct PassTime {
     pub ms: f64,
 }
 
-/// A query set with two timestamps per pass, resolved once per frame.
+/// A query set with two timestamps per pass, resolved once per frame. [`AoPipeline`]
+/// owns one once [`enable_timing`] succeeds and hands it to its passes; read the times with
+/// [`last_pass_times`] (see [`PassTime`]).
 ///
-/// [`AoPipeline`](crate::AoPipeline) owns one once
-/// [`enable_timing`](crate::AoPipeline::enable_timing) succeeds, and hands it to its passes
-/// through [`PassContext::timer`](crate::passes::PassContext::timer); read the times with
-/// [`last_pass_times`](crate::AoPipeline::last_pass_times) (see [`PassTime`]).
-pub struct PassTimer {
+/// [`AoPipeline`]: crate::AoPipeline
+/// [`enable_timing`]: crate::AoPipeline::enable_timing
+/// [`last_pass_times`]: crate::AoPipeline::last_pass_times
+pub(crate) struct PassTimer {
     queries: wgpu::QuerySet,
     resolved: wgpu::Buffer,
     readback: wgpu::Buffer,

@@ -3,7 +3,6 @@
 //! the Sobol and Halton sequences of the SSAO kernels.
 
 use aokit::noise::{self, Tile};
-use aokit::passes::method::upload_noise_tile;
 use aokit::passes::{ComputeKernel, bind};
 use aokit::shader::{NOISE, ShaderSource};
 use aokit::{GpuContext, NoiseKind, NoiseSettings, TemporalOffset};
@@ -89,7 +88,7 @@ impl Evaluator {
             size: 1,
             texels: &[[0.0, 0.0]],
         });
-        let tile = upload_noise_tile(device, queue, &tile).create_view(&Default::default());
+        let tile = tile.upload(device, queue).create_view(&Default::default());
         let results = aokit::gpu::create_texture_2d(
             device,
             "noise results",

@@ -9,17 +9,6 @@ use crate::settings::NormalEncoding;
 use crate::shader;
 
 /// Decodes a normal texture to oct32.
-///
-/// ```no_run
-/// # fn f(ctx: &mut aokit::passes::PassContext<'_>, gbuffer_normals: &wgpu::TextureView,
-/// #      oct32: &wgpu::TextureView) {
-/// use aokit::NormalEncoding;
-/// use aokit::passes::decode_normals::DecodeNormalsPass;
-/// // Kernels compile per encoding on first use, so one pass serves any G-buffer.
-/// let mut decode = DecodeNormalsPass::default();
-/// decode.encode(ctx, NormalEncoding::Oct16, gbuffer_normals, oct32);
-/// # }
-/// ```
 #[derive(Default)]
 pub struct DecodeNormalsPass {
     /// One kernel per encoding, compiled the first time it is used.
@@ -29,19 +18,6 @@ pub struct DecodeNormalsPass {
 impl DecodeNormalsPass {
     /// Records the decode of `input`, a texture of `encoding.texture_format()`, into `output`,
     /// an oct32 storage texture ([`NORMALS_FORMAT`]) of `ctx.size`.
-    ///
-    /// ```no_run
-    /// # fn f(ctx: &mut aokit::passes::PassContext<'_>, input: &wgpu::Texture,
-    /// #      decode: &mut aokit::passes::decode_normals::DecodeNormalsPass) {
-    /// use aokit::NormalEncoding;
-    /// use aokit::passes::normals_from_depth::NORMALS_FORMAT;
-    /// let oct32 = aokit::gpu::create_texture_2d(ctx.device, "oct32 normals", ctx.size,
-    ///     NORMALS_FORMAT,
-    ///     wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING);
-    /// decode.encode(ctx, NormalEncoding::Rgb10a2, &input.create_view(&Default::default()),
-    ///               &oct32.create_view(&Default::default()));
-    /// # }
-    /// ```
     pub fn encode(
         &mut self,
         ctx: &mut PassContext<'_>,

@@ -7,7 +7,7 @@
 use std::collections::HashMap;
 
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d, create_uniform_buffer, upload_texture_2d};
+use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::noise;
 use crate::settings::{AoSettings, Method, NoiseKind};
 use crate::shader;
@@ -18,51 +18,7 @@ pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 /// Format of the bent normals: view-space xyz, AO in w. Half floats hold a unit vector to
 /// about 0.05 degrees, finer than any AO estimate.
 pub const BENT_NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
-/// Format of the noise tiles: two 32-bit floats hold the ranks of a 128x128 tile exactly.
-pub const NOISE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
-
-/// Uploads a noise tile as the `NOISE_FORMAT` texture the kernels read at binding 7.
-///
-/// ```no_run
-/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) {
-/// use aokit::passes::method::upload_noise_tile;
-/// use aokit::{NoiseKind, NoiseSettings};
-/// // The blue-noise tile for a kernel of one's own that reads noise the way aokit's do.
-/// let settings =
-///     NoiseSettings { kind: NoiseKind::Blue, blue_size: 128, ..NoiseSettings::default() };
-/// let tile = aokit::noise::tile(&settings).expect("blue noise is a tile");
-/// let texture = upload_noise_tile(device, queue, &tile);
-/// assert_eq!(texture.width(), 128);
-/// # }
-/// ```
-pub fn upload_noise_tile(
-    device: &wgpu::Device,
-    queue: &wgpu::Queue,
-    tile: &noise::Tile,
-) -> wgpu::Texture {
-    upload_texture_2d(
-        device,
-        queue,
-        "aokit noise tile",
-        [tile.size; 2],
-        NOISE_FORMAT,
-        bytemuck::cast_slice(tile.texels),
-    )
-    .expect("a noise tile holds size * size texels")
-}
-
 /// Runs the kernel of the current method.
-///
-/// ```no_run
-/// # fn f(ctx: &mut aokit::passes::PassContext<'_>, queue: &wgpu::Queue,
-/// #      linear_depth: &wgpu::TextureView, normals: &wgpu::TextureView, ao: &wgpu::TextureView) {
-/// use aokit::passes::method::MethodPass;
-/// use aokit::{AoSettings, Method, Preset};
-/// let settings = AoSettings::preset(Method::Gtao, Preset::High);
-/// let pass = MethodPass::new(ctx.device, queue, &settings);
-/// pass.encode(ctx, settings.method, linear_depth, normals, ao, None);
-/// # }
-/// ```
 pub struct MethodPass {
     kernels: HashMap<Method, ComputeKernel>,
     uniforms: wgpu::Buffer,
@@ -92,17 +48,6 @@ fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
 
 impl MethodPass {
     /// Creates the shared resources and compiles the kernel of `settings.method`.
-    ///
-    /// ```no_run
-    /// use aokit::passes::method::MethodPass;
-    /// use aokit::{AoSettings, Method, Preset};
-    /// let gpu = aokit::GpuContext::headless()?;
-    /// let settings = AoSettings::preset(Method::Vbao, Preset::Medium);
-    /// // Settings are checked by whoever hands them in: the pass trusts them.
-    /// settings.validate()?;
-    /// let pass = MethodPass::new(&gpu.device, &gpu.queue, &settings);
-    /// # Ok::<(), Box<dyn std::error::Error>>(())
-    /// ```
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &AoSettings) -> Self {
         // Depths are gathered and loaded, never filtered: clamping repeats edge depths instead
         // of wrapping to the other side of the image.
@@ -126,7 +71,7 @@ impl MethodPass {
             noise_tile: None,
             noise_placeholder: placeholder(
                 "aokit noise placeholder",
-                NOISE_FORMAT,
+                noise::TILE_FORMAT,
                 wgpu::TextureUsages::TEXTURE_BINDING,
             ),
         };
@@ -136,15 +81,6 @@ impl MethodPass {
 
     /// Uploads validated settings, compiling their method's kernel and making their noise tile
     /// if either is new; they apply to every later `encode`.
-    ///
-    /// ```no_run
-    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue,
-    /// #      pass: &mut aokit::passes::method::MethodPass) {
-    /// use aokit::{AoSettings, Method, Preset};
-    /// // Switching method at runtime: HBAO compiles now, once; switching back costs nothing.
-    /// pass.set_settings(device, queue, &AoSettings::preset(Method::Hbao, Preset::Low));
-    /// # }
-    /// ```
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
@@ -156,9 +92,9 @@ impl MethodPass {
         });
         self.noise_tile = noise::tile(&settings.noise).map(|tile| {
             let key = (settings.noise.kind, tile.size);
-            self.noise_tiles.entry(key).or_insert_with(|| {
-                upload_noise_tile(device, queue, &tile).create_view(&Default::default())
-            });
+            self.noise_tiles
+                .entry(key)
+                .or_insert_with(|| tile.upload(device, queue).create_view(&Default::default()));
             key
         });
         queue.write_buffer(
@@ -176,20 +112,6 @@ impl MethodPass {
     /// # Panics
     /// When no settings with `method` were given to [`MethodPass::new`] or
     /// [`MethodPass::set_settings`].
-    ///
-    /// ```no_run
-    /// # fn f(ctx: &mut aokit::passes::PassContext<'_>, pass: &aokit::passes::method::MethodPass,
-    /// #      linear_depth: &wgpu::TextureView, normals: &wgpu::TextureView, ao: &wgpu::TextureView) {
-    /// use aokit::Method;
-    /// use aokit::passes::method::BENT_NORMALS_FORMAT;
-    /// let bent = aokit::gpu::create_texture_2d(ctx.device, "bent normals", ctx.size,
-    ///     BENT_NORMALS_FORMAT,
-    ///     wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING);
-    /// let bent_view = bent.create_view(&Default::default());
-    /// // The settings given to the pass had `bent_normals` on.
-    /// pass.encode(ctx, Method::Gtao, linear_depth, normals, ao, Some(&bent_view));
-    /// # }
-    /// ```
     pub fn encode(
         &self,
         ctx: &mut PassContext<'_>,

@@ -1,19 +1,22 @@
 //! The compute passes, each a plain struct with `new` and `encode`, and the helpers they share.
+//!
+//! The pass structs are the pipeline's own; [`ComputeKernel`] and [`bind`] are public so that
+//! companion crates write their passes the same way.
 
-pub mod decode_normals;
-pub mod linear_depth;
-pub mod mask;
-pub mod method;
-pub mod normals_from_depth;
-pub mod resample;
-pub mod spatial_filter;
-pub mod temporal_filter;
+pub(crate) mod decode_normals;
+pub(crate) mod linear_depth;
+pub(crate) mod mask;
+pub(crate) mod method;
+pub(crate) mod normals_from_depth;
+pub(crate) mod resample;
+pub(crate) mod spatial_filter;
+pub(crate) mod temporal_filter;
 
 use crate::shader::ShaderSource;
 use crate::timing::PassTimer;
 
 /// What a pass needs to record itself into a frame.
-pub struct PassContext<'a> {
+pub(crate) struct PassContext<'a> {
     /// The device, for bind groups.
     pub device: &'a wgpu::Device,
     /// The encoder the frame is recorded into.
@@ -41,6 +44,50 @@ impl PassContext<'_> {
 
 /// A compute pipeline with its one bind group layout, for one-thread-per-pixel passes whose
 /// entry point is `main`. Public so that companion crates write their passes the same way.
+///
+/// ```no_run
+/// use aokit::passes::{ComputeKernel, bind};
+/// use aokit::shader::ShaderSource;
+///
+/// // A companion crate's pass: the AO as a black overlay for a compositor, transparent where
+/// // nothing occludes.
+/// const AO_OVERLAY: ShaderSource = ShaderSource {
+///     name: "ao_overlay",
+///     parts: &["
+/// @group(0) @binding(0) var ao: texture_2d<f32>;
+/// @group(0) @binding(1) var overlay: texture_storage_2d<rgba8unorm, write>;
+///
+/// @compute @workgroup_size(8, 8)
+/// fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+///     // The last row and column of workgroups reach past the image.
+///     if any(id.xy >= textureDimensions(overlay)) {
+///         return;
+///     }
+///     let a = textureLoad(ao, id.xy, 0).r;
+///     textureStore(overlay, id.xy, vec4<f32>(0.0, 0.0, 0.0, 1.0 - a));
+/// }"],
+/// };
+///
+/// # fn f(device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder,
+/// #      outputs: &aokit::AoOutputs<'_>, overlay: &wgpu::TextureView) {
+/// // Compiled once, at load time; the layout lists the bindings in the shader's order.
+/// let kernel = ComputeKernel::new(device, &AO_OVERLAY, &[
+///     bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+///     bind::storage_texture(1, wgpu::TextureFormat::Rgba8Unorm),
+/// ]);
+/// // Each frame, after `AoPipeline::encode`: one thread per pixel of the AO.
+/// kernel.dispatch(
+///     device,
+///     encoder,
+///     &[
+///         wgpu::BindingResource::TextureView(outputs.ao_view),
+///         wgpu::BindingResource::TextureView(overlay),
+///     ],
+///     [outputs.ao.width(), outputs.ao.height()],
+///     None,
+/// );
+/// # }
+/// ```
 pub struct ComputeKernel {
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
@@ -65,6 +112,43 @@ impl ComputeKernel {
     }
 
     /// As [`ComputeKernel::new`], with values for the program's `override` constants, by name.
+    ///
+    /// ```no_run
+    /// use aokit::passes::{ComputeKernel, bind};
+    /// use aokit::shader::ShaderSource;
+    ///
+    /// // A mask of the pixels darker than a threshold the renderer fixes at load time: an
+    /// // override constant, which the driver folds into the code.
+    /// const DARK_MASK: ShaderSource = ShaderSource {
+    ///     name: "dark_mask",
+    ///     parts: &["
+    /// override THRESHOLD: f32 = 0.5;
+    ///
+    /// @group(0) @binding(0) var ao: texture_2d<f32>;
+    /// @group(0) @binding(1) var mask: texture_storage_2d<r32float, write>;
+    ///
+    /// @compute @workgroup_size(8, 8)
+    /// fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    ///     if any(id.xy >= textureDimensions(mask)) {
+    ///         return;
+    ///     }
+    ///     let dark = select(0.0, 1.0, textureLoad(ao, id.xy, 0).r < THRESHOLD);
+    ///     textureStore(mask, id.xy, vec4<f32>(dark, 0.0, 0.0, 0.0));
+    /// }"],
+    /// };
+    ///
+    /// # fn f(device: &wgpu::Device) {
+    /// let kernel = ComputeKernel::with_constants(
+    ///     device,
+    ///     &DARK_MASK,
+    ///     &[
+    ///         bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+    ///         bind::storage_texture(1, wgpu::TextureFormat::R32Float),
+    ///     ],
+    ///     &[("THRESHOLD", 0.3)],
+    /// );
+    /// # }
+    /// ```
     pub fn with_constants(
         device: &wgpu::Device,
         source: &ShaderSource,
@@ -102,6 +186,15 @@ impl ComputeKernel {
     }
 
     /// The shader's name, used for labels and timings.
+    ///
+    /// ```no_run
+    /// # fn f(kernels: &[aokit::passes::ComputeKernel], gpu_ms: &[f64]) {
+    /// // A companion crate's pass times, labelled by shader name as aokit's `PassTime`s are.
+    /// for (kernel, ms) in kernels.iter().zip(gpu_ms) {
+    ///     println!("{:>20} {ms:7.3} ms", kernel.name());
+    /// }
+    /// # }
+    /// ```
     pub fn name(&self) -> &'static str {
         self.label
     }
@@ -109,6 +202,29 @@ impl ComputeKernel {
     /// Binds `resources` in order (binding 0, 1, ...) and dispatches one thread per pixel of
     /// `size` (workgroups of the shader's size, the last row and column partly outside), with
     /// timestamps around the pass when `timestamps` is given.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder,
+    /// #      kernel: &aokit::passes::ComputeKernel, input: &wgpu::TextureView,
+    /// #      output: &wgpu::TextureView, queries: &wgpu::QuerySet) {
+    /// // Timed by the renderer's own query set (the device needs `TIMESTAMP_QUERY`):
+    /// // timestamps 0 and 1 bracket the pass.
+    /// kernel.dispatch(
+    ///     device,
+    ///     encoder,
+    ///     &[
+    ///         wgpu::BindingResource::TextureView(input),
+    ///         wgpu::BindingResource::TextureView(output),
+    ///     ],
+    ///     [1920, 1080],
+    ///     Some(wgpu::ComputePassTimestampWrites {
+    ///         query_set: queries,
+    ///         beginning_of_pass_write_index: Some(0),
+    ///         end_of_pass_write_index: Some(1),
+    ///     }),
+    /// );
+    /// # }
+    /// ```
     pub fn dispatch(
         &self,
         device: &wgpu::Device,
@@ -142,8 +258,24 @@ impl ComputeKernel {
 }
 
 /// Bind group layout entries by kind, visible to compute.
+///
+/// ```
+/// use aokit::passes::bind;
+/// // A pass that reads its settings, the AO and multisampled depth, samples a lookup
+/// // texture, and writes an image. Listed in binding order: `ComputeKernel::dispatch` binds
+/// // its resources by position.
+/// let entries = [
+///     bind::uniform(0),
+///     bind::texture(1, wgpu::TextureSampleType::Float { filterable: false }),
+///     bind::texture_with_samples(2, wgpu::TextureSampleType::Depth, true),
+///     bind::texture(3, wgpu::TextureSampleType::Float { filterable: true }),
+///     bind::sampler(4, wgpu::SamplerBindingType::Filtering),
+///     bind::storage_texture(5, wgpu::TextureFormat::Rgba8Unorm),
+/// ];
+/// assert!(entries.iter().all(|e| e.visibility == wgpu::ShaderStages::COMPUTE));
+/// ```
 pub mod bind {
-    /// A uniform buffer.
+    /// A uniform buffer, of any size: each dispatch checks it against the shader's struct.
     pub fn uniform(binding: u32) -> wgpu::BindGroupLayoutEntry {
         entry(
             binding,
@@ -155,7 +287,7 @@ pub mod bind {
         )
     }
 
-    /// A single-sampled 2D texture.
+    /// A single-sampled 2D texture (`texture_2d<T>` or `texture_depth_2d`, by `sample_type`).
     pub fn texture(
         binding: u32,
         sample_type: wgpu::TextureSampleType,
@@ -163,7 +295,7 @@ pub mod bind {
         texture_with_samples(binding, sample_type, false)
     }
 
-    /// A 2D texture, multisampled or not.
+    /// A 2D texture, multisampled (`texture_multisampled_2d`, read by sample index) or not.
     pub fn texture_with_samples(
         binding: u32,
         sample_type: wgpu::TextureSampleType,
@@ -179,7 +311,8 @@ pub mod bind {
         )
     }
 
-    /// A write-only 2D storage texture.
+    /// A write-only 2D storage texture of `format`, as the shader's
+    /// `texture_storage_2d<format, write>` declares it.
     pub fn storage_texture(
         binding: u32,
         format: wgpu::TextureFormat,
@@ -194,7 +327,7 @@ pub mod bind {
         )
     }
 
-    /// A sampler.
+    /// A sampler of binding type `ty`, which must suit the textures it samples.
     pub fn sampler(binding: u32, ty: wgpu::SamplerBindingType) -> wgpu::BindGroupLayoutEntry {
         entry(binding, wgpu::BindingType::Sampler(ty))
     }

@@ -17,17 +17,6 @@ pub const NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
 pub const BEST_RECONSTRUCTION: NormalSource = NormalSource::Depth5tap;
 
 /// Writes oct32 view-space normals from linear depth.
-///
-/// ```no_run
-/// # fn f(ctx: &mut aokit::passes::PassContext<'_>, linear_depth: &wgpu::TextureView,
-/// #      normals: &wgpu::TextureView) {
-/// use aokit::NormalSource;
-/// use aokit::passes::normals_from_depth::NormalsFromDepthPass;
-/// let mut pass = NormalsFromDepthPass::new(ctx.device);
-/// // A renderer without a normal buffer: the cheapest reconstruction, for a quick preview.
-/// pass.encode(ctx, NormalSource::DepthNaive, linear_depth, normals);
-/// # }
-/// ```
 pub struct NormalsFromDepthPass {
     /// One kernel per reconstruction, compiled the first time it is used.
     kernels: HashMap<NormalSource, ComputeKernel>,
@@ -35,12 +24,6 @@ pub struct NormalsFromDepthPass {
 
 impl NormalsFromDepthPass {
     /// Compiles the fallback reconstruction, [`BEST_RECONSTRUCTION`]; others compile on first use.
-    ///
-    /// ```no_run
-    /// let gpu = aokit::GpuContext::headless()?;
-    /// let pass = aokit::passes::normals_from_depth::NormalsFromDepthPass::new(&gpu.device);
-    /// # Ok::<(), aokit::GpuError>(())
-    /// ```
     pub fn new(device: &wgpu::Device) -> Self {
         let mut pass = Self {
             kernels: HashMap::new(),
@@ -67,15 +50,6 @@ impl NormalsFromDepthPass {
     /// Records the reconstruction `source` names ([`BEST_RECONSTRUCTION`] for
     /// [`NormalSource::Buffer`]), from `linear_depth` (`R32Float`, 0 where there is no
     /// surface) into `output`, an oct32 storage texture ([`NORMALS_FORMAT`]).
-    ///
-    /// ```no_run
-    /// # fn f(ctx: &mut aokit::passes::PassContext<'_>,
-    /// #      pass: &mut aokit::passes::normals_from_depth::NormalsFromDepthPass,
-    /// #      linear_depth: &wgpu::TextureView, output: &wgpu::TextureView) {
-    /// use aokit::passes::normals_from_depth::BEST_RECONSTRUCTION;
-    /// pass.encode(ctx, BEST_RECONSTRUCTION, linear_depth, output);
-    /// # }
-    /// ```
     pub fn encode(
         &mut self,
         ctx: &mut PassContext<'_>,

@@ -31,26 +31,6 @@ pub struct DownsampleTargets<'a> {
 /// The downsample and upsample kernels and their shared settings buffer.
 ///
 /// A half-resolution frame: down, the AO kernel at the working size, and up again.
-///
-/// ```no_run
-/// # fn f(full: &mut aokit::passes::PassContext<'_>, working: &mut aokit::passes::PassContext<'_>,
-/// #      queue: &wgpu::Queue, depth: &wgpu::TextureView, normals: &wgpu::TextureView,
-/// #      small_depth: &wgpu::TextureView, small_normals: &wgpu::TextureView,
-/// #      small_ao: &wgpu::TextureView, ao: &wgpu::TextureView) {
-/// use aokit::passes::resample::{DownsampleTargets, ResamplePass};
-/// use aokit::{AoSettings, Resolution};
-/// let settings = AoSettings { resolution: Resolution::Half, ..AoSettings::default() };
-/// let pass = ResamplePass::new(full.device);
-/// pass.prepare(queue, &settings, false, false);
-/// pass.downsample(working, depth, normals, None, &DownsampleTargets {
-///     linear_depth: small_depth,
-///     normals: small_normals,
-///     motion_vectors: None,
-/// });
-/// // ... the method kernel writes `small_ao` from `small_depth` and `small_normals` ...
-/// pass.upsample(full, depth, normals, small_depth, small_ao, ao, None);
-/// # }
-/// ```
 pub struct ResamplePass {
     downsample: ComputeKernel,
     upsample: ComputeKernel,
@@ -65,12 +45,6 @@ pub struct ResamplePass {
 
 impl ResamplePass {
     /// Compiles both kernels.
-    ///
-    /// ```no_run
-    /// let gpu = aokit::GpuContext::headless()?;
-    /// let pass = aokit::passes::resample::ResamplePass::new(&gpu.device);
-    /// # Ok::<(), aokit::GpuError>(())
-    /// ```
     pub fn new(device: &wgpu::Device) -> Self {
         let float = wgpu::TextureSampleType::Float { filterable: false };
         let downsample = ComputeKernel::new(
@@ -138,19 +112,6 @@ impl ResamplePass {
     /// one buffer (a second write before the submit would replace it for both), so it says
     /// whether the downsample writes `motion_vectors` and whether the upsample reads and writes
     /// `bent_normals`; the views given to the passes must agree.
-    ///
-    /// ```no_run
-    /// # fn f(queue: &wgpu::Queue, pass: &aokit::passes::resample::ResamplePass) {
-    /// use aokit::{AoSettings, Resolution, Upsample};
-    /// let settings = AoSettings {
-    ///     resolution: Resolution::Quarter,
-    ///     upsample: Upsample::NearestDepth,
-    ///     ..AoSettings::default()
-    /// };
-    /// // This frame downsamples motion vectors and upsamples no bent normals.
-    /// pass.prepare(queue, &settings, true, false);
-    /// # }
-    /// ```
     pub fn prepare(
         &self,
         queue: &wgpu::Queue,
@@ -172,28 +133,6 @@ impl ResamplePass {
     /// Records the downsample of full-resolution `linear_depth`, oct32 `normals` and
     /// `motion_vectors` (pixels, as [`AoInputs::motion_vectors`](crate::AoInputs::motion_vectors))
     /// into `targets`; `ctx` is at working resolution.
-    ///
-    /// ```no_run
-    /// # fn f(ctx: &mut aokit::passes::PassContext<'_>, pass: &aokit::passes::resample::ResamplePass,
-    /// #      depth: &wgpu::TextureView, normals: &wgpu::TextureView, motion: &wgpu::TextureView) {
-    /// use aokit::passes::linear_depth::LINEAR_DEPTH_FORMAT;
-    /// use aokit::passes::normals_from_depth::NORMALS_FORMAT;
-    /// use aokit::passes::resample::{DownsampleTargets, WORKING_MOTION_FORMAT};
-    /// let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
-    /// let target = |format| {
-    ///     aokit::gpu::create_texture_2d(ctx.device, "working", ctx.size, format, usage)
-    ///         .create_view(&Default::default())
-    /// };
-    /// let (small_depth, small_normals, small_motion) =
-    ///     (target(LINEAR_DEPTH_FORMAT), target(NORMALS_FORMAT), target(WORKING_MOTION_FORMAT));
-    /// // `prepare` was told that this frame has motion vectors.
-    /// pass.downsample(ctx, depth, normals, Some(motion), &DownsampleTargets {
-    ///     linear_depth: &small_depth,
-    ///     normals: &small_normals,
-    ///     motion_vectors: Some(&small_motion),
-    /// });
-    /// # }
-    /// ```
     pub fn downsample(
         &self,
         ctx: &mut PassContext<'_>,
@@ -225,16 +164,6 @@ impl ResamplePass {
     /// (working, full) when given, comparing the full-resolution `linear_depth` with
     /// `working_depth`, the downsample's; `ctx` is at full resolution. `normals`, oct32 at full
     /// resolution, are the bent normals of pixels no working texel saw.
-    ///
-    /// ```no_run
-    /// # fn f(ctx: &mut aokit::passes::PassContext<'_>, pass: &aokit::passes::resample::ResamplePass,
-    /// #      depth: &wgpu::TextureView, normals: &wgpu::TextureView, small_depth: &wgpu::TextureView,
-    /// #      small_ao: &wgpu::TextureView, small_bent: &wgpu::TextureView,
-    /// #      ao: &wgpu::TextureView, bent: &wgpu::TextureView) {
-    /// // `prepare` was told that this frame has bent normals.
-    /// pass.upsample(ctx, depth, normals, small_depth, small_ao, ao, Some((small_bent, bent)));
-    /// # }
-    /// ```
     #[allow(clippy::too_many_arguments)]
     pub fn upsample(
         &self,

@@ -17,19 +17,6 @@ use crate::uniforms::SpatialUniforms;
 pub const PACKED_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
 
 /// The two kernels of the filter and its settings buffer.
-///
-/// ```no_run
-/// # fn f(ctx: &mut aokit::passes::PassContext<'_>, queue: &wgpu::Queue, ao: &wgpu::TextureView,
-/// #      linear_depth: &wgpu::TextureView, normals: &wgpu::TextureView, output: &wgpu::TextureView) {
-/// use aokit::SpatialSettings;
-/// use aokit::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
-/// let settings = SpatialSettings { enabled: true, radius: 4, ..SpatialSettings::default() };
-/// let pass = SpatialFilterPass::new(ctx.device, queue, &settings);
-/// let packed = aokit::gpu::create_texture_2d(ctx.device, "ao and depth", ctx.size, PACKED_FORMAT,
-///     wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING);
-/// pass.encode(ctx, ao, linear_depth, normals, &packed.create_view(&Default::default()), output);
-/// # }
-/// ```
 pub struct SpatialFilterPass {
     /// Compiled the first time the settings enable the filter.
     kernels: Option<[ComputeKernel; 2]>,
@@ -39,15 +26,6 @@ pub struct SpatialFilterPass {
 impl SpatialFilterPass {
     /// Creates the settings buffer and uploads `settings`, compiling the kernels if they are
     /// enabled.
-    ///
-    /// ```no_run
-    /// use aokit::SpatialSettings;
-    /// use aokit::passes::spatial_filter::SpatialFilterPass;
-    /// let gpu = aokit::GpuContext::headless()?;
-    /// // Off for now: nothing compiles until the filter is first turned on.
-    /// let pass = SpatialFilterPass::new(&gpu.device, &gpu.queue, &SpatialSettings::default());
-    /// # Ok::<(), aokit::GpuError>(())
-    /// ```
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
         let mut pass = Self {
             kernels: None,
@@ -59,20 +37,6 @@ impl SpatialFilterPass {
 
     /// Uploads validated settings for later `encode`s, compiling the kernels the first time
     /// they are enabled.
-    ///
-    /// ```no_run
-    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue,
-    /// #      pass: &mut aokit::passes::spatial_filter::SpatialFilterPass) {
-    /// use aokit::{DepthWeight, SpatialSettings};
-    /// // A hard depth cut instead of the Gaussian weight, to compare the two edges.
-    /// let settings = SpatialSettings {
-    ///     enabled: true,
-    ///     depth_weight: DepthWeight::Threshold,
-    ///     ..SpatialSettings::default()
-    /// };
-    /// pass.set_settings(device, queue, &settings);
-    /// # }
-    /// ```
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,

@@ -23,16 +23,6 @@ pub const MOTION_VECTOR_FORMATS: [wgpu::TextureFormat; 2] = [
 
 /// One view's history: last frame's filtered AO and depth, and the camera that saw them.
 /// [`TemporalFilterPass::encode`] makes it on the first frame.
-///
-/// ```no_run
-/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue,
-/// #      history: &aokit::passes::temporal_filter::History) -> Result<(), aokit::GpuError> {
-/// let (texture, _view) = history.rejected();
-/// let rejected = aokit::gpu::read_texture_f32(device, queue, texture)?;
-/// // The share of the frame that showed fresh, unfiltered noise.
-/// let share = rejected.iter().sum::<f32>() / rejected.len() as f32;
-/// # Ok(()) }
-/// ```
 pub struct History {
     size: [u32; 2],
     /// Ping-pong pair: one is read while the other is written.
@@ -71,15 +61,6 @@ impl History {
     }
 
     /// The filtered AO, `R32Float`, valid after [`TemporalFilterPass::encode`] ran.
-    ///
-    /// ```no_run
-    /// # fn f(history: &Option<aokit::passes::temporal_filter::History>) {
-    /// if let Some(history) = history {
-    ///     let (_, ao_view) = history.ao();
-    ///     // ... bind `ao_view` in the lighting pass ...
-    /// }
-    /// # }
-    /// ```
     pub fn ao(&self) -> &(wgpu::Texture, wgpu::TextureView) {
         &self.output
     }
@@ -92,20 +73,6 @@ impl History {
 }
 
 /// The camera and motion of one frame, as the temporal filter needs them.
-///
-/// ```
-/// use aokit::Projection;
-/// use aokit::passes::temporal_filter::FrameMotion;
-/// use glam::Vec3;
-/// use glam::camera::rh::view::look_at_mat4;
-/// let frame = FrameMotion {
-///     view_from_world: look_at_mat4(Vec3::new(0.0, 1.0, 4.0), Vec3::ZERO, Vec3::Y),
-///     projection: Projection::perspective(1.0, 16.0 / 9.0, 0.1, None),
-///     // Without motion vectors, pixels are reprojected by depth and the two cameras.
-///     motion_vectors: None,
-///     reset: false,
-/// };
-/// ```
 pub struct FrameMotion<'a> {
     /// World-to-view transform of this frame.
     pub view_from_world: Mat4,
@@ -118,19 +85,6 @@ pub struct FrameMotion<'a> {
 }
 
 /// Runs the temporal filter.
-///
-/// ```no_run
-/// # fn f(ctx: &mut aokit::passes::PassContext<'_>, queue: &wgpu::Queue, ao: &wgpu::TextureView,
-/// #      linear_depth: &wgpu::TextureView, frame: &aokit::passes::temporal_filter::FrameMotion<'_>) {
-/// use aokit::TemporalSettings;
-/// use aokit::passes::temporal_filter::TemporalFilterPass;
-/// let pass = TemporalFilterPass::new(ctx.device, &TemporalSettings::default());
-/// // Each view keeps its own history; it starts empty.
-/// let mut history = None;
-/// pass.encode(ctx, queue, &mut history, frame, ao, linear_depth);
-/// let (filtered, _) = history.as_ref().expect("made by the first frame").ao();
-/// # }
-/// ```
 pub struct TemporalFilterPass {
     settings: TemporalSettings,
     kernel: ComputeKernel,
@@ -142,15 +96,6 @@ pub struct TemporalFilterPass {
 
 impl TemporalFilterPass {
     /// Compiles the kernel.
-    ///
-    /// ```no_run
-    /// use aokit::TemporalSettings;
-    /// use aokit::passes::temporal_filter::TemporalFilterPass;
-    /// let gpu = aokit::GpuContext::headless()?;
-    /// let settings = TemporalSettings { enabled: true, ..TemporalSettings::default() };
-    /// let pass = TemporalFilterPass::new(&gpu.device, &settings);
-    /// # Ok::<(), aokit::GpuError>(())
-    /// ```
     pub fn new(device: &wgpu::Device, settings: &TemporalSettings) -> Self {
         let float = wgpu::TextureSampleType::Float { filterable: false };
         let kernel = ComputeKernel::new(
@@ -189,35 +134,12 @@ impl TemporalFilterPass {
     }
 
     /// Settings for later frames.
-    ///
-    /// ```no_run
-    /// # fn f(pass: &mut aokit::passes::temporal_filter::TemporalFilterPass) {
-    /// use aokit::TemporalSettings;
-    /// // Less history for a fast-moving camera: less ghosting, more noise.
-    /// let settings =
-    ///     TemporalSettings { enabled: true, blend: 0.5, ..TemporalSettings::default() };
-    /// pass.set_settings(&settings);
-    /// # }
-    /// ```
     pub fn set_settings(&mut self, settings: &TemporalSettings) {
         self.settings = *settings;
     }
 
     /// Filters `ao` into `history` (made or remade when missing or of another size), using and
     /// then replacing the history's previous frame.
-    ///
-    /// ```no_run
-    /// # fn f(ctx: &mut aokit::passes::PassContext<'_>, queue: &wgpu::Queue,
-    /// #      pass: &aokit::passes::temporal_filter::TemporalFilterPass,
-    /// #      history: &mut Option<aokit::passes::temporal_filter::History>,
-    /// #      frame: aokit::passes::temporal_filter::FrameMotion<'_>,
-    /// #      ao: &wgpu::TextureView, linear_depth: &wgpu::TextureView) {
-    /// use aokit::passes::temporal_filter::FrameMotion;
-    /// // A camera cut: the history shows another place and must not be blended in.
-    /// let cut = FrameMotion { reset: true, ..frame };
-    /// pass.encode(ctx, queue, history, &cut, ao, linear_depth);
-    /// # }
-    /// ```
     pub fn encode(
         &self,
         ctx: &mut PassContext<'_>,
