@@ -7,7 +7,7 @@
 mod common;
 
 use aokit::gpu::read_texture_f32;
-use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, NormalEncoding, Preset};
+use aokit::{AoInputs, AoPipeline, AoSettings, Method, NormalEncoding, Preset};
 use aokit_reference::AoOptions;
 use aokit_scene::{Builtin, Camera, Lens, Renderer, reference};
 use common::{DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, rmse};
@@ -19,117 +19,6 @@ const TOLERANCE: f64 = 0.08;
 
 /// Samples per pixel of the multisampled inputs.
 const MSAA: u32 = 4;
-
-/// A fullscreen pass that writes single-sampled linear depth into every sample of a
-/// multisampled colour target.
-const SPREAD_LINEAR: &str = r#"
-@group(0) @binding(0) var source: texture_2d<f32>;
-
-@vertex
-fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-    let uv = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
-    return vec4<f32>(uv * 2.0 - 1.0, 0.0, 1.0);
-}
-
-@fragment
-fn fs(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
-    return textureLoad(source, vec2<i32>(position.xy), 0);
-}
-"#;
-
-/// `linear` (`R32Float`) drawn into a new `MSAA`-times multisampled `R32Float` texture.
-fn multisampled_linear_depth(gpu: &GpuContext, linear: &wgpu::Texture) -> wgpu::Texture {
-    let device = &gpu.device;
-    let format = wgpu::TextureFormat::R32Float;
-    let target = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("multisampled linear depth"),
-        size: linear.size(),
-        mip_level_count: 1,
-        sample_count: MSAA,
-        dimension: wgpu::TextureDimension::D2,
-        format,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-        view_formats: &[],
-    });
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("spread linear depth"),
-        source: wgpu::ShaderSource::Wgsl(SPREAD_LINEAR.into()),
-    });
-    // R32Float is not filterable, which a derived layout would assume.
-    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: None,
-        entries: &[wgpu::BindGroupLayoutEntry {
-            binding: 0,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
-            },
-            count: None,
-        }],
-    });
-    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("spread linear depth"),
-        layout: Some(
-            &device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-                label: None,
-                bind_group_layouts: &[Some(&layout)],
-                immediate_size: 0,
-            }),
-        ),
-        vertex: wgpu::VertexState {
-            module: &module,
-            entry_point: Some("vs"),
-            compilation_options: Default::default(),
-            buffers: &[],
-        },
-        primitive: Default::default(),
-        depth_stencil: None,
-        multisample: wgpu::MultisampleState {
-            count: MSAA,
-            ..Default::default()
-        },
-        fragment: Some(wgpu::FragmentState {
-            module: &module,
-            entry_point: Some("fs"),
-            compilation_options: Default::default(),
-            targets: &[Some(format.into())],
-        }),
-        multiview_mask: None,
-        cache: None,
-    });
-    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: None,
-        layout: &layout,
-        entries: &[wgpu::BindGroupEntry {
-            binding: 0,
-            resource: wgpu::BindingResource::TextureView(&linear.create_view(&Default::default())),
-        }],
-    });
-    let view = target.create_view(&Default::default());
-    let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("spread linear depth"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            ..Default::default()
-        });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind_group, &[]);
-        pass.draw(0..3, 0..1);
-    }
-    gpu.queue.submit([encoder.finish()]);
-    target
-}
 
 #[test]
 fn every_depth_convention_scores_alike_against_the_reference() {
@@ -217,7 +106,15 @@ fn every_depth_convention_scores_alike_against_the_reference() {
             ("Depth24Plus 4x MSAA", copy(Depth24Plus, MSAA)),
             (
                 "R32Float 4x MSAA linear depth",
-                multisampled_linear_depth(&gpu, &linear),
+                copy_depth(
+                    &gpu,
+                    &linear,
+                    &DepthCopy {
+                        format: wgpu::TextureFormat::R32Float,
+                        samples: MSAA,
+                        stencil: None,
+                    },
+                ),
             ),
             ("R32Float linear depth", linear),
         ];

@@ -46,26 +46,34 @@ pub fn rmse(a: &[f32], b: &[f32], keep: impl Fn(usize) -> bool) -> f64 {
     (errors.iter().sum::<f64>() / errors.len() as f64).sqrt()
 }
 
-/// A fullscreen pass that writes the depth of a `Depth32Float` texture into a depth attachment
-/// of another format, as a renderer using that format would have drawn it (every sample of a
-/// multisampled pixel gets the pixel's depth).
+/// Fullscreen passes that copy each pixel of a texture to every sample of a target, as a
+/// renderer drawing into that target would have: `Depth32Float` into a depth attachment, or
+/// `R32Float` linear depth into a colour attachment.
 const COPY_DEPTH: &str = r#"
-@group(0) @binding(0) var source: texture_depth_2d;
-
 @vertex
 fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
     let uv = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
     return vec4<f32>(uv * 2.0 - 1.0, 0.0, 1.0);
 }
-
+"#;
+const TO_DEPTH: &str = r#"
+@group(0) @binding(0) var source: texture_depth_2d;
 @fragment
 fn fs(@builtin(position) position: vec4<f32>) -> @builtin(frag_depth) f32 {
+    return textureLoad(source, vec2<i32>(position.xy), 0);
+}
+"#;
+const TO_COLOUR: &str = r#"
+@group(0) @binding(0) var source: texture_2d<f32>;
+@fragment
+fn fs(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     return textureLoad(source, vec2<i32>(position.xy), 0);
 }
 "#;
 
 /// What [`copy_depth`] makes.
 pub struct DepthCopy {
+    /// A depth format (from a `Depth32Float` source), or `R32Float` (from an `R32Float` one).
     pub format: wgpu::TextureFormat,
     pub samples: u32,
     /// Stencil `reference` written inside `[x, y, width, height]`, 0 elsewhere (the format
@@ -73,10 +81,11 @@ pub struct DepthCopy {
     pub stencil: Option<(u32, [u32; 4])>,
 }
 
-/// `source` (`Depth32Float`) drawn into a new depth texture as `copy` says.
+/// `source` drawn into a new texture as `copy` says.
 pub fn copy_depth(gpu: &GpuContext, source: &wgpu::Texture, copy: &DepthCopy) -> wgpu::Texture {
     let device = &gpu.device;
     let format = copy.format;
+    let to_depth = format.has_depth_aspect();
     let target = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("depth copy"),
         size: source.size(),
@@ -89,7 +98,31 @@ pub fn copy_depth(gpu: &GpuContext, source: &wgpu::Texture, copy: &DepthCopy) ->
     });
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("copy depth"),
-        source: wgpu::ShaderSource::Wgsl(COPY_DEPTH.into()),
+        source: wgpu::ShaderSource::Wgsl(
+            format!(
+                "{COPY_DEPTH}{}",
+                if to_depth { TO_DEPTH } else { TO_COLOUR }
+            )
+            .into(),
+        ),
+    });
+    // Explicit: a derived layout would take R32Float for filterable.
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: None,
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Texture {
+                sample_type: if to_depth {
+                    wgpu::TextureSampleType::Depth
+                } else {
+                    wgpu::TextureSampleType::Float { filterable: false }
+                },
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+            count: None,
+        }],
     });
     let replace = wgpu::StencilFaceState {
         compare: wgpu::CompareFunction::Always,
@@ -97,9 +130,16 @@ pub fn copy_depth(gpu: &GpuContext, source: &wgpu::Texture, copy: &DepthCopy) ->
         depth_fail_op: wgpu::StencilOperation::Keep,
         pass_op: wgpu::StencilOperation::Replace,
     };
+    let colour_targets = [Some(format.into())];
     let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some("copy depth"),
-        layout: None,
+        layout: Some(
+            &device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: None,
+                bind_group_layouts: &[Some(&layout)],
+                immediate_size: 0,
+            }),
+        ),
         vertex: wgpu::VertexState {
             module: &module,
             entry_point: Some("vs"),
@@ -107,7 +147,7 @@ pub fn copy_depth(gpu: &GpuContext, source: &wgpu::Texture, copy: &DepthCopy) ->
             buffers: &[],
         },
         primitive: Default::default(),
-        depth_stencil: Some(wgpu::DepthStencilState {
+        depth_stencil: to_depth.then(|| wgpu::DepthStencilState {
             format,
             depth_write_enabled: Some(true),
             depth_compare: Some(wgpu::CompareFunction::Always),
@@ -131,26 +171,35 @@ pub fn copy_depth(gpu: &GpuContext, source: &wgpu::Texture, copy: &DepthCopy) ->
             module: &module,
             entry_point: Some("fs"),
             compilation_options: Default::default(),
-            targets: &[],
+            targets: if to_depth { &[] } else { &colour_targets },
         }),
         multiview_mask: None,
         cache: None,
     });
     let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
-        layout: &pipeline.get_bind_group_layout(0),
+        layout: &layout,
         entries: &[wgpu::BindGroupEntry {
             binding: 0,
             resource: wgpu::BindingResource::TextureView(&source.create_view(&Default::default())),
         }],
     });
     let view = target.create_view(&Default::default());
+    let colour_attachment = [Some(wgpu::RenderPassColorAttachment {
+        view: &view,
+        depth_slice: None,
+        resolve_target: None,
+        ops: wgpu::Operations {
+            load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+            store: wgpu::StoreOp::Store,
+        },
+    })];
     let mut encoder = device.create_command_encoder(&Default::default());
     {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("copy depth"),
-            color_attachments: &[],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            color_attachments: if to_depth { &[] } else { &colour_attachment },
+            depth_stencil_attachment: to_depth.then(|| wgpu::RenderPassDepthStencilAttachment {
                 view: &view,
                 depth_ops: Some(wgpu::Operations {
                     load: wgpu::LoadOp::Clear(0.0),
