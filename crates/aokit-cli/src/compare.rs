@@ -97,7 +97,7 @@ struct Scored {
 }
 
 /// The methods named on the command line, `all` standing for every one.
-fn methods(names: &[String]) -> Result<Vec<Method>> {
+pub fn methods(names: &[String]) -> Result<Vec<Method>> {
     let mut methods = Vec::new();
     for name in names {
         let named: Vec<Method> = if name == "all" {
@@ -425,6 +425,17 @@ fn write_images(dir: &Path, views: &[ViewResult]) -> Result<()> {
     Ok(())
 }
 
+/// The scene and camera of a view named SCENE or SCENE@CAMERA.
+pub fn open_view(view: &str) -> Result<(Scene, aokit_scene::Camera)> {
+    let (spec, camera_name) = match view.rsplit_once('@') {
+        Some((spec, camera)) => (spec, Some(camera)),
+        None => (view, None),
+    };
+    let scene = Scene::open(spec)?;
+    let camera = scene.camera(camera_name)?;
+    Ok((scene, camera))
+}
+
 pub fn run(args: &CompareArgs) -> Result<()> {
     let methods = methods(&args.methods)?;
     if methods.is_empty() || args.presets.is_empty() {
@@ -446,12 +457,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         )?);
     } else {
         for view in &args.view {
-            let (spec, camera_name) = match view.rsplit_once('@') {
-                Some((spec, camera)) => (spec, Some(camera)),
-                None => (view.as_str(), None),
-            };
-            let scene = Scene::open(spec)?;
-            let camera = scene.camera(camera_name)?;
+            let (scene, camera) = open_view(view)?;
             scored.push(score_scene_view(
                 &gpu, args, &methods, &cache_dir, &scene, &camera,
             )?);

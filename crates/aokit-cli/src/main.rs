@@ -11,6 +11,7 @@ mod reference;
 mod render;
 mod sequence;
 mod settings_args;
+mod tune;
 
 use std::process::ExitCode;
 
@@ -36,6 +37,9 @@ enum Command {
     /// Time the AO passes alone on one G-buffer: GPU time per pass, CPU encode time; with
     /// --compare, several configurations interleaved.
     Bench(bench::BenchArgs),
+    /// Search each method's parameters at each preset's cost for the lowest error against the
+    /// reference: the table the presets come from.
+    Tune(tune::TuneArgs),
 }
 
 fn main() -> ExitCode {
@@ -46,6 +50,7 @@ fn main() -> ExitCode {
         Command::Ao(args) => ao::run(&args),
         Command::Compare(args) => compare::run(&args),
         Command::Bench(args) => bench::run(&args),
+        Command::Tune(args) => tune::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -456,8 +456,10 @@ fn gtso_leaves_an_open_plane_alone_and_darkens_room_corners() {
     );
     assert!(shown_specular_occlusion(&none, i) > 0.99);
     assert!(open_so > 0.95, "open floor specular occlusion {open_so}");
+    // The `high` preset's thickness heuristic (0.05, tuned) pulls a concave corner's horizons
+    // back a little: 0.84 measured against 1.0 on the open floor; without it, under 0.75.
     assert!(
-        corner_so < open_so - 0.25,
+        corner_so < open_so - 0.12,
         "corner specular occlusion {corner_so}, open floor {open_so}"
     );
 }

@@ -21,6 +21,7 @@ pub mod normals;
 pub mod occlusion;
 pub mod passes;
 pub mod pipeline;
+mod presets;
 pub mod projection;
 pub mod settings;
 pub mod shader;

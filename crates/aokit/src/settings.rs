@@ -5,6 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::presets;
+
 /// An enum of settings values with the names the CLI and settings files use: `ALL`, `name()`,
 /// `FromStr` (an error lists the names on offer) and serde by the same names.
 macro_rules! named_enum {
@@ -631,40 +633,6 @@ pub(crate) fn find_by_name<T: Copy>(
         })
 }
 
-/// Depth samples per pixel of each preset, the same for every method so that presets compare
-/// methods at equal cost. They grow by about 2x (4, 8, 18, 54) from a count where the noise
-/// still shows structure to one where it has converged for comparisons.
-fn preset_samples(preset: Preset) -> u32 {
-    match preset {
-        Preset::Low => 4,
-        Preset::Medium => 8,
-        Preset::High => 18,
-        Preset::Ultra => 54,
-    }
-}
-
-/// Slices and steps per side of the slice-based methods (GTAO, VBAO) for a preset: of the
-/// splits of each budget, the one with the lowest mean RMSE against the reference over the
-/// built-in scenes and the Sponza cameras (docs/methods.md). One slice is too noisy; past three,
-/// steps that find far horizons gain more than slices.
-fn preset_slices(preset: Preset) -> (u32, u32) {
-    match preset {
-        Preset::Low => (2, 1),
-        Preset::Medium => (2, 2),
-        Preset::High => (3, 3),
-        Preset::Ultra => (3, 9),
-    }
-}
-
-/// Step spacing each method measured best with (`AoSettings::step_power`): even for the slice
-/// methods, slightly crowded towards the pixel for HBAO.
-fn preset_step_power(method: Method) -> f32 {
-    match method {
-        Method::Hbao | Method::HbaoPlus => 1.5,
-        Method::SsaoCrytek | Method::Ssao | Method::Gtao | Method::Vbao => 1.0,
-    }
-}
-
 /// Sample count of the point-sampling methods (`ssao-crytek`, `ssao`).
 ///
 /// ```
@@ -698,7 +666,7 @@ impl SsaoSettings {
     /// ```
     pub fn preset(preset: Preset) -> Self {
         Self {
-            sample_count: preset_samples(preset),
+            sample_count: presets::samples(preset),
         }
     }
 }
@@ -731,7 +699,7 @@ impl Default for HbaoSettings {
 
 impl HbaoSettings {
     /// Counts of a preset: directions times steps equals the preset's samples, split as
-    /// measured best (lowest mean RMSE against the reference, docs/methods.md).
+    /// `aokit tune` measured best for `hbao` (docs/tuning.md); `hbao-plus` runs on the same.
     ///
     /// ```
     /// use aokit::{HbaoSettings, Preset};
@@ -739,12 +707,7 @@ impl HbaoSettings {
     /// assert_eq!((high.direction_count, high.step_count), (3, 6));
     /// ```
     pub fn preset(preset: Preset) -> Self {
-        let (direction_count, step_count) = match preset {
-            Preset::Low => (2, 2),
-            Preset::Medium => (4, 2),
-            Preset::High => (3, 6),
-            Preset::Ultra => (6, 9),
-        };
+        let [direction_count, step_count] = presets::preset_values(Method::Hbao, preset).split;
         Self {
             direction_count,
             step_count,
@@ -802,12 +765,13 @@ impl GtaoSettings {
     /// assert_eq!(samples, [4, 8, 18, 54]);
     /// ```
     pub fn preset(preset: Preset) -> Self {
-        let (slice_count, steps_per_side) = preset_slices(preset);
+        let tuned = presets::preset_values(Method::Gtao, preset);
+        let [slice_count, steps_per_side] = tuned.split;
         Self {
             slice_count,
             steps_per_side,
             normalize_slices: true,
-            thickness: 0.0,
+            thickness: tuned.knob,
         }
     }
 }
@@ -857,16 +821,18 @@ impl VbaoSettings {
     ///     (vbao.slice_count, vbao.steps_per_side),
     ///     (gtao.slice_count, gtao.steps_per_side)
     /// );
-    /// assert_eq!(vbao.thickness, 0.6);
+    /// // Thick enough that boxes occlude as solids, thin enough for light behind poles.
+    /// assert!(vbao.thickness > 0.2 && vbao.thickness < 1.0);
     /// ```
     pub fn preset(preset: Preset) -> Self {
-        let (slice_count, steps_per_side) = preset_slices(preset);
+        let tuned = presets::preset_values(Method::Vbao, preset);
+        let [slice_count, steps_per_side] = tuned.split;
         Self {
             slice_count,
             steps_per_side,
-            // 0.6 of the radius: thick enough that walls and boxes occlude as solids, thin enough
-            // that a pole in front of a wall leaves the wall lit (docs/methods.md has the sweep).
-            thickness: 0.6,
+            // A fraction of the radius, as tuned (docs/tuning.md); docs/methods.md shows what
+            // thinner and thicker occluders look like.
+            thickness: tuned.knob,
             thickness_growth: 0.0,
         }
     }
@@ -889,6 +855,12 @@ pub struct AoSettings {
     pub method: Method,
     /// World-space radius of the occlusion hemisphere.
     pub radius: f32,
+    /// The kernel's radius over `radius`. Screen-space methods see only the depth buffer's
+    /// front surfaces and each estimates occlusion its own way, so most under-occlude at the
+    /// true radius; sampling a little farther brings their AO closer to the reference traced
+    /// at `radius` (XeGTAO ships a multiplier for the same reason). Each preset sets the value
+    /// `aokit tune` measured best for its method (docs/tuning.md); 1 samples at `radius`.
+    pub radius_multiplier: f32,
     /// Fraction of the radius, at its outer end, over which a sample's influence fades to zero;
     /// 0 cuts off hard at the radius.
     pub falloff: f32,
@@ -1006,23 +978,31 @@ impl AoSettings {
     /// assert_eq!(settings.samples_per_pixel(), 4);
     /// ```
     pub fn preset(method: Method, preset: Preset) -> Self {
+        // The method's tuned values (docs/tuning.md). The bias and angle bias of the methods
+        // not chosen come from their own rows, so that switching `method` later keeps them.
+        let tuned = presets::preset_values(method, preset);
+        let knob = |owners: [Method; 2]| {
+            let owner = if owners.contains(&method) {
+                method
+            } else {
+                owners[0]
+            };
+            presets::preset_values(owner, preset).knob
+        };
         Self {
             method,
             radius: 1.0,
-            // A hard cut: AO is defined by what lies within the radius, and the fade only moved
-            // every slice method further from the reference (docs/methods.md has the sweep).
-            falloff: 0.0,
+            radius_multiplier: tuned.radius_multiplier,
+            falloff: tuned.falloff,
             intensity: 1.0,
-            power: 1.0,
+            power: tuned.power,
             // Past 256 pixels (a quarter of a 1080p screen) AO no longer reads as contact
             // shadowing, and samples that far apart miss the texture cache.
             max_radius_px: 256.0,
             min_radius_px: 0.0,
-            // 2% of the radius lifts samples off a plane tessellated or stored at 16-24 bits.
-            bias: 0.02,
-            // About 6 degrees, the tangent elevation HBAO+'s default N.V bias of 0.1 implies.
-            angle_bias: 0.1,
-            step_power: preset_step_power(method),
+            bias: knob([Method::Ssao, Method::SsaoCrytek]),
+            angle_bias: knob([Method::Hbao, Method::HbaoPlus]),
+            step_power: tuned.step_power,
             max_distance: 0.0,
             distance_falloff: 0.0,
             bent_normals: false,
@@ -1082,6 +1062,13 @@ impl AoSettings {
     /// ```
     pub fn validate(&self) -> Result<(), SettingsError> {
         positive("radius", self.radius)?;
+        if !(self.radius_multiplier > 0.0 && self.radius_multiplier <= 4.0) {
+            return Err(SettingsError {
+                field: "radius_multiplier",
+                value: self.radius_multiplier.to_string(),
+                expected: "a number in (0, 4]",
+            });
+        }
         in_unit_range("falloff", self.falloff)?;
         at_least("intensity", self.intensity, 0.0)?;
         positive("power", self.power)?;

@@ -100,7 +100,7 @@ const MIN_FALLOFF: f32 = 1e-4;
 
 impl AoUniforms {
     pub fn new(settings: &AoSettings) -> Self {
-        let radius = settings.radius;
+        let radius = settings.radius * settings.radius_multiplier;
         let range = settings.falloff.max(MIN_FALLOFF) * radius;
         // AO weight over view depth: saturate(depth * fade_mul + fade_add), 1 everywhere
         // without a maximum distance; a zero-length fade becomes a step one thousandth as long.
@@ -508,6 +508,7 @@ mod tests {
     fn falloff_weight_is_one_inside_and_zero_at_the_radius() {
         let mut settings = AoSettings {
             radius: 2.0,
+            radius_multiplier: 1.0,
             falloff: 0.25,
             ..AoSettings::default()
         };

@@ -1,0 +1,607 @@
+//! `aokit tune`: searches each method's parameters, at each preset's cost, for the lowest mean
+//! squared error against the ray-traced reference over a set of views, and writes the table the
+//! presets are taken from (docs/tuning.md).
+//!
+//! The cost of a preset is its depth samples per pixel; at that cost the search moves the
+//! knobs that cost nothing (the final power, the falloff, the step spacing, a radius scale and
+//! each method's own bias or thickness) and the split of the samples between directions and
+//! steps. It is a coordinate descent: one parameter at a time over its candidate values, the
+//! others held, best kept, for a few rounds, starting from the current preset.
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+use anyhow::{Context, Result, bail};
+use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, NormalEncoding, Preset};
+use aokit_eval::{compare as score, surface_mask};
+use aokit_reference::{AoOptions, Falloff, ReferenceImage};
+use aokit_scene::Renderer;
+use aokit_scene::gbuffer::GBuffer;
+use clap::Args;
+use serde::Serialize;
+
+use crate::cache;
+use crate::compare::{methods, open_view};
+use crate::export::create_dir;
+use crate::render::{open_gpu, parse_size};
+
+#[derive(Args, Debug)]
+pub struct TuneArgs {
+    /// A view as SCENE or SCENE@CAMERA; repeat for several (default: the built-in room,
+    /// stairs and thin, and Sponza's four cameras from scenes/sponza.obj).
+    #[arg(long, value_name = "SCENE[@CAMERA]")]
+    pub view: Vec<String>,
+    /// Image size of every view.
+    #[arg(long, value_name = "WxH", default_value = "240x135", value_parser = parse_size)]
+    pub size: [u32; 2],
+    /// Methods to tune, comma-separated, or `all`. `ssao-crytek` is left out unless named: its
+    /// presets keep the 2007 formulation, whose grey look is what the method is chosen for
+    /// (the search would trade it away: docs/tuning.md).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "ssao,hbao,hbao-plus,gtao,vbao"
+    )]
+    pub methods: Vec<String>,
+    /// Presets (cost levels) to tune, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
+    pub presets: Vec<Preset>,
+    /// Reference rays per pixel.
+    #[arg(long, default_value_t = 256)]
+    pub spp: u32,
+    /// Rounds of the coordinate descent over all parameters.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=10))]
+    pub rounds: u32,
+    /// Where references are cached (default: $AOKIT_CACHE, $XDG_CACHE_HOME/aokit or ~/.cache/aokit).
+    #[arg(long, value_name = "DIR")]
+    pub cache: Option<PathBuf>,
+    /// Output directory: tune.md, tune.json, evaluations.csv.
+    #[arg(long, value_name = "DIR", default_value = "aokit-tune")]
+    pub out: PathBuf,
+}
+
+/// The views searched when none is named.
+const DEFAULT_VIEWS: [&str; 7] = [
+    "room",
+    "stairs",
+    "thin",
+    "scenes/sponza.obj@atrium",
+    "scenes/sponza.obj@arcade",
+    "scenes/sponza.obj@gallery",
+    "scenes/sponza.obj@floor",
+];
+
+/// Step spacings searched for the marching methods.
+const STEP_POWERS: &[f32] = &[1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0];
+
+/// Final powers of the sweep that measures what the power alone does to the error.
+const POWER_SWEEP: [f32; 9] = [0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.4, 1.6];
+
+/// One point of the search.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Candidate {
+    /// `AoSettings::power`.
+    pub power: f32,
+    /// `AoSettings::falloff`.
+    pub falloff: f32,
+    /// `AoSettings::step_power`.
+    pub step_power: f32,
+    /// `AoSettings::radius_multiplier`: the kernel's radius over the reference's.
+    pub radius_multiplier: f32,
+    /// The method's own knob (see [`knob_name`]).
+    pub knob: f32,
+    /// Directions or slices, and steps per direction or side; `[samples, 1]` for the point
+    /// methods.
+    pub split: [u32; 2],
+}
+
+/// The setting each method's knob is.
+pub fn knob_name(method: Method) -> &'static str {
+    match method {
+        Method::SsaoCrytek | Method::Ssao => "bias",
+        Method::Hbao | Method::HbaoPlus => "angle_bias",
+        Method::Gtao => "gtao.thickness",
+        Method::Vbao => "vbao.thickness",
+    }
+}
+
+impl Candidate {
+    /// What `settings` (a method at a preset) has.
+    fn of(settings: &AoSettings) -> Self {
+        let (knob, split) = match settings.method {
+            Method::SsaoCrytek => (settings.bias, [settings.ssao_crytek.sample_count, 1]),
+            Method::Ssao => (settings.bias, [settings.ssao.sample_count, 1]),
+            Method::Hbao | Method::HbaoPlus => (
+                settings.angle_bias,
+                [settings.hbao.direction_count, settings.hbao.step_count],
+            ),
+            Method::Gtao => (
+                settings.gtao.thickness,
+                [settings.gtao.slice_count, settings.gtao.steps_per_side],
+            ),
+            Method::Vbao => (
+                settings.vbao.thickness,
+                [settings.vbao.slice_count, settings.vbao.steps_per_side],
+            ),
+        };
+        Self {
+            power: settings.power,
+            falloff: settings.falloff,
+            step_power: settings.step_power,
+            radius_multiplier: settings.radius_multiplier,
+            knob,
+            split,
+        }
+    }
+
+    /// `settings` with this candidate's values, for a view whose reference radius is `radius`.
+    fn apply(&self, settings: &AoSettings, radius: f32) -> AoSettings {
+        let mut s = AoSettings {
+            radius,
+            radius_multiplier: self.radius_multiplier,
+            power: self.power,
+            falloff: self.falloff,
+            step_power: self.step_power,
+            ..*settings
+        };
+        let [a, b] = self.split;
+        match s.method {
+            Method::SsaoCrytek => (s.bias, s.ssao_crytek.sample_count) = (self.knob, a),
+            Method::Ssao => (s.bias, s.ssao.sample_count) = (self.knob, a),
+            Method::Hbao | Method::HbaoPlus => {
+                s.angle_bias = self.knob;
+                (s.hbao.direction_count, s.hbao.step_count) = (a, b);
+            }
+            Method::Gtao => {
+                s.gtao.thickness = self.knob;
+                (s.gtao.slice_count, s.gtao.steps_per_side) = (a, b);
+            }
+            Method::Vbao => {
+                s.vbao.thickness = self.knob;
+                (s.vbao.slice_count, s.vbao.steps_per_side) = (a, b);
+            }
+        }
+        s
+    }
+
+    fn key(&self) -> String {
+        format!("{self:?}")
+    }
+}
+
+/// One parameter of the search: its name, its candidate values, and how a value is set.
+struct Dimension {
+    name: &'static str,
+    values: Vec<Candidate>,
+}
+
+/// The dimensions searched for `method` around `at`, with the samples per pixel of its preset.
+fn dimensions(method: Method, at: &Candidate, samples: u32) -> Vec<Dimension> {
+    let along = |name, values: &[f32], set: fn(&mut Candidate, f32)| Dimension {
+        name,
+        values: values
+            .iter()
+            .map(|&v| {
+                let mut c = *at;
+                set(&mut c, v);
+                c
+            })
+            .collect(),
+    };
+    let mut dims = vec![
+        along(
+            "power",
+            &[
+                0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0, 2.5, 3.0, 3.5,
+            ],
+            |c, v| c.power = v,
+        ),
+        along(
+            "radius_multiplier",
+            &[0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.35, 1.5, 1.7, 2.0, 2.5],
+            |c, v| c.radius_multiplier = v,
+        ),
+    ];
+    // The falloff shapes gtao's horizons and the point methods' range check; hbao and vbao
+    // weigh samples their own way.
+    if matches!(method, Method::Gtao | Method::Ssao | Method::SsaoCrytek) {
+        dims.push(along(
+            "falloff",
+            &[0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0],
+            |c, v| c.falloff = v,
+        ));
+    }
+    let knob: &[f32] = match method {
+        // Not 0: the views hold 32-bit float depth, and with 16- or 24-bit depth a plane
+        // needs some bias not to occlude itself.
+        Method::SsaoCrytek | Method::Ssao => &[0.005, 0.01, 0.02, 0.04, 0.08, 0.12, 0.2, 0.3],
+        Method::Hbao | Method::HbaoPlus => &[0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5],
+        Method::Gtao => &[0.0, 0.05, 0.1, 0.2, 0.3, 0.5],
+        Method::Vbao => &[0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.3],
+    };
+    dims.push(along(knob_name(method), knob, |c, v| c.knob = v));
+    // hbao-plus runs on hbao's directions and steps (one `hbao` settings block): it takes
+    // hbao's split rather than one of its own.
+    if matches!(method, Method::SsaoCrytek | Method::Ssao | Method::HbaoPlus) {
+        if method == Method::HbaoPlus {
+            dims.push(along("step_power", STEP_POWERS, |c, v| c.step_power = v));
+        }
+        return dims;
+    }
+    dims.push(along("step_power", STEP_POWERS, |c, v| c.step_power = v));
+    // Splits of the samples at the same cost: the slice methods take 2 samples per slice
+    // and step (one per side).
+    let pairs = if method.has_bent_normals() {
+        samples / 2
+    } else {
+        samples
+    };
+    dims.push(Dimension {
+        name: "split",
+        values: (1..=pairs)
+            .filter(|&d| {
+                let max = aokit::settings::MAX_SAMPLE_COUNT;
+                pairs.is_multiple_of(d) && d <= max && pairs / d <= max
+            })
+            .map(|d| Candidate {
+                split: [d, pairs / d],
+                ..*at
+            })
+            .collect(),
+    });
+    dims
+}
+
+/// A view ready for scoring: its G-buffer, the reference and the pixels with a surface.
+struct View {
+    name: String,
+    radius: f32,
+    gbuffer: GBuffer,
+    projection: aokit::Projection,
+    reference: ReferenceImage,
+    surface: Vec<bool>,
+}
+
+/// Runs candidates on every view and remembers what each scored.
+struct Evaluator<'a> {
+    gpu: &'a GpuContext,
+    views: Vec<View>,
+    pipeline: AoPipeline,
+    /// Mean squared error over the views, and each view's RMSE, by method and candidate.
+    scores: HashMap<(Method, String), (f64, Vec<f64>)>,
+    /// Every evaluation in order, for evaluations.csv.
+    log: Vec<(Method, Preset, Candidate, f64)>,
+}
+
+impl Evaluator<'_> {
+    fn score(
+        &mut self,
+        base: &AoSettings,
+        preset: Preset,
+        candidate: &Candidate,
+    ) -> Result<(f64, Vec<f64>)> {
+        let key = (base.method, candidate.key());
+        if let Some(scored) = self.scores.get(&key) {
+            return Ok(scored.clone());
+        }
+        let (device, queue) = (&self.gpu.device, &self.gpu.queue);
+        let mut rmse = Vec::with_capacity(self.views.len());
+        for view in &self.views {
+            let settings = candidate.apply(base, view.radius);
+            self.pipeline.set_settings(device, queue, &settings)?;
+            let mut encoder = device.create_command_encoder(&Default::default());
+            let outputs = self.pipeline.encode(
+                device,
+                queue,
+                &mut encoder,
+                &AoInputs {
+                    normals: Some(&view.gbuffer.normals),
+                    ..AoInputs::new(&view.gbuffer.depth, view.projection)
+                },
+            )?;
+            queue.submit([encoder.finish()]);
+            let ao = aokit::gpu::read_texture_f32(device, queue, outputs.ao)?;
+            if ao.iter().any(|v| !v.is_finite()) {
+                bail!(
+                    "{} wrote non-finite AO on {}",
+                    base.method.name(),
+                    view.name
+                );
+            }
+            let metrics = score(view.reference.size, &ao, &view.reference.ao, &view.surface);
+            rmse.push(metrics.rmse);
+        }
+        let mse = rmse.iter().map(|r| r * r).sum::<f64>() / rmse.len() as f64;
+        self.log.push((base.method, preset, *candidate, mse));
+        self.scores.insert(key, (mse, rmse.clone()));
+        Ok((mse, rmse))
+    }
+}
+
+/// What the search found for one method at one preset.
+#[derive(Serialize)]
+struct Tuned {
+    method: &'static str,
+    preset: &'static str,
+    samples_per_pixel: u32,
+    knob: &'static str,
+    start: Candidate,
+    start_rmse: f64,
+    tuned: Candidate,
+    tuned_rmse: f64,
+    /// Each view's RMSE with the tuned candidate.
+    views_rmse: Vec<f64>,
+}
+
+/// What tune.json holds.
+#[derive(Serialize)]
+struct TuneFile<'a> {
+    adapter: String,
+    command: String,
+    size: [u32; 2],
+    spp: u32,
+    views: Vec<String>,
+    results: &'a [Tuned],
+    power_sweep: Vec<PowerSweep>,
+}
+
+/// The error of one method at its `high` preset over a range of final powers.
+#[derive(Serialize)]
+struct PowerSweep {
+    method: &'static str,
+    power: [f32; POWER_SWEEP.len()],
+    rmse: Vec<f64>,
+}
+
+/// Coordinate descent from the preset's own values; `split`, when given, replaces the preset's
+/// split of the samples and is kept (hbao-plus takes hbao's).
+fn tune_one(
+    evaluator: &mut Evaluator<'_>,
+    method: Method,
+    preset: Preset,
+    rounds: u32,
+    split: Option<[u32; 2]>,
+) -> Result<Tuned> {
+    let base = AoSettings::preset(method, preset);
+    let samples = base.samples_per_pixel();
+    let mut start = Candidate::of(&base);
+    if let Some(split) = split {
+        start.split = split;
+    }
+    let (start_mse, _) = evaluator.score(&base, preset, &start)?;
+    let mut best = (start, start_mse);
+    for _ in 0..rounds {
+        let before = best.1;
+        for dimension in dimensions(method, &best.0, samples) {
+            for candidate in &dimension.values {
+                let (mse, _) = evaluator.score(&base, preset, candidate)?;
+                // Ties keep the current value, so the search only moves for a real gain.
+                if mse < best.1 * (1.0 - 1e-4) {
+                    best = (*candidate, mse);
+                }
+            }
+            eprintln!(
+                "tune: {} {} after {}: RMSE {:.4}",
+                method.name(),
+                preset.name(),
+                dimension.name,
+                best.1.sqrt()
+            );
+        }
+        if best.1 >= before {
+            break;
+        }
+    }
+    let (_, views_rmse) = evaluator.score(&base, preset, &best.0)?;
+    Ok(Tuned {
+        method: method.name(),
+        preset: preset.name(),
+        samples_per_pixel: samples,
+        knob: knob_name(method),
+        start,
+        start_rmse: start_mse.sqrt(),
+        tuned: best.0,
+        tuned_rmse: best.1.sqrt(),
+        views_rmse,
+    })
+}
+
+fn load_views(gpu: &GpuContext, args: &TuneArgs) -> Result<Vec<View>> {
+    let cache_dir = args.cache.clone().unwrap_or_else(cache::default_dir);
+    let specs: Vec<String> = if args.view.is_empty() {
+        DEFAULT_VIEWS.iter().map(|s| s.to_string()).collect()
+    } else {
+        args.view.clone()
+    };
+    let mut views = Vec::new();
+    for spec in &specs {
+        let (scene, camera) = open_view(spec)?;
+        let radius = scene.suggested_radius.unwrap_or(1.0);
+        let options = AoOptions {
+            radius,
+            spp: args.spp,
+            seed: 0,
+            falloff: Falloff::None,
+        };
+        let reference = cache::reference(&cache_dir, &scene, &camera, args.size, &options)?;
+        let mut renderer = Renderer::new(gpu, &scene, &AoSettings::default())?;
+        let (gbuffer, projection) =
+            renderer.render_gbuffer(gpu, &camera, args.size, NormalEncoding::Oct32)?;
+        views.push(View {
+            name: format!("{} / {}", scene.name, camera.name),
+            radius,
+            gbuffer,
+            projection,
+            surface: surface_mask(&reference.linear_depth),
+            reference,
+        });
+    }
+    Ok(views)
+}
+
+fn markdown(
+    args: &TuneArgs,
+    views: &[View],
+    tuned: &[Tuned],
+    sweep: &[(Method, Vec<f64>)],
+) -> String {
+    let mut md = String::new();
+    md.push_str(&format!(
+        "Views: {}; {}x{} pixels; references with {} rays per pixel; {} round(s).\n\n",
+        views
+            .iter()
+            .map(|v| v.name.as_str())
+            .collect::<Vec<_>>()
+            .join(", "),
+        args.size[0],
+        args.size[1],
+        args.spp,
+        args.rounds
+    ));
+    md.push_str(
+        "| method | preset | samples | split | step_power | falloff | knob | power | radius_multiplier | RMSE before | after |\n\
+         |---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n",
+    );
+    for t in tuned {
+        let c = &t.tuned;
+        md.push_str(&format!(
+            "| `{}` | {} | {} | {}x{} | {} | {} | `{}` = {} | {} | {} | {:.4} | {:.4} |\n",
+            t.method,
+            t.preset,
+            t.samples_per_pixel,
+            c.split[0],
+            c.split[1],
+            c.step_power,
+            c.falloff,
+            t.knob,
+            c.knob,
+            c.power,
+            c.radius_multiplier,
+            t.start_rmse,
+            t.tuned_rmse
+        ));
+    }
+    if !sweep.is_empty() {
+        md.push_str("\nThe final power alone, every other parameter at the method's `high` preset (RMSE over the views):\n\n| method |");
+        for p in POWER_SWEEP {
+            md.push_str(&format!(" {p} |"));
+        }
+        md.push_str("\n|---|");
+        md.push_str(&"--:|".repeat(POWER_SWEEP.len()));
+        md.push('\n');
+        for (method, mse) in sweep {
+            md.push_str(&format!("| `{}` |", method.name()));
+            for m in mse {
+                md.push_str(&format!(" {:.4} |", m.sqrt()));
+            }
+            md.push('\n');
+        }
+    }
+    md
+}
+
+pub fn run(args: &TuneArgs) -> Result<()> {
+    let methods = methods(&args.methods)?;
+    if methods.is_empty() || args.presets.is_empty() {
+        bail!("--methods and --presets need at least one entry each");
+    }
+    let gpu = open_gpu()?;
+    let views = load_views(&gpu, args)?;
+    let mut evaluator = Evaluator {
+        gpu: &gpu,
+        pipeline: AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?,
+        views,
+        scores: HashMap::new(),
+        log: Vec::new(),
+    };
+    let mut tuned = Vec::new();
+    let mut sweep = Vec::new();
+    for &method in &methods {
+        let high = AoSettings::preset(method, Preset::High);
+        let mut mse = Vec::new();
+        for power in POWER_SWEEP {
+            let candidate = Candidate {
+                power,
+                ..Candidate::of(&high)
+            };
+            mse.push(evaluator.score(&high, Preset::High, &candidate)?.0);
+        }
+        sweep.push((method, mse));
+        for &preset in &args.presets {
+            let split = (method == Method::HbaoPlus)
+                .then(|| {
+                    tuned
+                        .iter()
+                        .find(|t: &&Tuned| {
+                            t.method == Method::Hbao.name() && t.preset == preset.name()
+                        })
+                        .map(|t| t.tuned.split)
+                })
+                .flatten();
+            tuned.push(tune_one(
+                &mut evaluator,
+                method,
+                preset,
+                args.rounds,
+                split,
+            )?);
+        }
+    }
+
+    let out = &args.out;
+    create_dir(out)?;
+    let write = |name: &str, text: String| -> Result<()> {
+        let path = out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("cannot write {}", path.display()))
+    };
+    let md = markdown(args, &evaluator.views, &tuned, &sweep);
+    write("tune.md", md.clone())?;
+    // A typed value, not `json!`: serde then writes the f32 parameters as they are (0.35),
+    // where a JSON value would widen them to f64 first (0.3499999940395355).
+    let file = TuneFile {
+        adapter: gpu.describe(),
+        command: format!(
+            "aokit {}",
+            std::env::args().skip(1).collect::<Vec<_>>().join(" ")
+        ),
+        size: args.size,
+        spp: args.spp,
+        views: evaluator.views.iter().map(|v| v.name.clone()).collect(),
+        results: &tuned,
+        power_sweep: sweep
+            .iter()
+            .map(|(m, mse)| PowerSweep {
+                method: m.name(),
+                power: POWER_SWEEP,
+                rmse: mse.iter().map(|m| m.sqrt()).collect(),
+            })
+            .collect(),
+    };
+    write("tune.json", serde_json::to_string_pretty(&file)? + "\n")?;
+    let mut csv = String::from(
+        "method,preset,directions,steps,step_power,falloff,knob,power,radius_multiplier,rmse\n",
+    );
+    for (method, preset, c, mse) in &evaluator.log {
+        csv.push_str(&format!(
+            "{},{},{},{},{},{},{},{},{},{:.6}\n",
+            method.name(),
+            preset.name(),
+            c.split[0],
+            c.split[1],
+            c.step_power,
+            c.falloff,
+            c.knob,
+            c.power,
+            c.radius_multiplier,
+            mse.sqrt()
+        ));
+    }
+    write("evaluations.csv", csv)?;
+    print!("{md}");
+    println!(
+        "wrote tune.md, tune.json and evaluations.csv ({} evaluations) to {}",
+        evaluator.log.len(),
+        out.display()
+    );
+    Ok(())
+}

@@ -1,0 +1,118 @@
+//! `aokit tune`: it runs, never makes a preset worse, and the presets the library ships are
+//! the table it wrote (docs/tuning.json).
+
+use std::path::Path;
+use std::process::Command;
+
+use aokit::{AoSettings, Method, Preset};
+use serde_json::Value;
+
+#[test]
+fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
+        .args([
+            "tune",
+            "--view",
+            "room",
+            "--size",
+            "64x36",
+            "--spp",
+            "16",
+            "--methods",
+            "gtao,hbao,hbao-plus",
+            "--presets",
+            "low",
+            "--rounds",
+            "1",
+            "--out",
+            "t",
+            "--cache",
+            "cache",
+        ])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let t = dir.path().join("t");
+    let json: Value =
+        serde_json::from_str(&std::fs::read_to_string(t.join("tune.json")).unwrap()).unwrap();
+    let results = json["results"].as_array().unwrap();
+    assert_eq!(results.len(), 3);
+    for r in results {
+        let (start, tuned) = (
+            r["start_rmse"].as_f64().unwrap(),
+            r["tuned_rmse"].as_f64().unwrap(),
+        );
+        assert!(tuned <= start && tuned > 0.0, "{r}");
+    }
+    // hbao-plus runs on hbao's directions and steps.
+    assert_eq!(results[2]["tuned"]["split"], results[1]["tuned"]["split"]);
+    assert_eq!(json["power_sweep"].as_array().unwrap().len(), 3);
+    let csv = std::fs::read_to_string(t.join("evaluations.csv")).unwrap();
+    assert!(csv.lines().count() > 20, "{csv}");
+    assert!(
+        std::fs::read_to_string(t.join("tune.md"))
+            .unwrap()
+            .contains("| `gtao` | low |")
+    );
+}
+
+#[test]
+fn the_presets_are_the_tuning_table() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/tuning.json");
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let results = json["results"].as_array().unwrap();
+    // Every method but ssao-crytek, whose presets keep their published form.
+    assert_eq!(results.len(), (Method::ALL.len() - 1) * Preset::ALL.len());
+    for preset in Preset::ALL {
+        let crytek = AoSettings::preset(Method::SsaoCrytek, preset);
+        assert_eq!(
+            (crytek.power, crytek.falloff, crytek.radius_multiplier),
+            (1.0, 0.0, 1.0)
+        );
+    }
+    for r in results {
+        let method: Method = r["method"].as_str().unwrap().parse().unwrap();
+        let preset: Preset = r["preset"].as_str().unwrap().parse().unwrap();
+        let s = AoSettings::preset(method, preset);
+        let tuned = &r["tuned"];
+        let value = |key: &str| tuned[key].as_f64().unwrap() as f32;
+        let what = format!("{} {}", method.name(), preset.name());
+        assert_eq!(s.power, value("power"), "{what}: power");
+        assert_eq!(s.falloff, value("falloff"), "{what}: falloff");
+        assert_eq!(s.step_power, value("step_power"), "{what}: step_power");
+        assert_eq!(
+            s.radius_multiplier,
+            value("radius_multiplier"),
+            "{what}: radius multiplier"
+        );
+        let (knob, split) = match method {
+            Method::SsaoCrytek => (s.bias, [s.ssao_crytek.sample_count, 1]),
+            Method::Ssao => (s.bias, [s.ssao.sample_count, 1]),
+            Method::Hbao | Method::HbaoPlus => {
+                (s.angle_bias, [s.hbao.direction_count, s.hbao.step_count])
+            }
+            Method::Gtao => (
+                s.gtao.thickness,
+                [s.gtao.slice_count, s.gtao.steps_per_side],
+            ),
+            Method::Vbao => (
+                s.vbao.thickness,
+                [s.vbao.slice_count, s.vbao.steps_per_side],
+            ),
+        };
+        assert_eq!(knob, value("knob"), "{what}: {}", r["knob"]);
+        let tuned_split: Vec<u32> = tuned["split"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_u64().unwrap() as u32)
+            .collect();
+        assert_eq!(split.to_vec(), tuned_split, "{what}: split");
+    }
+}
