@@ -3,13 +3,13 @@
 use std::path::PathBuf;
 
 use anyhow::Result;
-use aokit::NormalSource;
+use aokit::{NormalSource, NormalSpace};
 use aokit_eval::{write_exr, write_grey_png};
 use aokit_scene::external;
 use clap::Args;
 
 use crate::export::create_dir;
-use crate::passes::{self, DepthKind, NormalSpace};
+use crate::passes::{self, DepthKind};
 use crate::render::{ao_summary, open_gpu};
 use crate::settings_args::SettingsArgs;
 
@@ -27,14 +27,19 @@ pub struct AoArgs {
     /// Whether the depth is linear view depth or depth-buffer values.
     #[arg(long, value_enum, default_value = "linear")]
     pub depth_kind: DepthKind,
-    /// Whether the normals are in view or world space.
-    #[arg(long, value_enum, default_value = "view")]
+    /// Whether the normals are in view or world space (camera.json's `view_from_world` turns
+    /// world-space ones).
+    #[arg(long, default_value = "view", value_parser = parse_normal_space)]
     pub normal_space: NormalSpace,
     #[command(flatten)]
     pub settings: SettingsArgs,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-out")]
     pub out: PathBuf,
+}
+
+fn parse_normal_space(s: &str) -> Result<NormalSpace, String> {
+    s.parse()
 }
 
 pub fn run(args: &AoArgs) -> Result<()> {

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow, bail};
 use aokit::projection::pixel_to_ndc;
-use aokit::{AoSettings, GpuContext, Method, Preset, Projection};
+use aokit::{AoSettings, GpuContext, Method, NormalSpace, Preset, Projection};
 use aokit_eval::report::{MethodResult, Report, ViewResult};
 use aokit_eval::{
     Metrics, compare as score, depth_edge_mask, encode_png_grey, encode_png_rgb, error_map_rgb,
@@ -21,7 +21,7 @@ use serde_json::json;
 use crate::cache;
 use crate::camera_args::CameraArgs;
 use crate::export::create_dir;
-use crate::passes::{self, DepthKind, NormalSpace};
+use crate::passes::{self, DepthKind};
 use crate::reference::ReferenceInfo;
 use crate::render::{open_gpu, parse_size};
 use crate::sequence::{SequenceFrame, score_sequence};

@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
-use aokit::Projection;
+use aokit::{NormalSpace, Projection};
 use aokit_eval::{read_depth, read_normals};
 use aokit_scene::CameraFile;
 use clap::ValueEnum;
@@ -16,15 +16,6 @@ pub enum DepthKind {
     Linear,
     /// Depth-buffer values in [0, 1], in the convention camera.json names.
     Ndc,
-}
-
-/// The space the normal file's vectors are in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum NormalSpace {
-    /// View space: x right, y up, camera looking down -Z.
-    View,
-    /// World space; camera.json's `view_from_world` turns them.
-    World,
 }
 
 /// Passes ready for the AO pipeline.

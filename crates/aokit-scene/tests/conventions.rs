@@ -1,13 +1,17 @@
 //! Every depth convention the pipeline accepts gives the AO of the same scene: perspective with
 //! an infinite far plane in reverse-Z, standard Z with a finite far plane, orthographic; depth
 //! as `Depth32Float`, `Depth24Plus`, `Depth16Unorm` or `R32Float` linear depth, single-sampled
-//! or 4x multisampled (read at sample 0). Each is scored against the reference traced through
-//! the same camera, with one tolerance, and against the `Depth32Float` AO of its camera.
+//! or 4x multisampled (read at sample 0); normals in view or world space. Each is scored
+//! against the reference traced through the same camera, with one tolerance, and against the
+//! `Depth32Float` AO of its camera.
 
 mod common;
 
-use aokit::gpu::read_texture_f32;
-use aokit::{AoInputs, AoPipeline, AoSettings, Method, NormalEncoding, Preset};
+use aokit::gpu::{read_texture, read_texture_f32, upload_texture_2d};
+use aokit::normals::{encode_texels, unpack_oct32};
+use aokit::{
+    AoInputs, AoPipeline, AoSettings, Method, NormalEncoding, NormalSpace, NormalsSettings, Preset,
+};
 use aokit_reference::AoOptions;
 use aokit_scene::{Builtin, Camera, Lens, Renderer, reference};
 use common::{DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, rmse};
@@ -149,6 +153,81 @@ fn every_depth_convention_scores_alike_against_the_reference() {
                 "{} / {format}: {apart} from Depth32Float",
                 camera.name
             );
+        }
+
+        // The same normals in world space, as oct32 and as half floats, turned back into view
+        // space by the pipeline with the camera's rotation.
+        let view_from_world = camera.view_from_world();
+        let view_normals: Vec<u32> = bytemuck::pod_collect_to_vec(
+            &read_texture(&gpu.device, &gpu.queue, &gbuffer.normals).unwrap(),
+        );
+        let world_normals: Vec<Vec3> = view_normals
+            .iter()
+            .map(|&bits| {
+                view_from_world
+                    .inverse()
+                    .transform_vector3(unpack_oct32(bits))
+            })
+            .collect();
+        for encoding in [NormalEncoding::Oct32, NormalEncoding::Rgba16f] {
+            let texture = upload_texture_2d(
+                &gpu.device,
+                &gpu.queue,
+                "world normals",
+                SIZE,
+                encoding.texture_format(),
+                &encode_texels(encoding, &world_normals),
+            )
+            .unwrap();
+            let world_settings = AoSettings {
+                normals: NormalsSettings {
+                    encoding,
+                    space: NormalSpace::World,
+                    ..settings.normals
+                },
+                ..settings
+            };
+            let inputs = AoInputs {
+                normals: Some(&texture),
+                view_from_world,
+                ..AoInputs::new(&gbuffer.depth, projection)
+            };
+            let ao_with = |settings: &AoSettings| {
+                let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, settings).unwrap();
+                encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
+                    read_texture_f32(&gpu.device, &gpu.queue, outputs.ao).unwrap()
+                })
+            };
+            let what = format!("{} / world-space {}", camera.name, encoding.name());
+            let ao = ao_with(&world_settings);
+            // Read as view space, the same normals give other AO wherever the camera turns
+            // away from the world's axes: the rotation is what makes them agree.
+            let (axis, angle) = glam::Quat::from_mat4(&view_from_world).to_axis_angle();
+            if angle.abs() > 0.3 {
+                let as_view = AoSettings {
+                    normals: NormalsSettings {
+                        space: NormalSpace::View,
+                        ..world_settings.normals
+                    },
+                    ..world_settings
+                };
+                let wrong = rmse(&ao_with(&as_view), &baseline, |i| covered[i]);
+                eprintln!("{what}: {wrong:.4} from view-space oct32 when read as view space");
+                assert!(
+                    wrong > 0.01,
+                    "{} turned {angle} about {axis}: {wrong}",
+                    camera.name
+                );
+            }
+            let (error, apart) = (
+                rmse(&ao, &traced.ao, |i| covered[i]),
+                rmse(&ao, &baseline, |i| covered[i]),
+            );
+            eprintln!(
+                "{what}: RMSE {error:.4} against the reference, {apart:.5} against view-space oct32"
+            );
+            assert!(error < TOLERANCE, "{what}: RMSE {error}");
+            assert!(apart < 2e-3, "{what}: {apart} from view-space oct32");
         }
     }
 }

@@ -1,8 +1,16 @@
-// A normal texture in any encoding but oct32 to the oct32 texture the AO kernels read. The program
-// starts with the binding of the encoded texture and its `load_normal`, one per texel type
-// (shader.rs); the `ENCODING` override picks the encoding. Texels are loaded, never filtered.
+// A normal texture in any encoding, or in world space, to the oct32 view-space texture the AO
+// kernels read. The program starts with the binding of the encoded texture and its
+// `load_normal`, one per texel type (shader.rs); the `ENCODING` override picks the encoding.
+// Texels are loaded, never filtered. Mirrors `DecodeUniforms` in uniforms.rs.
+
+struct DecodeUniforms {
+    // Into view space: the identity for view-space normals, the camera's rotation for
+    // world-space ones.
+    to_view: mat3x3<f32>,
+}
 
 @group(0) @binding(2) var decoded: texture_storage_2d<r32uint, write>;
+@group(0) @binding(3) var<uniform> decode: DecodeUniforms;
 
 // `NormalEncoding::shader_code`, one of the ENCODING_* constants.
 override ENCODING: u32;
@@ -10,6 +18,7 @@ override ENCODING: u32;
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if all(id.xy < vec2<u32>(view.size)) {
-        textureStore(decoded, id.xy, vec4<u32>(pack_oct32(load_normal(id.xy)), 0u, 0u, 0u));
+        let n = normalize(decode.to_view * load_normal(id.xy));
+        textureStore(decoded, id.xy, vec4<u32>(pack_oct32(n), 0u, 0u, 0u));
     }
 }

@@ -44,8 +44,9 @@ pub struct AoInputs<'a> {
     /// a surface between foreground and background that occludes both. docs/integration.md
     /// compares the two.
     pub depth: &'a wgpu::Texture,
-    /// View-space unit normals in the encoding [`NormalsSettings::encoding`](crate::NormalsSettings::encoding)
-    /// names (`oct32` by default; [`shader::ENCODING`](crate::shader::ENCODING) has the WGSL to
+    /// Unit normals, in view space or, with [`NormalsSettings::space`](crate::NormalsSettings::space)
+    /// set to world, in world space, in the encoding
+    /// [`NormalsSettings::encoding`](crate::NormalsSettings::encoding) names (`oct32` by default; [`shader::ENCODING`](crate::shader::ENCODING) has the WGSL to
     /// write each one), in a texture of [`NormalEncoding::texture_format`], the depth's size and
     /// `TEXTURE_BINDING` usage. `None` reconstructs them from depth, which is less precise at
     /// edges and on curved surfaces. When [`NormalsSettings::source`](crate::NormalsSettings::source)
@@ -54,7 +55,8 @@ pub struct AoInputs<'a> {
     /// The projection the depth was rendered with.
     pub projection: Projection,
     /// The camera's world-to-view transform this frame. The temporal filter reprojects with
-    /// it and the one this view had last frame; nothing else reads it.
+    /// it and the one this view had last frame, and world-space normals are turned into view
+    /// space with its rotation; nothing else reads it.
     pub view_from_world: Mat4,
     /// Frame counter; it moves the sampling noise from frame to frame.
     pub frame_index: u32,

@@ -35,8 +35,8 @@ pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
     AoSettings, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings, Method,
-    NoiseKind, NoiseSettings, NormalEncoding, NormalSource, NormalsSettings, Preset, Resolution,
-    SettingsError, SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings, Upsample,
-    VbaoSettings,
+    NoiseKind, NoiseSettings, NormalEncoding, NormalSource, NormalSpace, NormalsSettings, Preset,
+    Resolution, SettingsError, SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings,
+    Upsample, VbaoSettings,
 };
 pub use timing::PassTime;

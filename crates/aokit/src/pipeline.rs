@@ -14,7 +14,7 @@ use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
 use crate::passes::resample::{DownsampleTargets, ResamplePass, WORKING_MOTION_FORMAT};
 use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
 use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
-use crate::settings::{AoSettings, FilterResolution, NormalEncoding, NormalSource};
+use crate::settings::{AoSettings, FilterResolution, NormalEncoding, NormalSource, NormalSpace};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
 
@@ -239,8 +239,9 @@ pub struct AoOutputs<'a> {
     pub working_linear_depth: &'a wgpu::Texture,
     /// The view-space normals, oct32 (`R32Uint`, see
     /// [`normals::unpack_oct32`](crate::normals::unpack_oct32)), at the input's size: the input
-    /// texture itself when it is oct32, else the input decoded or the normals reconstructed
-    /// from depth. The kernel read these, or below full resolution the downsample's copy.
+    /// texture itself when it is oct32 in view space, else the input decoded (and turned into
+    /// view space) or the normals reconstructed from depth. The kernel read these, or below
+    /// full resolution the downsample's copy.
     pub normals: &'a wgpu::Texture,
     /// A view of [`AoOutputs::normals`] for binding.
     pub normals_view: &'a wgpu::TextureView,
@@ -326,7 +327,7 @@ impl AoPipeline {
             linear_depth: LinearDepthPass::new(device),
             mask: MaskPass::default(),
             normals_from_depth: NormalsFromDepthPass::new(device),
-            decode_normals: DecodeNormalsPass::default(),
+            decode_normals: DecodeNormalsPass::new(device),
             input_normals_view: None,
             method: MethodPass::new(device, queue, settings),
             denoiser: Denoiser {
@@ -537,11 +538,25 @@ impl AoPipeline {
             .normals
             .filter(|_| source == NormalSource::Buffer)
             .map(|n| n.create_view(&Default::default()));
+        let world = settings.normals.space == NormalSpace::World;
         let (normals, normals_view) = match (inputs.normals, &self.input_normals_view) {
-            (Some(texture), Some(view)) if encoding == NormalEncoding::Oct32 => (texture, view),
+            (Some(texture), Some(view)) if encoding == NormalEncoding::Oct32 && !world => {
+                (texture, view)
+            }
             (_, Some(view)) => {
-                self.decode_normals
-                    .encode(&mut ctx, encoding, view, &targets.normals.1);
+                let to_view = if world {
+                    glam::Mat3::from_mat4(inputs.view_from_world)
+                } else {
+                    glam::Mat3::IDENTITY
+                };
+                self.decode_normals.encode(
+                    &mut ctx,
+                    queue,
+                    encoding,
+                    to_view,
+                    view,
+                    &targets.normals.1,
+                );
                 (&targets.normals.0, &targets.normals.1)
             }
             (_, None) => {

@@ -230,6 +230,27 @@ pub struct NormalsSettings {
     pub encoding: NormalEncoding,
     /// Where the normals come from.
     pub source: NormalSource,
+    /// The space the normal texture's vectors are in.
+    pub space: NormalSpace,
+}
+
+named_enum! {
+    /// The space of the normals a renderer hands in. World-space normals are turned into view
+    /// space with [`AoInputs::view_from_world`](crate::AoInputs::view_from_world) by the decode
+    /// pass, which then runs for every encoding, oct32 included.
+    ///
+    /// ```
+    /// use aokit::NormalSpace;
+    /// assert_eq!("world".parse::<NormalSpace>(), Ok(NormalSpace::World));
+    /// assert_eq!(NormalSpace::default(), NormalSpace::View);
+    /// ```
+    pub enum NormalSpace ("normal space") {
+        /// View space: x right, y up, the camera looking down -Z.
+        #[default]
+        View = "view",
+        /// World space.
+        World = "world",
+    }
 }
 
 named_enum! {

@@ -166,6 +166,23 @@ impl AoUniforms {
     }
 }
 
+/// Mirrors `DecodeUniforms` in `shaders/decode_normals.wgsl`: a `mat3x3<f32>`, each column
+/// padded to 16 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub(crate) struct DecodeUniforms {
+    pub to_view: [[f32; 4]; 3],
+}
+
+impl DecodeUniforms {
+    pub fn new(to_view: glam::Mat3) -> Self {
+        Self {
+            to_view: [to_view.x_axis, to_view.y_axis, to_view.z_axis]
+                .map(|c| c.extend(0.0).to_array()),
+        }
+    }
+}
+
 /// Mirrors `DebugUniforms` in `shaders/debug_view.wgsl`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -357,6 +374,20 @@ mod tests {
                 "AoUniforms",
                 fields,
                 size_of::<AoUniforms>(),
+            )
+            .unwrap();
+        }
+    }
+
+    #[test]
+    fn decode_uniforms_match_wgsl_for_both_texel_types() {
+        let fields = crate::field_offsets!(DecodeUniforms { to_view });
+        for program in [shader::DECODE_NORMALS_UINT, shader::DECODE_NORMALS_FLOAT] {
+            shader::check_layout(
+                &program,
+                "DecodeUniforms",
+                fields,
+                size_of::<DecodeUniforms>(),
             )
             .unwrap();
         }

@@ -1,30 +1,51 @@
-//! Normal textures in any encoding but oct32 decoded to the oct32 texture the kernels read, so
-//! that the kernels stay one program per method whatever the G-buffer holds.
+//! Normal textures in any encoding but oct32, or in world space, decoded to the oct32
+//! view-space texture the kernels read, so that the kernels stay one program per method
+//! whatever the G-buffer holds.
 
 use std::collections::HashMap;
 
+use glam::Mat3;
+
 use super::normals_from_depth::NORMALS_FORMAT;
 use super::{ComputeKernel, PassContext, bind};
+use crate::gpu::create_uniform_buffer;
 use crate::settings::NormalEncoding;
 use crate::shader;
+use crate::uniforms::DecodeUniforms;
 
-/// Decodes a normal texture to oct32.
-#[derive(Default)]
+/// Decodes a normal texture to oct32 in view space.
 pub struct DecodeNormalsPass {
     /// One kernel per encoding, compiled the first time it is used.
     kernels: HashMap<NormalEncoding, ComputeKernel>,
+    uniforms: wgpu::Buffer,
 }
 
 impl DecodeNormalsPass {
-    /// Records the decode of `input`, a texture of `encoding.texture_format()`, into `output`,
-    /// an oct32 storage texture ([`NORMALS_FORMAT`]) of `ctx.size`.
+    /// Makes the settings buffer; the kernels compile when first used.
+    pub fn new(device: &wgpu::Device) -> Self {
+        Self {
+            kernels: HashMap::new(),
+            uniforms: create_uniform_buffer::<DecodeUniforms>(device, "aokit decode normals"),
+        }
+    }
+
+    /// Records the decode of `input`, a texture of `encoding.texture_format()` whose vectors
+    /// `to_view` turns into view space, into `output`, an oct32 storage texture
+    /// ([`NORMALS_FORMAT`]) of `ctx.size`.
     pub fn encode(
         &mut self,
         ctx: &mut PassContext<'_>,
+        queue: &wgpu::Queue,
         encoding: NormalEncoding,
+        to_view: Mat3,
         input: &wgpu::TextureView,
         output: &wgpu::TextureView,
     ) {
+        queue.write_buffer(
+            &self.uniforms,
+            0,
+            bytemuck::bytes_of(&DecodeUniforms::new(to_view)),
+        );
         let kernel = self.kernels.entry(encoding).or_insert_with(|| {
             let (source, sample_type) = if encoding.is_uint() {
                 (shader::DECODE_NORMALS_UINT, wgpu::TextureSampleType::Uint)
@@ -41,6 +62,7 @@ impl DecodeNormalsPass {
                     bind::uniform(0),
                     bind::texture(1, sample_type),
                     bind::storage_texture(2, NORMALS_FORMAT),
+                    bind::uniform(3),
                 ],
                 &[("ENCODING", f64::from(encoding.shader_code()))],
             )
@@ -50,6 +72,7 @@ impl DecodeNormalsPass {
             &[
                 wgpu::BindingResource::TextureView(input),
                 wgpu::BindingResource::TextureView(output),
+                self.uniforms.as_entire_binding(),
             ],
         );
     }
