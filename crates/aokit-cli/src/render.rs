@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use aokit::debug::DebugView;
 use aokit::{AdapterKind, GpuContext};
-use aokit_scene::composite::SpecularOcclusion;
+use aokit_scene::composite::{MultiBounce, SpecularOcclusion};
 use aokit_scene::{CameraPath, Renderer, Scene};
 use clap::Args;
 
@@ -36,10 +36,19 @@ pub struct RenderArgs {
     /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
     #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3)]
     pub sun: Option<glam::Vec3>,
-    /// Multi-bounce AO in lit.png's ambient diffuse light (the default).
-    #[arg(long, overrides_with = "no_multi_bounce")]
-    pub multi_bounce: bool,
-    /// The raw AO in lit.png's ambient diffuse light.
+    /// Multi-bounce AO in lit.png's ambient diffuse light: gtao (Jimenez et al.'s fit, the
+    /// default, also what a bare --multi-bounce means), closed-form (k / (1 - albedo (1 - k)))
+    /// or none (the raw AO).
+    #[arg(
+        long,
+        value_name = "FORM",
+        num_args = 0..=1,
+        default_missing_value = "gtao",
+        value_parser = parse_multi_bounce,
+        overrides_with = "no_multi_bounce"
+    )]
+    pub multi_bounce: Option<MultiBounce>,
+    /// The raw AO in lit.png's ambient diffuse light: --multi-bounce none.
     #[arg(long, overrides_with = "multi_bounce")]
     pub no_multi_bounce: bool,
     /// Specular occlusion in lit.png: none, gtso (bent normals with gtao and vbao) or frostbite
@@ -73,6 +82,10 @@ pub struct RenderArgs {
 }
 
 fn parse_debug_view(s: &str) -> Result<DebugView, String> {
+    s.parse()
+}
+
+fn parse_multi_bounce(s: &str) -> Result<MultiBounce, String> {
     s.parse()
 }
 
@@ -144,11 +157,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         renderer.lighting.sun_direction = sun.normalize();
     }
     let lighting = &mut renderer.lighting;
-    lighting.multi_bounce = match (args.multi_bounce, args.no_multi_bounce) {
-        (_, true) => false,
-        (true, _) => true,
-        _ => lighting.multi_bounce,
-    };
+    // The two flags override each other, so at most one is set: the last given.
+    if args.no_multi_bounce {
+        lighting.multi_bounce = MultiBounce::None;
+    } else if let Some(form) = args.multi_bounce {
+        lighting.multi_bounce = form;
+    }
     if let Some(mode) = args.specular_occlusion {
         lighting.specular_occlusion = mode;
     }

@@ -36,6 +36,8 @@ fn composite_flags_change_the_lit_image_but_not_the_ao() {
     let (ao, lit) = render(dir.path(), "default", &[]);
     let variants: &[&[&str]] = &[
         &["--no-multi-bounce"],
+        &["--multi-bounce", "none"],
+        &["--multi-bounce", "closed-form"],
         &["--specular-occlusion", "none"],
         &["--specular-occlusion", "gtso"],
         &["--roughness", "0.05"],
@@ -45,18 +47,35 @@ fn composite_flags_change_the_lit_image_but_not_the_ao() {
         assert_eq!(other_ao, ao, "{flags:?} changed ao.png");
         assert_ne!(other_lit, lit, "{flags:?} left lit.png as it was");
     }
-    // The defaults spelled out, and the last of two opposite flags winning, change nothing.
+    // The defaults spelled out (a bare --multi-bounce is gtao), and the last of two opposite
+    // flags winning, change nothing.
     for flags in [
         &[
             "--multi-bounce",
+            "gtao",
             "--specular-occlusion",
             "frostbite",
             "--roughness",
             "0.5",
         ][..],
+        &["--multi-bounce", "--roughness", "0.5"][..],
         &["--no-multi-bounce", "--multi-bounce"][..],
+        &[
+            "--multi-bounce",
+            "closed-form",
+            "--no-multi-bounce",
+            "--multi-bounce=gtao",
+        ][..],
     ] {
         assert_eq!(render(dir.path(), "same", flags).1, lit, "{flags:?}");
+    }
+    // --no-multi-bounce is --multi-bounce none, and wins when it comes last.
+    let none = render(dir.path(), "none", &["--multi-bounce", "none"]).1;
+    for flags in [
+        &["--no-multi-bounce"][..],
+        &["--multi-bounce", "closed-form", "--no-multi-bounce"][..],
+    ] {
+        assert_eq!(render(dir.path(), "same", flags).1, none, "{flags:?}");
     }
 }
 
@@ -89,6 +108,7 @@ fn bad_composite_values_exit_2_and_name_the_flag() {
         (&["--roughness", "nan"], "outside [0, 1]"),
         (&["--roughness", "rough"], "not a number"),
         (&["--specular-occlusion", "ssr"], "none, gtso, frostbite"),
+        (&["--multi-bounce", "on"], "none, gtao, closed-form"),
     ];
     for (flags, expected) in cases {
         let mut args = vec!["render", "--size", "8x8"];

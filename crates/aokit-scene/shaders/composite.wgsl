@@ -2,9 +2,15 @@
 //   albedo x (ambient x (1 - F) x diffuse occlusion + shadowed sunlight)
 //     + ambient x F x specular occlusion
 // AO darkens only the ambient terms: direct light has its own visibility, the shadow map.
-// Diffuse occlusion is the AO, or its multi-bounce form; specular occlusion is 1, GTSO or
-// Frostbite's (functions from aokit's occlusion.wgsl). docs/composite.md has the details.
+// Diffuse occlusion is the AO, or a multi-bounce form of it (GTAO's fit or the closed form);
+// specular occlusion is 1, GTSO or Frostbite's (functions from aokit's occlusion.wgsl).
+// docs/composite.md has the details.
 // Mirrors `CompositeUniforms`.
+
+// Values of `CompositeUniforms.multi_bounce`, as `MultiBounce::code` writes them.
+const MB_NONE: u32 = 0u;
+const MB_GTAO: u32 = 1u;
+const MB_CLOSED_FORM: u32 = 2u;
 
 // Values of `CompositeUniforms.specular_occlusion`, as `SpecularOcclusion::code` writes them.
 const SO_NONE: u32 = 0u;
@@ -31,7 +37,7 @@ struct CompositeUniforms {
     orthographic: f32,
     // Perceptual roughness of every surface.
     roughness: f32,
-    // 1: diffuse occlusion is multi_bounce_gtao(AO, albedo); 0: the AO.
+    // One of the MB_* constants.
     multi_bounce: u32,
     // One of the SO_* constants.
     specular_occlusion: u32,
@@ -107,9 +113,17 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         let n_dot_v = saturate(dot(n, v));
         let fresnel = ambient_fresnel(n_dot_v);
 
-        var diffuse_occlusion = vec3<f32>(occlusion);
-        if light.multi_bounce != 0u {
-            diffuse_occlusion = multi_bounce_gtao(occlusion, base);
+        var diffuse_occlusion: vec3<f32>;
+        switch light.multi_bounce {
+            case MB_GTAO: {
+                diffuse_occlusion = multi_bounce_gtao(occlusion, base);
+            }
+            case MB_CLOSED_FORM: {
+                diffuse_occlusion = multi_bounce_closed_form(occlusion, base);
+            }
+            case MB_NONE, default: {
+                diffuse_occlusion = vec3<f32>(occlusion);
+            }
         }
         var specular_occlusion: f32;
         switch light.specular_occlusion {

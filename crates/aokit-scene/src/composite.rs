@@ -43,11 +43,11 @@ pub struct Lighting {
     pub ambient_color: Vec3,
     /// Background colour.
     pub sky_color: Vec3,
-    /// Darken ambient diffuse light with [`multi_bounce_gtao`](aokit::occlusion::multi_bounce_gtao)
-    /// of the AO and the albedo instead of the raw AO: occluded directions show nearby lit
-    /// surfaces, not black, so bright surfaces lose less light. On by default, as in renderers
-    /// that ship GTAO; the raw AO is still what the pipeline returns (`ao.png`).
-    pub multi_bounce: bool,
+    /// How the AO darkens ambient diffuse light: occluded directions show nearby lit surfaces,
+    /// not black, so bright surfaces should lose less light than the raw AO says. GTAO's fit by
+    /// default, as in renderers that ship GTAO; the raw AO is still what the pipeline returns
+    /// (`ao.png`) whatever this is.
+    pub multi_bounce: MultiBounce,
     /// How the AO occludes the ambient specular term.
     pub specular_occlusion: SpecularOcclusion,
     /// Perceptual roughness in `[0, 1]` (GGX `alpha = roughness^2`) of every surface: the
@@ -57,6 +57,80 @@ pub struct Lighting {
     /// Specular reflectance at normal incidence (F0), linear RGB: 0.04 for common dielectrics
     /// (index of refraction 1.5), the metal's colour for metals.
     pub specular_color: Vec3,
+}
+
+/// How the composite turns the AO into the occlusion of ambient diffuse light.
+///
+/// ```
+/// use aokit_scene::composite::{Lighting, MultiBounce};
+/// // As `--multi-bounce` takes it.
+/// let form: MultiBounce = "closed-form".parse()?;
+/// let lighting = Lighting { multi_bounce: form, ..Lighting::default() };
+/// assert_eq!(lighting.multi_bounce.name(), "closed-form");
+/// assert_eq!(Lighting::default().multi_bounce, MultiBounce::Gtao);
+/// assert!("fit".parse::<MultiBounce>().unwrap_err().contains("none, gtao, closed-form"));
+/// # Ok::<(), String>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum MultiBounce {
+    /// The raw AO: occluded directions are black, as AO assumes.
+    None,
+    /// [`multi_bounce_gtao`](aokit::occlusion::multi_bounce_gtao), Jimenez et al.'s fit to
+    /// path-traced interreflections. The default: it was fitted for GTAO's AO on scenes whose
+    /// occluders vary, and stays moderate for bright albedos.
+    #[default]
+    Gtao,
+    /// [`multi_bounce_closed_form`](aokit::occlusion::multi_bounce_closed_form),
+    /// `ao / (1 - albedo (1 - ao))`: exact when the occluders share the shaded point's albedo and
+    /// lighting, and much brighter than the fit in dark corners of bright materials.
+    ClosedForm,
+}
+
+impl MultiBounce {
+    /// Every form, in the order the CLI lists them.
+    pub const ALL: [MultiBounce; 3] = [
+        MultiBounce::None,
+        MultiBounce::Gtao,
+        MultiBounce::ClosedForm,
+    ];
+
+    /// The name used on the command line.
+    ///
+    /// ```
+    /// use aokit_scene::composite::MultiBounce;
+    /// let names: Vec<&str> = MultiBounce::ALL.map(MultiBounce::name).to_vec();
+    /// assert_eq!(names.join(", "), "none, gtao, closed-form");
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            MultiBounce::None => "none",
+            MultiBounce::Gtao => "gtao",
+            MultiBounce::ClosedForm => "closed-form",
+        }
+    }
+
+    /// The form's code in `CompositeUniforms.multi_bounce` (the `MB_*` constants of
+    /// `shaders/composite.wgsl`).
+    fn code(self) -> u32 {
+        match self {
+            MultiBounce::None => 0,
+            MultiBounce::Gtao => 1,
+            MultiBounce::ClosedForm => 2,
+        }
+    }
+}
+
+impl std::str::FromStr for MultiBounce {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Self::ALL
+            .into_iter()
+            .find(|form| form.name() == s)
+            .ok_or_else(|| {
+                let known: Vec<&str> = Self::ALL.iter().map(|f| f.name()).collect();
+                format!("unknown multi-bounce `{s}` (known: {})", known.join(", "))
+            })
+    }
 }
 
 /// How the composite occludes ambient specular light.
@@ -148,7 +222,7 @@ impl Default for Lighting {
             // Ambient strong enough that AO reads clearly in shade, where it is all the light.
             ambient_color: Vec3::new(0.62, 0.67, 0.78),
             sky_color: Vec3::new(0.42, 0.55, 0.75),
-            multi_bounce: true,
+            multi_bounce: MultiBounce::default(),
             specular_occlusion: SpecularOcclusion::default(),
             // Between polished and matte, like painted plaster: the specular occlusion modes
             // differ visibly without the sharp reflections a uniform sky would make look flat.
@@ -335,7 +409,7 @@ impl CompositePass {
                 0.0
             },
             roughness: lighting.roughness,
-            multi_bounce: lighting.multi_bounce.into(),
+            multi_bounce: lighting.multi_bounce.code(),
             specular_occlusion: lighting.specular_occlusion.code(),
             has_bent_normals: ao.bent_normals_view.is_some().into(),
             _pad: 0,
@@ -421,14 +495,22 @@ mod tests {
     }
 
     #[test]
-    fn specular_occlusion_codes_match_wgsl() {
+    fn multi_bounce_names_round_trip() {
+        for form in MultiBounce::ALL {
+            assert_eq!(form.name().parse::<MultiBounce>(), Ok(form));
+        }
+        let err = "on".parse::<MultiBounce>().unwrap_err();
+        assert!(
+            err.contains("`on`") && err.contains("none, gtao, closed-form"),
+            "{err}"
+        );
+    }
+
+    /// Checks that composite.wgsl's `u32` constants hold the codes Rust writes.
+    fn assert_codes_match_wgsl(codes: &[(u32, &str)]) {
         use wgpu::naga;
         let module = shaders::COMPOSITE.validate().unwrap();
-        for (mode, name) in [
-            (SpecularOcclusion::None, "SO_NONE"),
-            (SpecularOcclusion::Gtso, "SO_GTSO"),
-            (SpecularOcclusion::Frostbite, "SO_FROSTBITE"),
-        ] {
+        for &(code, name) in codes {
             let constant = module
                 .constants
                 .iter()
@@ -436,12 +518,26 @@ mod tests {
                 .unwrap_or_else(|| panic!("composite.wgsl has no constant {name}"))
                 .1;
             let value = &module.global_expressions[constant.init];
-            let expected = naga::Expression::Literal(naga::Literal::U32(mode.code()));
-            assert!(
-                *value == expected,
-                "{name} is {value:?}, Rust says {}",
-                mode.code()
-            );
+            let expected = naga::Expression::Literal(naga::Literal::U32(code));
+            assert!(*value == expected, "{name} is {value:?}, Rust says {code}");
         }
+    }
+
+    #[test]
+    fn specular_occlusion_codes_match_wgsl() {
+        assert_codes_match_wgsl(&[
+            (SpecularOcclusion::None.code(), "SO_NONE"),
+            (SpecularOcclusion::Gtso.code(), "SO_GTSO"),
+            (SpecularOcclusion::Frostbite.code(), "SO_FROSTBITE"),
+        ]);
+    }
+
+    #[test]
+    fn multi_bounce_codes_match_wgsl() {
+        assert_codes_match_wgsl(&[
+            (MultiBounce::None.code(), "MB_NONE"),
+            (MultiBounce::Gtao.code(), "MB_GTAO"),
+            (MultiBounce::ClosedForm.code(), "MB_CLOSED_FORM"),
+        ]);
     }
 }

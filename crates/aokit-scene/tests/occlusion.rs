@@ -3,10 +3,13 @@
 
 mod common;
 
-use aokit::occlusion::{multi_bounce_gtao, specular_occlusion_frostbite, specular_occlusion_gtso};
+use aokit::occlusion::{
+    multi_bounce_closed_form, multi_bounce_gtao, specular_occlusion_frostbite,
+    specular_occlusion_gtso,
+};
 use aokit::shader::{OCCLUSION, ShaderSource};
 use aokit::{AoSettings, GpuContext, Method, Preset};
-use aokit_scene::composite::{Lighting, SpecularOcclusion};
+use aokit_scene::composite::{Lighting, MultiBounce, SpecularOcclusion};
 use aokit_scene::{Builtin, Frame, Renderer, Scene};
 use bytemuck::{Pod, Zeroable};
 use common::gpu;
@@ -14,7 +17,7 @@ use glam::{Vec2, Vec3};
 
 const SIZE: [u32; 2] = [192, 128];
 
-/// One evaluation of the three functions; mirrors `Case` in [`KERNEL`].
+/// One evaluation of the four functions; mirrors `Case` in [`KERNEL`].
 #[repr(C)]
 #[derive(Clone, Copy, Pod, Zeroable)]
 struct Case {
@@ -44,10 +47,11 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let ao = c.bent_ao.w;
     let roughness = c.reflection_roughness.w;
     let multi_bounce = multi_bounce_gtao(ao, c.albedo_n_dot_v.xyz);
+    let closed_form = multi_bounce_closed_form(ao, c.albedo_n_dot_v.xyz);
     let frostbite = specular_occlusion_frostbite(c.albedo_n_dot_v.w, ao, roughness);
     let gtso = specular_occlusion_gtso(c.bent_ao.xyz, c.reflection_roughness.xyz, ao, roughness);
     results[2u * i] = vec4<f32>(multi_bounce, frostbite);
-    results[2u * i + 1u] = vec4<f32>(gtso, 0.0, 0.0, 0.0);
+    results[2u * i + 1u] = vec4<f32>(gtso, closed_form);
 }
 "#;
 
@@ -140,11 +144,13 @@ fn wgsl_functions_match_the_cpu_reference() {
         (bent, Vec3::ZERO),
         (Vec3::ZERO, Vec3::ZERO),
     ]);
+    // White albedo at AO 0 is the closed form's 0 / 0.
     let albedos = [
         Vec3::ZERO,
         Vec3::new(0.2, 0.5, 0.9),
         Vec3::ONE,
         Vec3::new(-0.5, 1.5, 0.7),
+        Vec3::new(0.99, 0.8, 1.0),
     ];
     let n_dot_vs = [-0.3, 0.0, 0.2, 0.6, 1.0];
     let mut cases = Vec::new();
@@ -162,12 +168,13 @@ fn wgsl_functions_match_the_cpu_reference() {
         }
     }
     let results = evaluate_on_gpu(&gpu, &cases);
-    let mut worst = [0.0f32; 3];
+    let mut worst = [0.0f32; 4];
     for (case, gpu) in cases.iter().zip(results.chunks_exact(2)) {
         let [bx, by, bz, ao] = case.bent_ao;
         let [rx, ry, rz, roughness] = case.reflection_roughness;
         let [ax, ay, az, n_dot_v] = case.albedo_n_dot_v;
         let cpu_multi_bounce = multi_bounce_gtao(ao, Vec3::new(ax, ay, az));
+        let cpu_closed_form = multi_bounce_closed_form(ao, Vec3::new(ax, ay, az));
         let cpu_frostbite = specular_occlusion_frostbite(n_dot_v, ao, roughness);
         let cpu_gtso =
             specular_occlusion_gtso(Vec3::new(bx, by, bz), Vec3::new(rx, ry, rz), ao, roughness);
@@ -177,6 +184,9 @@ fn wgsl_functions_match_the_cpu_reference() {
                 .max_element(),
             (gpu[0][3] - cpu_frostbite).abs(),
             (gpu[1][0] - cpu_gtso).abs(),
+            (Vec3::from_slice(&gpu[1][1..]) - cpu_closed_form)
+                .abs()
+                .max_element(),
         ];
         for (w, e) in worst.iter_mut().zip(errors) {
             *w = w.max(e);
@@ -185,15 +195,17 @@ fn wgsl_functions_match_the_cpu_reference() {
             errors.iter().all(|&e| e < 1e-4),
             "ao {ao}, roughness {roughness}, bent ({bx}, {by}, {bz}), reflection ({rx}, {ry}, \
              {rz}), albedo ({ax}, {ay}, {az}), n.v {n_dot_v}: GPU {gpu:?}, CPU \
-             {cpu_multi_bounce} {cpu_frostbite} {cpu_gtso}"
+             {cpu_multi_bounce} {cpu_frostbite} {cpu_gtso} {cpu_closed_form}"
         );
     }
     println!(
-        "{} cases; largest GPU-CPU differences: multi-bounce {:.1e}, Frostbite {:.1e}, GTSO {:.1e}",
+        "{} cases; largest GPU-CPU differences: multi-bounce {:.1e}, Frostbite {:.1e}, GTSO \
+         {:.1e}, closed form {:.1e}",
         cases.len(),
         worst[0],
         worst[1],
-        worst[2]
+        worst[2],
+        worst[3]
     );
 }
 
@@ -207,7 +219,7 @@ fn settings_for(scene: &Scene, method: Method) -> AoSettings {
 /// Ambient light only, so the lit image holds the occluded ambient terms and nothing else.
 fn ambient_only(
     specular_occlusion: SpecularOcclusion,
-    multi_bounce: bool,
+    multi_bounce: MultiBounce,
     specular_color: Vec3,
 ) -> Lighting {
     Lighting {
@@ -222,7 +234,7 @@ fn ambient_only(
 /// Pure specular (F0 = 1 makes the Fresnel term 1 at every angle) with ambient light only: the
 /// lit image's blue channel is `ambient.b x specular occlusion`.
 fn specular_only(mode: SpecularOcclusion) -> Lighting {
-    ambient_only(mode, false, Vec3::ONE)
+    ambient_only(mode, MultiBounce::None, Vec3::ONE)
 }
 
 fn render(
@@ -293,56 +305,53 @@ fn multi_bounce_brightens_occluded_pixels_and_leaves_open_ones_alone() {
     let gpu = gpu();
     let scene = Builtin::Room.build();
     let settings = settings_for(&scene, Method::Gtao);
-    let off = render(
-        &gpu,
-        &scene,
-        &settings,
-        ambient_only(SpecularOcclusion::None, false, Vec3::ZERO),
-    )
-    .1;
-    let on = render(
-        &gpu,
-        &scene,
-        &settings,
-        ambient_only(SpecularOcclusion::None, true, Vec3::ZERO),
-    )
-    .1;
-    assert_eq!(on.ao, off.ao, "multi-bounce must not change the AO itself");
-    let open = |i: usize| on.linear_depth[i] > 0.0 && on.ao[i] >= 0.999;
-    assert!((0..on.ao.len()).filter(|&i| open(i)).count() > 1000);
-    assert!(
-        lit_difference(&on, &off, open) <= 1,
-        "multi-bounce changed unoccluded pixels"
-    );
-    // Never darker anywhere.
-    for i in 0..on.ao.len() {
-        for c in 0..3 {
-            assert!(
-                on.lit[4 * i + c] >= off.lit[4 * i + c],
-                "pixel {i} darkened"
-            );
-        }
-    }
-    // In the corner, lit grows by multi_bounce(ao, albedo) / ao in linear light. The albedo is
-    // read back from the plain image: lit = albedo x ambient x (1 - F) x ao, with F the
-    // roughness-aware Schlick term for F0 = 0.
-    let i = pixel_of(&on, CORNER);
-    let ao = on.ao[i];
+    let ambient = |form| ambient_only(SpecularOcclusion::None, form, Vec3::ZERO);
+    let off = render(&gpu, &scene, &settings, ambient(MultiBounce::None)).1;
+    let i = pixel_of(&off, CORNER);
+    let ao = off.ao[i];
     assert!(ao < 0.6, "corner AO {ao}");
-    let n_dot_v = on.normals[i].dot(view_direction(&on, i)).clamp(0.0, 1.0);
+    // The albedo is read back from the plain image: lit = albedo x ambient x (1 - F) x ao, with
+    // F the roughness-aware Schlick term for F0 = 0.
+    let n_dot_v = off.normals[i].dot(view_direction(&off, i)).clamp(0.0, 1.0);
     let fresnel = (1.0 - Lighting::default().roughness) * (1.0 - n_dot_v).powi(5);
-    let ambient = Lighting::default().ambient_color;
     let plain = Vec3::from_array([0, 1, 2].map(|c| srgb_to_linear(off.lit[4 * i + c])));
-    let albedo = plain / (ambient * (1.0 - fresnel) * ao);
-    let brightened = Vec3::from_array([0, 1, 2].map(|c| srgb_to_linear(on.lit[4 * i + c])));
-    let gain = brightened / plain;
-    let predicted = multi_bounce_gtao(ao, albedo) / ao;
-    assert!(
-        gain.min_element() > 1.1 && ((gain - predicted) / predicted).abs().max_element() < 0.05,
-        "corner (AO {ao}, albedo {albedo}): lit grew by {gain}, the fit predicts {predicted}"
-    );
-    let floor = pixel_of(&on, OPEN_FLOOR);
-    assert!(on.lit[4 * floor + 1].abs_diff(off.lit[4 * floor + 1]) <= 1);
+    let albedo = plain / (Lighting::default().ambient_color * (1.0 - fresnel) * ao);
+    let open = |i: usize| off.linear_depth[i] > 0.0 && off.ao[i] >= 0.999;
+    assert!((0..off.ao.len()).filter(|&i| open(i)).count() > 1000);
+    let floor = pixel_of(&off, OPEN_FLOOR);
+    for (form, predicted) in [
+        (MultiBounce::Gtao, multi_bounce_gtao(ao, albedo) / ao),
+        (
+            MultiBounce::ClosedForm,
+            multi_bounce_closed_form(ao, albedo) / ao,
+        ),
+    ] {
+        let on = render(&gpu, &scene, &settings, ambient(form)).1;
+        let name = form.name();
+        assert_eq!(on.ao, off.ao, "{name} must not change the AO itself");
+        assert!(
+            lit_difference(&on, &off, open) <= 1,
+            "{name} changed unoccluded pixels"
+        );
+        // Never darker anywhere.
+        for i in 0..on.ao.len() {
+            for c in 0..3 {
+                assert!(
+                    on.lit[4 * i + c] >= off.lit[4 * i + c],
+                    "{name}: pixel {i} darkened"
+                );
+            }
+        }
+        // In the corner, lit grows by multi_bounce(ao, albedo) / ao in linear light.
+        let brightened = Vec3::from_array([0, 1, 2].map(|c| srgb_to_linear(on.lit[4 * i + c])));
+        let gain = brightened / plain;
+        assert!(
+            gain.min_element() > 1.1 && ((gain - predicted) / predicted).abs().max_element() < 0.05,
+            "{name} in the corner (AO {ao}, albedo {albedo}): lit grew by {gain}, the CPU \
+             function predicts {predicted}"
+        );
+        assert!(on.lit[4 * floor + 1].abs_diff(off.lit[4 * floor + 1]) <= 1);
+    }
 }
 
 #[test]

@@ -3,9 +3,10 @@
 //! AO is the cosine-weighted visibility of the hemisphere: right for diffuse light that arrives
 //! from every direction and reaches nothing else. Two corrections make it usable in a lit image:
 //!
-//! - [`multi_bounce_gtao`]: occluded directions are not black in a real scene, they show nearby
-//!   surfaces that reflect light; bright surfaces should lose less light to occlusion than dark
-//!   ones.
+//! - [`multi_bounce_gtao`] and [`multi_bounce_closed_form`]: occluded directions are not black in
+//!   a real scene, they show nearby surfaces that reflect light; bright surfaces should lose less
+//!   light to occlusion than dark ones. The first is a fit to path-traced data, the second an
+//!   analytic model; `docs/composite.md` plots them against each other.
 //! - [`specular_occlusion_frostbite`] and [`specular_occlusion_gtso`]: the specular lobe is
 //!   narrow and points along the reflection vector, so its visibility differs from AO's.
 //!
@@ -16,7 +17,8 @@
 //!
 //! ```
 //! use aokit::occlusion::{
-//!     multi_bounce_gtao, specular_occlusion_frostbite, specular_occlusion_gtso,
+//!     multi_bounce_closed_form, multi_bounce_gtao, specular_occlusion_frostbite,
+//!     specular_occlusion_gtso,
 //! };
 //! use glam::Vec3;
 //!
@@ -24,6 +26,9 @@
 //! let white = multi_bounce_gtao(0.5, Vec3::ONE);
 //! let black = multi_bounce_gtao(0.5, Vec3::ZERO);
 //! assert!(white.x > 0.75 && (black.x - 0.5).abs() < 1e-4);
+//! // The closed form agrees for black surroundings and, here, gives white ones all of it back.
+//! assert_eq!(multi_bounce_closed_form(0.5, Vec3::ZERO).x, 0.5);
+//! assert_eq!(multi_bounce_closed_form(0.5, Vec3::ONE).x, 1.0);
 //!
 //! // Specular occlusion: an unoccluded point keeps all of its reflection...
 //! assert_eq!(specular_occlusion_frostbite(0.7, 1.0, 0.3), 1.0);
@@ -77,6 +82,51 @@ pub fn multi_bounce_gtao(visibility: f32, albedo: Vec3) -> Vec3 {
     let c = 2.7552 * albedo + 0.6903;
     (((a * x + b) * x + c) * x)
         .max(Vec3::splat(x))
+        .min(Vec3::ONE)
+}
+
+/// Multi-bounce AO in closed form: the visibility a surface of `albedo` effectively has when the
+/// occluded directions show surfaces like itself, per colour channel, in `[visibility, 1]`:
+///
+/// ```text
+/// k' = k / (1 - albedo (1 - k))
+/// ```
+///
+/// The interreflection correction of *Real-Time Rendering*, 4th ed. (Akenine-Möller et al.
+/// 2018), chapter 11, as seed 001 (its section on interreflection, 相互反射) gives it. In a
+/// Lambertian scene under uniform light, the surfaces a point sees tend to have about its own
+/// radiance; taking the radiance of the occluded fraction `1 - k` of the hemisphere to be the
+/// point's outgoing radiance `albedo E / pi` gives `E = pi k L + albedo (1 - k) E`, whose
+/// solution is the sky's share `pi k L` times the geometric series of bounces
+/// `sum_n (albedo (1 - k))^n`.
+///
+/// Unlike [`multi_bounce_gtao`] nothing is fitted, so it is exact where its assumption holds,
+/// and it grows quickly towards 1 as `albedo` nears 1: white surroundings lose nothing after
+/// infinitely many bounces. `visibility` and `albedo` are clamped to `[0, 1]` (NaN to 0);
+/// `visibility` 0 gives 0 for any albedo (no light gets in to bounce).
+///
+/// ```
+/// use aokit::occlusion::multi_bounce_closed_form;
+/// use glam::Vec3;
+/// let albedo = Vec3::new(0.8, 0.5, 0.1);
+/// // Unoccluded points keep their lighting; black surroundings return nothing.
+/// assert_eq!(multi_bounce_closed_form(1.0, albedo), Vec3::ONE);
+/// assert_eq!(multi_bounce_closed_form(0.3, Vec3::ZERO), Vec3::splat(0.3));
+/// // Bounced light only ever adds, and more of it for brighter channels.
+/// let k = multi_bounce_closed_form(0.3, albedo);
+/// assert!(k.cmpge(Vec3::splat(0.3)).all() && k.x > k.y && k.y > k.z);
+/// // 0.3 / (1 - 0.5 x 0.7) = 0.4615...
+/// assert!((k.y - 0.3 / 0.65).abs() < 1e-6);
+/// ```
+pub fn multi_bounce_closed_form(visibility: f32, albedo: Vec3) -> Vec3 {
+    let k = saturate(visibility);
+    let albedo = albedo.map(saturate);
+    // (1 - a) + a k rather than 1 - a (1 - k): for white albedo and tiny k the latter cancels to
+    // 0 in f32. It is >= k, so the quotient is at most 1 but for rounding; the floor only guards
+    // 0 / 0 (k = 0, white albedo), which gives 0.
+    let denominator = ((Vec3::ONE - albedo) + albedo * k).max(Vec3::splat(f32::MIN_POSITIVE));
+    (Vec3::splat(k) / denominator)
+        .max(Vec3::splat(k))
         .min(Vec3::ONE)
 }
 
@@ -226,6 +276,90 @@ mod tests {
     }
 
     #[test]
+    fn closed_form_limits() {
+        for albedo in GRID {
+            let albedo = Vec3::splat(albedo);
+            assert_eq!(multi_bounce_closed_form(1.0, albedo), Vec3::ONE);
+            assert_eq!(multi_bounce_closed_form(0.0, albedo), Vec3::ZERO);
+            let mut last = Vec3::ZERO;
+            for x in GRID {
+                let m = multi_bounce_closed_form(x, albedo);
+                assert!(m.cmpge(Vec3::splat(x)).all() && m.cmple(Vec3::ONE).all());
+                assert!(m.cmpge(last).all(), "not monotone in the visibility at {x}");
+                last = m;
+            }
+        }
+        for x in GRID {
+            assert_eq!(multi_bounce_closed_form(x, Vec3::ZERO), Vec3::splat(x));
+            // White surroundings give back everything that got in, however little.
+            if x > 0.0 {
+                assert_eq!(multi_bounce_closed_form(x, Vec3::ONE), Vec3::ONE);
+            }
+        }
+        assert_eq!(multi_bounce_closed_form(1e-7, Vec3::ONE), Vec3::ONE);
+        // By hand: 0.25 / (1 - 0.8 x 0.75) = 0.625; 0.5 / (1 - 0.5 x 0.5) = 2/3.
+        let m = multi_bounce_closed_form(0.25, Vec3::new(0.8, 0.0, 0.0));
+        assert!((m.x - 0.625).abs() < 1e-6 && m.y == 0.25);
+        assert!((multi_bounce_closed_form(0.5, Vec3::splat(0.5)).x - 2.0 / 3.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn closed_form_sums_the_bounces() {
+        // The closed form is the limit of bouncing light around explicitly: each bounce returns
+        // the fraction albedo (1 - k) of the previous one from the occluded directions.
+        for x in [0.1, 0.4, 0.8] {
+            for albedo in [0.2, 0.6, 0.9] {
+                let (mut bounce, mut total) = (x, 0.0);
+                for _ in 0..400 {
+                    total += bounce;
+                    bounce *= albedo * (1.0 - x);
+                }
+                let m = multi_bounce_closed_form(x, Vec3::splat(albedo)).x;
+                assert!((m - total).abs() < 1e-5, "{x}, {albedo}: {m} vs {total}");
+            }
+        }
+    }
+
+    /// Largest `closed form - fit` over visibilities and albedos in steps of 0.01, albedo up to
+    /// `max_albedo`, with where it happens: (difference, visibility, albedo).
+    fn largest_difference(max_albedo: f32) -> (f32, f32, f32) {
+        let mut worst = (0.0f32, 0.0, 0.0);
+        for i in 0..=100 {
+            for j in 0..=(max_albedo * 100.0).round() as i32 {
+                let (x, albedo) = (i as f32 / 100.0, Vec3::splat(j as f32 / 100.0));
+                let d = (multi_bounce_closed_form(x, albedo) - multi_bounce_gtao(x, albedo)).x;
+                if d.abs() > worst.0.abs() {
+                    worst = (d, x, albedo.x);
+                }
+            }
+        }
+        worst
+    }
+
+    #[test]
+    fn closed_form_against_the_gtao_fit() {
+        // Both are the visibility itself for black surroundings, within the fit's 1e-5.
+        for i in 0..=1000 {
+            let x = i as f32 / 1000.0;
+            let d = multi_bounce_closed_form(x, Vec3::ZERO) - multi_bounce_gtao(x, Vec3::ZERO);
+            assert!(d.abs().max_element() < 1e-5, "{x}: {d}");
+        }
+        // Up to albedo 0.5 they stay within 0.025 of each other; above, the closed form's
+        // infinitely many same-albedo bounces brighten dark, bright corners far more than the
+        // fitted data did. The figures docs/composite.md quotes:
+        let everywhere = largest_difference(1.0);
+        let up_to_08 = largest_difference(0.8);
+        let up_to_05 = largest_difference(0.5);
+        println!(
+            "closed form - GTAO fit, largest: {everywhere:?} (albedo <= 1), \
+             {up_to_08:?} (<= 0.8), {up_to_05:?} (<= 0.5)"
+        );
+        assert!(up_to_05.0.abs() < 0.025, "{up_to_05:?}");
+        assert!((up_to_08.0 - 0.1025).abs() < 1e-3, "{up_to_08:?}");
+        assert!((everywhere.0 - 0.966).abs() < 1e-3, "{everywhere:?}");
+    }
+
+    #[test]
     fn frostbite_bounds_and_monotonicity() {
         for n_dot_v in GRID {
             for roughness in GRID {
@@ -336,10 +470,13 @@ mod tests {
                         assert!((0.0..=1.0).contains(&so), "{b} {r} {ao} {roughness}: {so}");
                         let fb = specular_occlusion_frostbite(ao, roughness, ao);
                         assert!((0.0..=1.0).contains(&fb), "{ao} {roughness}: {fb}");
-                        let m = multi_bounce_gtao(ao, b);
-                        assert!(
-                            m.is_finite() && m.cmpge(Vec3::ZERO).all() && m.cmple(Vec3::ONE).all()
-                        );
+                        for m in [multi_bounce_gtao(ao, b), multi_bounce_closed_form(ao, b)] {
+                            assert!(
+                                m.is_finite()
+                                    && m.cmpge(Vec3::ZERO).all()
+                                    && m.cmple(Vec3::ONE).all()
+                            );
+                        }
                     }
                 }
             }
