@@ -35,6 +35,7 @@ mod options;
 mod render;
 mod sampling;
 mod tracer;
+mod watertight;
 
 pub use camera::{Lens, PixelCamera, PrimaryRay};
 pub use error::ReferenceError;

@@ -10,6 +10,7 @@ use obvhs::ray::{Ray, RayHit};
 use obvhs::triangle::Triangle;
 
 use crate::ReferenceError;
+use crate::watertight::Shear;
 
 /// The closest surface along a ray.
 ///
@@ -158,11 +159,11 @@ impl Tracer {
         t_max: f32,
     ) -> Option<Hit> {
         let ray = Ray::new(origin.into(), direction.into(), t_min, t_max);
+        let shear = Shear::new(origin, direction);
         let mut hit = RayHit::none();
-        if !self
-            .bvh
-            .ray_traverse(ray, &mut hit, |ray, i| self.triangles[i].intersect(ray))
-        {
+        if !self.bvh.ray_traverse(ray, &mut hit, |ray, i| {
+            shear.intersect(&self.triangles[i], ray)
+        }) {
             return None;
         }
         let tri = &self.triangles[hit.primitive_id as usize];
@@ -196,9 +197,12 @@ impl Tracer {
     /// ```
     pub fn hit_distance(&self, origin: Vec3, direction: Vec3, t_max: f32) -> Option<f32> {
         let ray = Ray::new(origin.into(), direction.into(), 0.0, t_max);
+        let shear = Shear::new(origin, direction);
         let mut hit = RayHit::none();
         self.bvh
-            .ray_traverse(ray, &mut hit, |ray, i| self.triangles[i].intersect(ray))
+            .ray_traverse(ray, &mut hit, |ray, i| {
+                shear.intersect(&self.triangles[i], ray)
+            })
             .then_some(hit.t)
     }
 
@@ -218,9 +222,10 @@ impl Tracer {
     /// ```
     pub fn occluded(&self, origin: Vec3, direction: Vec3, t_max: f32) -> bool {
         let ray = Ray::new(origin.into(), direction.into(), 0.0, t_max);
+        let shear = Shear::new(origin, direction);
         !self
             .bvh
-            .ray_traverse_miss(ray, |ray, i| self.triangles[i].intersect(ray))
+            .ray_traverse_miss(ray, |ray, i| shear.intersect(&self.triangles[i], ray))
     }
 }
 
