@@ -12,9 +12,8 @@ use aokit::normals::{encode_texels, unpack_oct32};
 use aokit::{
     AoInputs, AoPipeline, AoSettings, Method, NormalEncoding, NormalSpace, NormalsSettings, Preset,
 };
-use aokit_reference::AoOptions;
-use aokit_scene::{Builtin, Camera, Lens, Renderer, reference};
-use common::{DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, rmse};
+use aokit_scene::{Builtin, Camera, Lens, Renderer};
+use common::{DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, rmse, trace};
 use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
@@ -35,7 +34,6 @@ fn every_depth_convention_scores_alike_against_the_reference() {
         ..AoSettings::preset(Method::Gtao, Preset::High)
     };
     let mut renderer = Renderer::new(&gpu, &scene, &settings).unwrap();
-    let tracer = reference::tracer(&scene).unwrap();
     let cameras = [
         Camera {
             name: "reverse-z, infinite far".into(),
@@ -65,17 +63,7 @@ fn every_depth_convention_scores_alike_against_the_reference() {
         let (gbuffer, projection) = renderer
             .render_gbuffer(&gpu, camera, SIZE, NormalEncoding::Oct32)
             .unwrap();
-        let traced = tracer
-            .render(
-                &reference::pixel_camera(&scene, camera, SIZE),
-                &AoOptions {
-                    radius,
-                    spp: 128,
-                    ..Default::default()
-                },
-                &|_| {},
-            )
-            .unwrap();
+        let traced = trace(&scene, camera, SIZE, 128);
         let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
         let mut ao_of = |depth: &wgpu::Texture| {
             let inputs = AoInputs {

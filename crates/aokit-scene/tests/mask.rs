@@ -4,7 +4,7 @@
 
 mod common;
 
-use aokit::gpu::{read_texture_f32, upload_texture_2d};
+use aokit::gpu::{create_texture_2d, read_texture_f32, upload_texture_2d};
 use aokit::{
     AoError, AoInputs, AoMask, AoPipeline, AoSettings, InputError, Method, NormalEncoding, Preset,
     Resolution,
@@ -109,21 +109,14 @@ fn masked_pixels_keep_ao_1_and_the_others_are_untouched() {
 fn masks_the_pipeline_cannot_use_are_refused_naming_the_problem() {
     let gpu = gpu();
     let (device, queue) = (&gpu.device, &gpu.queue);
-    let texture = |format, size: [u32; 2]| {
-        device.create_texture(&wgpu::TextureDescriptor {
-            label: None,
-            size: wgpu::Extent3d {
-                width: size[0],
-                height: size[1],
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
+    let texture = |format, size| {
+        create_texture_2d(
+            device,
+            "mask",
+            size,
             format,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
-        })
+            wgpu::TextureUsages::TEXTURE_BINDING,
+        )
     };
     let depth = texture(wgpu::TextureFormat::Depth32Float, SIZE);
     let rgba = texture(wgpu::TextureFormat::Rgba8Unorm, SIZE);

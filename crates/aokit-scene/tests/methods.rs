@@ -3,9 +3,8 @@
 mod common;
 
 use aokit::{AoSettings, GpuContext, Method, NoiseKind, NoiseSettings, Preset, TemporalOffset};
-use aokit_reference::AoOptions;
-use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene, reference};
-use common::gpu;
+use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
+use common::{gpu, trace};
 use glam::{Vec2, Vec3};
 
 const SIZE: [u32; 2] = [160, 96];
@@ -259,19 +258,7 @@ fn bent_normals_follow_the_normal_on_open_ground_and_lean_out_of_corners() {
 /// RMSE of each method's AO against a small ray-traced reference of the same view.
 fn rmse_against_reference(gpu: &GpuContext, scene: &Scene, methods: &[Method]) -> Vec<f64> {
     let camera = &scene.cameras[0];
-    let options = AoOptions {
-        radius: scene.suggested_radius.unwrap(),
-        spp: 128,
-        ..Default::default()
-    };
-    let traced = reference::tracer(scene)
-        .unwrap()
-        .render(
-            &reference::pixel_camera(scene, camera, SIZE),
-            &options,
-            &|_| {},
-        )
-        .unwrap();
+    let traced = trace(scene, camera, SIZE, 128);
     methods
         .iter()
         .map(|&method| {

@@ -13,9 +13,8 @@ mod common;
 
 use aokit::gpu::{read_texture, read_texture_f32, upload_texture_2d};
 use aokit::{AoInputs, AoPipeline, AoSettings, Method, NormalEncoding, Preset};
-use aokit_reference::AoOptions;
-use aokit_scene::{Builtin, Renderer, reference};
-use common::{encode_frame, gpu, linear_depth_texture, rmse};
+use aokit_scene::{Builtin, Renderer};
+use common::{encode_frame, gpu, linear_depth_texture, rmse, trace};
 
 const SIZE: [u32; 2] = [160, 96];
 /// The conventions test's tolerance.
@@ -104,18 +103,7 @@ fn every_depth_resolve_stays_within_the_tolerance() {
         );
         let fine_normals: Vec<u32> =
             bytemuck::cast_slice(&read_texture(device, queue, &gbuffer.normals).unwrap()).to_vec();
-        let traced = reference::tracer(&scene)
-            .unwrap()
-            .render(
-                &reference::pixel_camera(&scene, camera, fine_size),
-                &AoOptions {
-                    radius,
-                    spp: 64,
-                    ..Default::default()
-                },
-                &|_| {},
-            )
-            .unwrap();
+        let traced = trace(&scene, camera, fine_size, 64);
         // What the resolved image shows: the mean AO of the samples that have a surface.
         let target: Vec<f32> = (0..pixels)
             .map(|i| {

@@ -11,9 +11,8 @@ use aokit::{
     AoInputs, AoPipeline, AoSettings, Downsample, FilterResolution, GpuContext, Method, Preset,
     Resolution, Upsample,
 };
-use aokit_reference::AoOptions;
-use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene, reference};
-use common::{encode_frame, gpu, linear_depth_texture, rmse};
+use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene};
+use common::{encode_frame, gpu, linear_depth_texture, rmse, trace};
 use glam::{Vec2, Vec3};
 
 /// A frame's depth, normals and motion vectors as a renderer hands them to the pipeline.
@@ -313,18 +312,7 @@ fn half_resolution_with_both_filters_stays_close_to_full_resolution() {
         let camera: &Camera = &scene.cameras[0];
         let frame = frames(&gpu, &scene, CameraPath::Still, 1, size).remove(0);
         let inputs = Inputs::new(&gpu, frame, None);
-        let traced = reference::tracer(&scene)
-            .unwrap()
-            .render(
-                &reference::pixel_camera(&scene, camera, size),
-                &AoOptions {
-                    radius: scene.suggested_radius.unwrap(),
-                    spp: 256,
-                    ..Default::default()
-                },
-                &|_| {},
-            )
-            .unwrap();
+        let traced = trace(&scene, camera, size, 256);
         let ao = |resolution, filtered: bool| {
             let mut settings = AoSettings {
                 radius: scene.suggested_radius.unwrap(),

@@ -4,9 +4,9 @@ mod common;
 
 use aokit::gpu::read_texture_f32;
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset};
-use aokit_reference::{AoOptions, ReferenceImage};
-use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene, reference};
-use common::{encode_frame, gpu, linear_depth_texture};
+use aokit_reference::ReferenceImage;
+use aokit_scene::{Builtin, CameraPath, Frame, Renderer, Scene};
+use common::{encode_frame, gpu, linear_depth_texture, trace_at};
 
 const SIZE: [u32; 2] = [160, 96];
 
@@ -82,23 +82,6 @@ fn a_still_camera_flickers_at_least_five_times_less() {
     );
 }
 
-/// A ray-traced reference of `camera`'s view of the scene at `time`.
-fn trace(scene: &Scene, camera: &Camera, time: f32) -> ReferenceImage {
-    let options = AoOptions {
-        radius: scene.suggested_radius.unwrap(),
-        spp: 128,
-        ..Default::default()
-    };
-    reference::tracer_at(scene, time)
-        .unwrap()
-        .render(
-            &reference::pixel_camera(scene, camera, SIZE),
-            &options,
-            &|_| {},
-        )
-        .unwrap()
-}
-
 /// RMSE of `frame` against `traced` over the pixels with a surface that `keep` keeps.
 fn rmse(frame: &Frame, traced: &ReferenceImage, keep: impl Fn(usize) -> bool) -> f64 {
     common::rmse(&frame.ao, &traced.ao, |i| {
@@ -113,7 +96,7 @@ fn a_moving_camera_stays_closer_to_the_reference_than_single_frames() {
     for path in [CameraPath::Orbit, CameraPath::Strafe, CameraPath::Dolly] {
         let raw = sequence(&gpu, &scene, path, 10, false);
         let filtered = sequence(&gpu, &scene, path, 10, true);
-        let traced = trace(&scene, &path.at(&scene.cameras[0], 1.0), 0.0);
+        let traced = trace_at(&scene, 0.0, &path.at(&scene.cameras[0], 1.0), SIZE, 128);
         let (raw, filtered) = (
             rmse(&raw[9], &traced, |_| true),
             rmse(&filtered[9], &traced, |_| true),
@@ -166,7 +149,7 @@ fn moving_parts_leave_no_trail() {
             render_sequence(&gpu, &mut renderer, &scene, CameraPath::Still, 10, true)
         };
         let (raw, filtered, camera_only) = (run(false, true), run(true, true), run(true, false));
-        let traced = trace(&scene, &scene.cameras[0], 1.0);
+        let traced = trace_at(&scene, 1.0, &scene.cameras[0], SIZE, 128);
         // The camera stands still, so the pixels with motion show the moving part. Around it,
         // over the history's length of about 1 / (1 - blend) = 5 frames, lies where a trail
         // would be.

@@ -92,18 +92,19 @@ fn load_ndc(pixel: vec2<u32>) -> f32 {
     return textureLoad(depth_ndc, pixel, 0);
 }";
 
-/// Binding 1 of `import_depth`: single-sampled linear depth.
-const DEPTH_LINEAR: &str = "
-@group(0) @binding(1) var depth_in: texture_2d<f32>;
-fn load_depth(pixel: vec2<u32>) -> f32 {
-    return textureLoad(depth_in, pixel, 0).r;
+/// Binding 1 of `import_depth` and of `apply_mask` with a mask texture: the first channel of a
+/// single-sampled float texture.
+const FLOAT_INPUT: &str = "
+@group(0) @binding(1) var input_texture: texture_2d<f32>;
+fn load_input(pixel: vec2<u32>) -> f32 {
+    return textureLoad(input_texture, pixel, 0).r;
 }";
 
-/// Binding 1 of `import_depth`: multisampled linear depth, of which sample 0 is read.
-const DEPTH_LINEAR_MULTISAMPLED: &str = "
-@group(0) @binding(1) var depth_in: texture_multisampled_2d<f32>;
-fn load_depth(pixel: vec2<u32>) -> f32 {
-    return textureLoad(depth_in, pixel, 0).r;
+/// As [`FLOAT_INPUT`], multisampled: sample 0 is read.
+const FLOAT_INPUT_MULTISAMPLED: &str = "
+@group(0) @binding(1) var input_texture: texture_multisampled_2d<f32>;
+fn load_input(pixel: vec2<u32>) -> f32 {
+    return textureLoad(input_texture, pixel, 0).r;
 }";
 
 /// Hardware depth to linear view depth.
@@ -131,7 +132,7 @@ pub const IMPORT_DEPTH: ShaderSource = ShaderSource {
     name: "import_depth",
     parts: &[
         VIEW,
-        DEPTH_LINEAR,
+        FLOAT_INPUT,
         include_str!("../shaders/import_depth.wgsl"),
     ],
 };
@@ -141,7 +142,7 @@ pub const IMPORT_DEPTH_MULTISAMPLED: ShaderSource = ShaderSource {
     name: "import_depth",
     parts: &[
         VIEW,
-        DEPTH_LINEAR_MULTISAMPLED,
+        FLOAT_INPUT_MULTISAMPLED,
         include_str!("../shaders/import_depth.wgsl"),
     ],
 };
@@ -224,18 +225,10 @@ pub const TEMPORAL_FILTER: ShaderSource = ShaderSource {
     parts: &[VIEW, include_str!("../shaders/temporal_filter.wgsl")],
 };
 
-/// Binding 1 of `apply_mask`: a single-channel mask texture.
-const MASK_TEXTURE: &str = "
-@group(0) @binding(1) var mask: texture_2d<f32>;
+/// The mask texture's weight in `apply_mask`, after [`FLOAT_INPUT`] or its multisampled form.
+const MASK_TEXTURE_WEIGHT: &str = "
 fn mask_weight(pixel: vec2<u32>) -> f32 {
-    return saturate(textureLoad(mask, pixel, 0).r);
-}";
-
-/// Binding 1 of `apply_mask`: sample 0 of a multisampled single-channel mask texture.
-const MASK_TEXTURE_MULTISAMPLED: &str = "
-@group(0) @binding(1) var mask: texture_multisampled_2d<f32>;
-fn mask_weight(pixel: vec2<u32>) -> f32 {
-    return saturate(textureLoad(mask, pixel, 0).r);
+    return saturate(load_input(pixel));
 }";
 
 /// The stencil test of `apply_mask`, after its binding: `STENCIL_REFERENCE` and
@@ -267,13 +260,18 @@ const APPLY_MASK_PASS: &str = include_str!("../shaders/apply_mask.wgsl");
 /// AO 1 where a mask texture says so.
 pub const APPLY_MASK_TEXTURE: ShaderSource = ShaderSource {
     name: "apply_mask",
-    parts: &[VIEW, MASK_TEXTURE, APPLY_MASK_PASS],
+    parts: &[VIEW, FLOAT_INPUT, MASK_TEXTURE_WEIGHT, APPLY_MASK_PASS],
 };
 
 /// AO 1 where sample 0 of a multisampled mask texture says so.
 pub const APPLY_MASK_TEXTURE_MULTISAMPLED: ShaderSource = ShaderSource {
     name: "apply_mask",
-    parts: &[VIEW, MASK_TEXTURE_MULTISAMPLED, APPLY_MASK_PASS],
+    parts: &[
+        VIEW,
+        FLOAT_INPUT_MULTISAMPLED,
+        MASK_TEXTURE_WEIGHT,
+        APPLY_MASK_PASS,
+    ],
 };
 
 /// AO 1 where the stencil equals the reference.

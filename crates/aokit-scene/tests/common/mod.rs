@@ -224,3 +224,38 @@ pub fn copy_depth(gpu: &GpuContext, source: &wgpu::Texture, copy: &DepthCopy) ->
     gpu.queue.submit([encoder.finish()]);
     target
 }
+
+/// The ray-traced reference of `camera`'s view of `scene` at `time` (see
+/// [`aokit_scene::Scene::mesh_at`]), at `size` with `spp` rays per pixel and the scene's
+/// suggested radius.
+pub fn trace_at(
+    scene: &aokit_scene::Scene,
+    time: f32,
+    camera: &aokit_scene::Camera,
+    size: [u32; 2],
+    spp: u32,
+) -> aokit_reference::ReferenceImage {
+    let options = aokit_reference::AoOptions {
+        radius: scene.suggested_radius.unwrap(),
+        spp,
+        ..Default::default()
+    };
+    aokit_scene::reference::tracer_at(scene, time)
+        .unwrap()
+        .render(
+            &aokit_scene::reference::pixel_camera(scene, camera, size),
+            &options,
+            &|_| {},
+        )
+        .unwrap()
+}
+
+/// [`trace_at`] with the scene at rest.
+pub fn trace(
+    scene: &aokit_scene::Scene,
+    camera: &aokit_scene::Camera,
+    size: [u32; 2],
+    spp: u32,
+) -> aokit_reference::ReferenceImage {
+    trace_at(scene, 0.0, camera, size, spp)
+}
