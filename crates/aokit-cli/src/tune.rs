@@ -169,7 +169,7 @@ impl Candidate {
     }
 }
 
-/// One parameter of the search: its name, its candidate values, and how a value is set.
+/// One parameter of the search: its name, and the candidates that vary it alone.
 struct Dimension {
     name: &'static str,
     values: Vec<Candidate>,
@@ -220,18 +220,18 @@ fn dimensions(method: Method, at: &Candidate, samples: u32) -> Vec<Dimension> {
         Method::Vbao => &[0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.3],
     };
     dims.push(along(knob_name(method), knob, |c, v| c.knob = v));
-    // hbao-plus runs on hbao's directions and steps (one `hbao` settings block): it takes
-    // hbao's split rather than one of its own.
-    if matches!(method, Method::SsaoCrytek | Method::Ssao | Method::HbaoPlus) {
-        if method == Method::HbaoPlus {
-            dims.push(along("step_power", STEP_POWERS, |c, v| c.step_power = v));
-        }
+    if matches!(method, Method::SsaoCrytek | Method::Ssao) {
         return dims;
     }
     dims.push(along("step_power", STEP_POWERS, |c, v| c.step_power = v));
+    // hbao-plus runs on hbao's directions and steps (one `hbao` settings block): it takes
+    // hbao's split rather than one of its own.
+    if method == Method::HbaoPlus {
+        return dims;
+    }
     // Splits of the samples at the same cost: the slice methods take 2 samples per slice
     // and step (one per side).
-    let pairs = if method.has_bent_normals() {
+    let pairs = if matches!(method, Method::Gtao | Method::Vbao) {
         samples / 2
     } else {
         samples
