@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Prints docs/performance.md's GPU tables from the JSON that scripts/performance.sh writes.
+
+    python3 scripts/performance_tables.py DIR
+
+DIR is performance.sh's output directory (target/performance by default there). Prints, in the
+page's markdown, the two "Every method and preset" tables (`room` and Sponza's atrium, from
+SCENE-SIZE-RESOLUTION.json) and the "Each pass" table (from passes-sponza-atrium-SIZE.json):
+medians of the total and per-pass GPU time in milliseconds, to 3 decimals. Standard library only.
+"""
+import json
+import sys
+from pathlib import Path
+
+SIZES = ["1920x1080", "3840x2160"]
+SCENES = [("room", "`room` (camera `front`)"), ("sponza-atrium", "Sponza, camera `atrium`")]
+SAMPLES = {"low": 4, "medium": 8, "high": 18, "ultra": 54}
+# performance.sh's pass configurations, as the page labels them.
+LABELS = {
+    "": "(none: GTAO `high`)",
+    "--set spatial.enabled=true": "`spatial.enabled=true`",
+    "--set temporal.enabled=true": "`temporal.enabled=true`",
+    "--set spatial.enabled=true --set temporal.enabled=true": "both filters",
+    "--set temporal.enabled=true --set temporal.filter_current=true":
+        "temporal with `filter_current`",
+    "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true":
+        "half, both filters",
+    "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true"
+    " --set filter_resolution=full": "half, both filters at full resolution",
+    "--set resolution=quarter --set spatial.enabled=true --set temporal.enabled=true":
+        "quarter, both filters",
+    "--set resolution=half --set downsample=checkerboard --set upsample=nearest-depth":
+        "half, `checkerboard` + `nearest-depth`",
+    "--set bent_normals=true": "`bent_normals=true`",
+    "--set normals.encoding=oct16": "`normals.encoding=oct16` (decode pass)",
+    "--set normals.source=depth-5tap": "`normals.source=depth-5tap`",
+}
+# Pipeline order; passes not listed here follow, in the order they first appear.
+PASS_ORDER = ["linear_depth", "decode_normals", "normals_from_depth", "downsample", "gtao",
+              "upsample", "spatial_filter_horizontal", "spatial_filter_vertical",
+              "temporal_filter"]
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def ms(x):
+    return f"{x:.3f}"
+
+
+def option(configuration, name):
+    words = configuration.split()
+    return words[words.index(name) + 1]
+
+
+def method_tables(out):
+    for scene, heading in SCENES:
+        columns = [load(out / f"{scene}-{size}-{res}.json")
+                   for size in SIZES for res in ("full", "half")]
+        print(f"#### {heading}\n")
+        print("| method | preset | samples | 1920x1080 full | half | 3840x2160 full | half |")
+        print("|---|---|--:|--:|--:|--:|--:|")
+        for row in zip(*columns):
+            configuration = row[0]["configuration"]
+            assert all(r["configuration"] == configuration for r in row), configuration
+            preset = option(configuration, "--preset")
+            cells = [f"`{option(configuration, '--method')}`", preset, str(SAMPLES[preset])]
+            cells += [ms(r["total_gpu_ms"]["median"]) for r in row]
+            print("| " + " | ".join(cells) + " |")
+        print()
+
+
+def pass_table(out):
+    runs = {size: load(out / f"passes-sponza-atrium-{size}.json") for size in SIZES}
+    names = [p["name"] for size in SIZES for r in runs[size] for p in r["passes"]]
+    order = [n for n in PASS_ORDER if n in names]
+    order += [n for n in dict.fromkeys(names) if n not in order]
+    print("| configuration | size | total | " + " | ".join(f"`{n}`" for n in order) + " |")
+    print("|---|---|" + "--:|" * (1 + len(order)))
+    for rows in zip(*(runs[size] for size in SIZES)):
+        for size, r in zip(SIZES, rows):
+            passes = {p["name"]: p["gpu_ms"]["median"] for p in r["passes"]}
+            assert len(passes) == len(r["passes"]), "a pass ran twice"
+            label = LABELS.get(r["configuration"], f"`{r['configuration']}`")
+            cells = [label if size == SIZES[0] else "", size, ms(r["total_gpu_ms"]["median"])]
+            cells += [ms(passes[n]) if n in passes else "" for n in order]
+            print("| " + " | ".join(cells) + " |")
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = Path(sys.argv[1])
+    method_tables(out)
+    pass_table(out)
+
+
+if __name__ == "__main__":
+    main()
