@@ -447,9 +447,9 @@ impl ShaderSource {
     /// ```
     /// use aokit::shader;
     /// // Workgroups to dispatch for one thread per pixel of a 1920x1080 image, the last row
-    /// // and column partly outside.
+    /// // partly outside.
     /// let [x, y, _] = shader::GTAO.workgroup_size()?;
-    /// assert_eq!([1920u32.div_ceil(x), 1080u32.div_ceil(y)], [240, 135]);
+    /// assert_eq!([1920u32.div_ceil(x), 1080u32.div_ceil(y)], [120, 68]);
     /// // The spatial filter's horizontal pass runs along rows, 64 pixels a workgroup.
     /// assert_eq!(shader::SPATIAL_FILTER_HORIZONTAL.workgroup_size()?, [64, 1, 1]);
     /// # Ok::<(), String>(())

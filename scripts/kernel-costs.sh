@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# What the AO kernel's GPU time depends on: GTAO `high` (and HBAO `high` beside it) timed with
+# `aokit bench` while one thing changes at a time: the screen radius clamp (how far samples
+# reach, so how often they miss the texture cache), the split of the 18 samples into slices and
+# steps, the step spacing, the noise kind and the slice normalisation. One interleaved
+# `--compare` run per scene and size, each writing its JSON array to OUT/costs-SCENE-SIZE.json.
+# docs/performance.md's "What the kernel's time depends on" comes from these files. Meant for a
+# GPU: on a software adapter the per-pass times mean nothing (docs/bench.md).
+#
+#   bash scripts/kernel-costs.sh [AOKIT] [OUT]
+#
+# AOKIT defaults to target/release/aokit (build it with `cargo build --release -p aokit-cli`),
+# OUT to target/performance.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+aokit=${1:-target/release/aokit}
+out=${2:-target/performance}
+mkdir -p "$out"
+configurations=("--method gtao --preset high")
+for px in 4 8 16 32 64 128; do
+    configurations+=("--method gtao --preset high --set max_radius_px=$px")
+done
+configurations+=(
+    "--method gtao --preset high --set gtao.slice_count=9 --set gtao.steps_per_side=1"
+    "--method gtao --preset high --set gtao.slice_count=1 --set gtao.steps_per_side=9"
+    "--method gtao --preset high --set step_power=2"
+    "--method gtao --preset high --set gtao.normalize_slices=false"
+    "--method gtao --preset high --set noise.kind=blue"
+    "--method gtao --preset high --set noise.kind=bayer"
+    "--method gtao --preset high --set noise.kind=white"
+    "--method hbao --preset high"
+    "--method hbao --preset high --set max_radius_px=16"
+)
+for scene in room sponza-atrium; do
+    case $scene in
+        room) view=(--scene room) ;;
+        sponza-atrium) view=(--scene scenes/sponza.obj --camera atrium) ;;
+    esac
+    for size in 1920x1080 3840x2160; do
+        "$aokit" bench "${view[@]}" --size "$size" --frames 100 --warmup 10 --json \
+            --compare "${configurations[@]}" >"$out/costs-$scene-$size.json"
+        echo "wrote $out/costs-$scene-$size.json" >&2
+    done
+done
