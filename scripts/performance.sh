@@ -3,7 +3,8 @@
 # 1920x1080 and 3840x2160, on `room` and Sponza's atrium: one interleaved `--compare` run per
 # scene, size and resolution, each writing its JSON array to OUT/SCENE-SIZE-RESOLUTION.json.
 # Then GTAO `high` on the atrium with the denoisers, lower resolutions, bent normals and the
-# normal sources, one run per size, to OUT/passes-sponza-atrium-SIZE.json.
+# normal sources, one run per size, to OUT/passes-sponza-atrium-SIZE.json. Last, the separable
+# HBAO and SAO (below).
 # docs/performance.md's tables come from these files. Meant for a GPU: on a software adapter
 # the per-pass times mean nothing (docs/bench.md).
 #
@@ -16,17 +17,24 @@ cd "$(dirname "$0")/.."
 aokit=${1:-target/release/aokit}
 out=${2:-target/performance}
 mkdir -p "$out"
+# The `aokit bench` options that show scene name $1.
+set_view() {
+    case $1 in
+        room) view=(--scene room) ;;
+        sponza-atrium) view=(--scene scenes/sponza.obj --camera atrium) ;;
+    esac
+}
 configurations=()
-for method in ssao-crytek ssao hbao hbao-plus gtao vbao; do
+for method in ssao-crytek ssao hbao hbao-plus gtao vbao sao; do
     for preset in low medium high ultra; do
         configurations+=("--method $method --preset $preset")
     done
 done
+for preset in low medium high ultra; do
+    configurations+=("--method hbao --preset $preset --set hbao.variant=separable")
+done
 for scene in room sponza-atrium; do
-    case $scene in
-        room) view=(--scene room) ;;
-        sponza-atrium) view=(--scene scenes/sponza.obj --camera atrium) ;;
-    esac
+    set_view "$scene"
     for size in 1920x1080 3840x2160; do
         for resolution in full half; do
             "$aokit" bench "${view[@]}" --size "$size" --set resolution="$resolution" \
@@ -41,6 +49,7 @@ passes=(
     "--set spatial.enabled=true"
     "--set temporal.enabled=true"
     "--set spatial.enabled=true --set temporal.enabled=true"
+    "--set spatial.enabled=true --set spatial.kind=guided"
     "--set temporal.enabled=true --set temporal.filter_current=true"
     "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true"
     "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true --set filter_resolution=full"
@@ -55,4 +64,21 @@ for size in 1920x1080 3840x2160; do
         --preset high --frames 100 --warmup 10 --json --compare "${passes[@]}" \
         >"$out/passes-sponza-atrium-$size.json"
     echo "wrote $out/passes-sponza-atrium-$size.json" >&2
+done
+# The separable HBAO against the per-pixel one at the same samples (four directions), and SAO's
+# passes, to OUT/variants-SCENE-SIZE.json.
+variants=(
+    "--method hbao --preset high --set hbao.direction_count=4"
+    "--method hbao --preset high --set hbao.variant=separable"
+    "--method hbao --preset high --set hbao.direction_count=4 --set resolution=half"
+    "--method hbao --preset high --set hbao.variant=separable --set resolution=half"
+    "--method sao --preset high"
+)
+for scene in room sponza-atrium; do
+    set_view "$scene"
+    for size in 1920x1080 3840x2160; do
+        "$aokit" bench "${view[@]}" --size "$size" --frames 100 --warmup 10 --json \
+            --compare "${variants[@]}" >"$out/variants-$scene-$size.json"
+        echo "wrote $out/variants-$scene-$size.json" >&2
+    done
 done

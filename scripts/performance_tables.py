@@ -21,6 +21,7 @@ LABELS = {
     "--set spatial.enabled=true": "`spatial.enabled=true`",
     "--set temporal.enabled=true": "`temporal.enabled=true`",
     "--set spatial.enabled=true --set temporal.enabled=true": "both filters",
+    "--set spatial.enabled=true --set spatial.kind=guided": "`spatial.kind=guided`",
     "--set temporal.enabled=true --set temporal.filter_current=true":
         "temporal with `filter_current`",
     "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true":
@@ -38,7 +39,7 @@ LABELS = {
 # Pipeline order; passes not listed here follow, in the order they first appear.
 PASS_ORDER = ["linear_depth", "decode_normals", "normals_from_depth", "downsample", "gtao",
               "upsample", "spatial_filter_horizontal", "spatial_filter_vertical",
-              "temporal_filter"]
+              "guided_filter_coefficients", "guided_filter_output", "temporal_filter"]
 
 
 def load(path):
@@ -66,7 +67,13 @@ def method_tables(out):
             configuration = row[0]["configuration"]
             assert all(r["configuration"] == configuration for r in row), configuration
             preset = option(configuration, "--preset")
-            cells = [f"`{option(configuration, '--method')}`", preset, str(SAMPLES[preset])]
+            method = f"`{option(configuration, '--method')}`"
+            samples = SAMPLES[preset]
+            if "hbao.variant=separable" in configuration:
+                # Four fixed directions of `step_count` steps each.
+                method += " separable"
+                samples = 4 * row[0]["settings"]["hbao"]["step_count"]
+            cells = [method, preset, str(samples)]
             cells += [ms(r["total_gpu_ms"]["median"]) for r in row]
             print("| " + " | ".join(cells) + " |")
         print()

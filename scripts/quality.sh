@@ -10,12 +10,14 @@ cd "$(dirname "$0")/.."
 methods=${1:-all}
 out=target/quality
 rm -rf "$out"
-cargo run --quiet --release -p aokit-cli -- compare \
-    --view room --view stairs --view thin --view open \
-    --view scenes/sponza.obj@atrium --view scenes/sponza.obj@arcade \
-    --view scenes/sponza.obj@gallery --view scenes/sponza.obj@floor \
-    --methods "$methods" --presets low,medium,high,ultra \
-    --size 480x270 --spp 512 --out "$out" >/dev/null
+compare() { # compare ARGS...: every view at every preset, at the tables' size and ray count
+    cargo run --quiet --release -p aokit-cli -- compare \
+        --view room --view stairs --view thin --view open \
+        --view scenes/sponza.obj@atrium --view scenes/sponza.obj@arcade \
+        --view scenes/sponza.obj@gallery --view scenes/sponza.obj@floor \
+        --presets low,medium,high,ultra --size 480x270 --spp 512 "$@" >/dev/null
+}
+compare --methods "$methods" --out "$out"
 
 # docs/quality.md: the full tables, and the reference, GTAO and VBAO with their error maps for
 # three views.
@@ -108,4 +110,21 @@ for method in $method_list; do
     splice "errors:$method" "$out/errors-$method.md"
 done
 splice pictures "$out/pictures.md"
+
+# docs/methods.md's separable HBAO: each variant with the same four directions and steps (the
+# separable one reads no direction count), so both take 4 x step_count samples per pixel.
+if [[ $methods == all || ,$methods, == *,hbao,* ]]; then
+    separable_images=docs/images/separable-hbao
+    mkdir -p "$separable_images"
+    for variant in per-pixel separable; do
+        compare --methods hbao --set hbao.variant=$variant --set hbao.direction_count=4 \
+            --out "$out/hbao-$variant"
+        awk '$0 == "## hbao" {on = 1; next} /^## / {on = 0} on' \
+            "$out/hbao-$variant/metrics-by-method.md" > "$out/errors-hbao-$variant.md"
+        splice "errors:hbao-$variant" "$out/errors-hbao-$variant.md"
+        for view in "${views[@]}"; do
+            cp "$out/hbao-$variant/images/$view-hbao-high.png" "$separable_images/$view-$variant.png"
+        done
+    done
+fi
 echo "wrote docs/quality.md, docs/methods.md's tables, $images/ and $pictures/"

@@ -204,3 +204,35 @@ fn bad_input_is_refused_with_exit_code_2_naming_the_problem() {
         assert!(out.stdout.is_empty(), "{args:?}: {}", text(&out.stdout));
     }
 }
+
+#[test]
+fn separable_hbao_is_timed_per_pass_and_refused_to_hbao_plus() {
+    let separable = ["--method", "hbao", "--set", "hbao.variant=separable"];
+    let (stdout, stderr) =
+        bench_ok(&[&["--json", "--set", "resolution=half"][..], &separable].concat());
+    let object: Value = serde_json::from_str(&stdout).expect("stdout is one JSON value");
+    assert_eq!(object["settings"]["hbao"]["variant"], "separable");
+    let passes = check_object(&object, &stderr);
+    if !passes.is_empty() {
+        assert_eq!(
+            passes,
+            [
+                "linear_depth",
+                "downsample",
+                "hbao_rows",
+                "hbao_columns",
+                "upsample"
+            ]
+        );
+    }
+    let out = bench(
+        &[
+            &TINY[..],
+            &["--method", "hbao-plus", "--set", "hbao.variant=separable"],
+        ]
+        .concat(),
+    );
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("hbao.variant"), "{stderr}");
+}

@@ -157,6 +157,14 @@ fn bad_arguments_exit_2_and_name_the_problem() {
         (&["render", "--method", "ssao9"], "ssao9"),
         (&["render", "--set", "gtao.slices=3"], "gtao.slice_count"),
         (&["render", "--set", "radius=0"], "radius"),
+        (
+            &["render", "--set", "spatial.kind=box"],
+            "`bilateral` or `guided`",
+        ),
+        (
+            &["render", "--set", "spatial.guided_epsilon=0"],
+            "spatial.guided_epsilon",
+        ),
         (&["render", "--settings", "missing.toml"], "missing.toml"),
         (&["render", "--settings", "bad.toml"], "bad.toml"),
         (

@@ -67,15 +67,27 @@ fn the_presets_are_the_tuning_table() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/tuning.json");
     let json: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let results = json["results"].as_array().unwrap();
-    // Every method but ssao-crytek, whose presets keep their published form.
-    assert_eq!(results.len(), (Method::ALL.len() - 1) * Preset::ALL.len());
+    // Every method but ssao-crytek and sao, whose presets keep their published forms.
+    assert_eq!(results.len(), (Method::ALL.len() - 2) * Preset::ALL.len());
     for preset in Preset::ALL {
         let crytek = AoSettings::preset(Method::SsaoCrytek, preset);
         assert_eq!(
             (crytek.power, crytek.falloff, crytek.radius_multiplier),
             (1.0, 0.0, 1.0)
         );
+        // The SAO paper's: a bias of 0.01 m at its 1 m radius, no further shaping.
+        let sao = AoSettings::preset(Method::Sao, preset);
+        assert_eq!(
+            (sao.power, sao.falloff, sao.radius_multiplier, sao.bias),
+            (1.0, 0.0, 1.0, 0.01)
+        );
     }
+    assert!(
+        results
+            .iter()
+            .all(|r| !["ssao-crytek", "sao"].contains(&r["method"].as_str().unwrap())),
+        "the published forms are not tuned"
+    );
     for r in results {
         let method: Method = r["method"].as_str().unwrap().parse().unwrap();
         let preset: Preset = r["preset"].as_str().unwrap().parse().unwrap();
@@ -94,6 +106,7 @@ fn the_presets_are_the_tuning_table() {
         let (knob, split) = match method {
             Method::SsaoCrytek => (s.bias, [s.ssao_crytek.sample_count, 1]),
             Method::Ssao => (s.bias, [s.ssao.sample_count, 1]),
+            Method::Sao => (s.bias, [s.sao.sample_count, 1]),
             Method::Hbao | Method::HbaoPlus => {
                 (s.angle_bias, [s.hbao.direction_count, s.hbao.step_count])
             }

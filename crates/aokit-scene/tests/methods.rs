@@ -4,8 +4,8 @@ mod common;
 
 use aokit::{AoSettings, GpuContext, Method, NoiseKind, NoiseSettings, Preset, TemporalOffset};
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
-use common::{gpu, trace};
-use glam::{Vec2, Vec3};
+use common::{assert_in_range_with_sky_at_one, covered, gpu, pixel_of, trace};
+use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
 
@@ -21,40 +21,6 @@ fn render(gpu: &GpuContext, scene: &Scene, camera: &Camera, settings: &AoSetting
         .unwrap()
         .render(gpu, camera, SIZE, 0)
         .unwrap()
-}
-
-/// Pixel index where the world point `world` is the visible surface.
-fn pixel_of(frame: &Frame, world: Vec3) -> usize {
-    let view = frame.view_from_world.transform_point3(world);
-    let clip = frame.projection.clip_from_view() * view.extend(1.0);
-    let ndc = Vec2::new(clip.x, clip.y) / clip.w;
-    let size = Vec2::new(frame.size[0] as f32, frame.size[1] as f32);
-    let pixel = Vec2::new((ndc.x + 1.0) * 0.5, (1.0 - ndc.y) * 0.5) * size;
-    let index = pixel.y as usize * frame.size[0] as usize + pixel.x as usize;
-    assert!(
-        (frame.linear_depth[index] + view.z).abs() < 0.02 * -view.z,
-        "{world} is not the visible surface"
-    );
-    index
-}
-
-fn covered(frame: &Frame) -> impl Iterator<Item = f32> + '_ {
-    frame
-        .ao
-        .iter()
-        .zip(&frame.linear_depth)
-        .filter(|&(_, &d)| d > 0.0)
-        .map(|(&ao, _)| ao)
-}
-
-/// Every AO value is finite and in [0, 1], and 1 where there is no surface.
-fn assert_in_range_with_sky_at_one(frame: &Frame, view: &str) {
-    for (ao, depth) in frame.ao.iter().zip(&frame.linear_depth) {
-        assert!((0.0..=1.0).contains(ao), "{view}: AO {ao}");
-        if *depth == 0.0 {
-            assert_eq!(*ao, 1.0, "{view}: sky pixel AO {ao}");
-        }
-    }
 }
 
 #[test]

@@ -11,34 +11,23 @@
 // plane perpendicular to V, the vector to the eye. Samples sit exactly on each direction's slice
 // (see slice_sample), so a plane seen at a grazing angle does not occlude itself; the angle bias
 // is left for tessellated curved surfaces, whose interpolated normals tilt off their facets.
+// One direction's march is common/horizon.wgsl's, which the separable variant
+// (hbao_separable.wgsl) shares.
 
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
-    // Never more steps than pixels in the radius: they would sample the same texels.
-    let steps = max(1u, min(ao.steps, u32(surface.radius_px)));
-    let r2 = surface.radius * surface.radius;
+    let steps = horizon_steps(surface);
     var occlusion = 0.0;
     for (var d = 0u; d < ao.count; d++) {
         let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(ao.count));
-        // The tangent's elevation above the plane perpendicular to V, inside the slice: the
-        // projected normal lies at angle n from V, so the tangent on the +omega side lies at
-        // n + pi/2 from V, an elevation of -n.
-        let tangent_angle = min(-slice.angle_n + ao.angle_bias, HALF_PI);
-        var last_sin = sin(tangent_angle);
-        var direction_occlusion = 0.0;
+        var horizon = start_horizon(slice);
         for (var k = 0u; k < steps; k++) {
             let distance = step_distance(k, steps, noise.y, surface.radius_px);
             let sample = side_sample(surface, slice, 1.0, distance);
-            if sample.w == 0.0 {
-                continue;
-            }
-            let d2 = dot(sample.xyz, sample.xyz);
-            let sin_h = dot(sample.xyz, surface.v) * inverseSqrt(d2);
-            if d2 < r2 && sin_h > last_sin {
-                direction_occlusion += (1.0 - d2 / r2) * (sin_h - last_sin);
-                last_sin = sin_h;
+            if sample.w != 0.0 {
+                horizon = raise_horizon(horizon, surface, sample.xyz);
             }
         }
-        occlusion += direction_occlusion;
+        occlusion += horizon.occlusion;
     }
     return Estimate(1.0 - occlusion / f32(ao.count), surface.n);
 }

@@ -25,6 +25,7 @@ mod presets;
 pub mod projection;
 pub mod settings;
 pub mod shader;
+mod spiral;
 pub mod timing;
 mod uniforms;
 
@@ -34,9 +35,9 @@ pub use inputs::{AoInputs, AoMask, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
-    AoSettings, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings, Method,
-    NoiseKind, NoiseSettings, NormalEncoding, NormalSource, NormalSpace, NormalsSettings, Preset,
-    Resolution, SettingsError, SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings,
-    Upsample, VbaoSettings,
+    AoSettings, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings, HbaoVariant,
+    Method, NoiseKind, NoiseSettings, NormalEncoding, NormalSource, NormalSpace, NormalsSettings,
+    Preset, Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX, SettingsError, SpatialKind, SpatialSettings,
+    SsaoSettings, TemporalOffset, TemporalSettings, Upsample, VbaoSettings,
 };
 pub use timing::PassTime;

@@ -7,14 +7,19 @@ use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
 use crate::passes::decode_normals::DecodeNormalsPass;
+use crate::passes::depth_mips::DepthMipsPass;
+use crate::passes::guided_filter::GuidedFilterPass;
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::mask::MaskPass;
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
 use crate::passes::resample::{DownsampleTargets, ResamplePass, WORKING_MOTION_FORMAT};
+use crate::passes::separable_hbao::SeparableHbaoPass;
 use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
 use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
-use crate::settings::{AoSettings, FilterResolution, NormalEncoding, NormalSource, NormalSpace};
+use crate::settings::{
+    AoSettings, FilterResolution, NormalEncoding, NormalSource, NormalSpace, SpatialKind,
+};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
 
@@ -36,6 +41,8 @@ struct Layout {
     working_motion: bool,
     /// Whether an exclusion mask is applied.
     mask: bool,
+    /// Whether the method reads a depth MIP chain.
+    depth_mips: bool,
 }
 
 /// The intermediate textures.
@@ -55,6 +62,8 @@ struct Targets {
     spatial: Option<SpatialTargets>,
     /// The AO with the exclusion mask applied, at the input's size.
     masked_ao: Option<Target>,
+    /// The working depth's MIP chain, for a method that reads one; its view shows every level.
+    depth_mips: Option<Target>,
 }
 
 /// The downsample's and the upsample's textures.
@@ -68,7 +77,8 @@ struct WorkingTargets {
     upsampled_bent_normals: Option<Target>,
 }
 
-/// The spatial filter's AO and depth after the horizontal pass, and its filtered AO.
+/// The spatial filter's AO and depth after the bilateral kind's horizontal pass (or the guided
+/// kind's window lines, in the same format), and its filtered AO.
 struct SpatialTargets {
     packed_view: wgpu::TextureView,
     ao: Target,
@@ -109,6 +119,11 @@ impl Targets {
             masked_ao: layout
                 .mask
                 .then(|| make("aokit masked ao", size, AO_FORMAT)),
+            depth_mips: layout.depth_mips.then(|| {
+                let texture = DepthMipsPass::create_texture(device, working);
+                let view = texture.create_view(&Default::default());
+                (texture, view)
+            }),
         }
     }
 }
@@ -125,6 +140,7 @@ struct FilterInputs<'t, 'f> {
 /// The spatial and temporal filters and each view's temporal history.
 struct Denoiser {
     spatial: SpatialFilterPass,
+    guided: GuidedFilterPass,
     /// Compiled the first time the temporal filter is on.
     temporal: Option<TemporalFilterPass>,
     /// Each view's temporal history, by [`AoInputs::view_id`].
@@ -146,14 +162,23 @@ impl Denoiser {
     ) -> (&'t Target, Option<&'t wgpu::Texture>) {
         let ao = match spatial {
             Some(targets) => {
-                self.spatial.encode(
-                    ctx,
-                    &input.ao.1,
-                    input.linear_depth,
-                    input.normals,
-                    &targets.packed_view,
-                    &targets.ao.1,
-                );
+                match settings.spatial.kind {
+                    SpatialKind::Bilateral => self.spatial.encode(
+                        ctx,
+                        &input.ao.1,
+                        input.linear_depth,
+                        input.normals,
+                        &targets.packed_view,
+                        &targets.ao.1,
+                    ),
+                    SpatialKind::Guided => self.guided.encode(
+                        ctx,
+                        &input.ao.1,
+                        input.linear_depth,
+                        &targets.packed_view,
+                        &targets.ao.1,
+                    ),
+                }
                 &targets.ao
             }
             None => input.ao,
@@ -258,6 +283,13 @@ pub struct AoOutputs<'a> {
     /// it blended. A debug view of where ghosting or fresh noise can show. At the filters'
     /// size: [`AoOutputs::working_size`], or the input's with [`FilterResolution::Full`].
     pub history_rejected: Option<&'a wgpu::Texture>,
+    /// With a method that reads one (`sao`, see
+    /// [`Method::reads_depth_mips`](crate::Method::reads_depth_mips)): the depth MIP chain its
+    /// kernel read, `R32Float` at [`AoOutputs::working_size`], up to five levels: level 0 is
+    /// [`AoOutputs::working_linear_depth`], each further level keeps one depth of every 2x2
+    /// block of the level below (the texel at offset `(y & 1, x & 1)` of texel `(x, y)`'s
+    /// block, clamped to the level), never an average.
+    pub depth_mips: Option<&'a wgpu::Texture>,
 }
 
 /// The AO pipeline for one view.
@@ -289,9 +321,14 @@ pub struct AoPipeline {
     /// the kernels read them as they are.
     input_normals_view: Option<wgpu::TextureView>,
     method: MethodPass,
+    /// Runs instead of `method`'s kernel for `hbao.variant = separable`; compiled the first
+    /// time that is chosen.
+    separable_hbao: Option<SeparableHbaoPass>,
     denoiser: Denoiser,
     /// Compiled the first time the resolution is below full.
     resample: Option<ResamplePass>,
+    /// Compiled the first time a method reads a depth MIP chain.
+    depth_mips: Option<DepthMipsPass>,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
 }
@@ -330,12 +367,15 @@ impl AoPipeline {
             decode_normals: DecodeNormalsPass::new(device),
             input_normals_view: None,
             method: MethodPass::new(device, queue, settings),
+            separable_hbao: None,
             denoiser: Denoiser {
                 spatial: SpatialFilterPass::new(device, queue, &settings.spatial),
+                guided: GuidedFilterPass::new(device, queue, &settings.spatial),
                 temporal: None,
                 histories: HashMap::new(),
             },
             resample: None,
+            depth_mips: None,
             targets: None,
             timer: None,
         })
@@ -433,6 +473,9 @@ impl AoPipeline {
         self.denoiser
             .spatial
             .set_settings(device, queue, &settings.spatial);
+        self.denoiser
+            .guided
+            .set_settings(device, queue, &settings.spatial);
         if let Some(temporal) = &mut self.denoiser.temporal {
             temporal.set_settings(&settings.temporal);
         }
@@ -500,6 +543,7 @@ impl AoPipeline {
                 && settings.temporal.enabled
                 && inputs.motion_vectors.is_some(),
             mask: inputs.mask.is_some(),
+            depth_mips: settings.method.reads_depth_mips(),
         };
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
             self.targets = Some(Targets::new(device, layout));
@@ -605,14 +649,41 @@ impl AoPipeline {
             }
             None => (&targets.linear_depth.1, normals_view),
         };
-        self.method.encode(
-            &mut ctx,
-            settings.method,
-            working_depth,
-            working_normals,
-            &targets.ao.1,
-            targets.bent_normals.as_ref().map(|(_, view)| view),
-        );
+        // A method that reads a depth MIP chain binds it where the others bind the working
+        // depth, which is its level 0.
+        let kernel_depth = match &targets.depth_mips {
+            Some((chain, view)) => {
+                let working_texture = match &targets.working {
+                    Some(working) => &working.linear_depth.0,
+                    None => &targets.linear_depth.0,
+                };
+                self.depth_mips
+                    .get_or_insert_with(|| DepthMipsPass::new(device))
+                    .encode(&mut ctx, working_texture, chain);
+                view
+            }
+            None => working_depth,
+        };
+        if settings.separable_hbao() {
+            self.separable_hbao
+                .get_or_insert_with(|| SeparableHbaoPass::new(device))
+                .encode(
+                    &mut ctx,
+                    &self.method,
+                    working_depth,
+                    working_normals,
+                    &targets.ao.1,
+                );
+        } else {
+            self.method.encode(
+                &mut ctx,
+                settings.method,
+                kernel_depth,
+                working_normals,
+                &targets.ao.1,
+                targets.bent_normals.as_ref().map(|(_, view)| view),
+            );
+        }
 
         // The upsample of `ao` and the bent normals; `ctx` must be at the input's size.
         let upsample = |ctx: &mut PassContext<'_>, ao: &wgpu::TextureView| {
@@ -699,6 +770,7 @@ impl AoPipeline {
             bent_normals: bent_normals.map(|(texture, _)| texture),
             bent_normals_view: bent_normals.map(|(_, view)| view),
             history_rejected,
+            depth_mips: targets.depth_mips.as_ref().map(|(texture, _)| texture),
         })
     }
 }

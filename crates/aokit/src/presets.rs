@@ -13,8 +13,8 @@ pub(crate) struct Tuned {
     pub split: [u32; 2],
     pub step_power: f32,
     pub falloff: f32,
-    /// The method's own knob: `bias` (ssao, ssao-crytek), `angle_bias` (hbao, hbao-plus),
-    /// `gtao.thickness` or `vbao.thickness`.
+    /// The method's own knob: `bias` (ssao, ssao-crytek, sao), `angle_bias` (hbao,
+    /// hbao-plus), `gtao.thickness` or `vbao.thickness`.
     pub knob: f32,
     pub power: f32,
     pub radius_multiplier: f32,
@@ -54,6 +54,10 @@ pub(crate) fn preset_values(method: Method, preset: Preset) -> Tuned {
         // Not tuned: Crytek's SSAO keeps its 2007 form (a 2% bias, no falloff, power 1), whose
         // grey walls are what the method is chosen for; the search would trade them away.
         (Method::SsaoCrytek, _) => tuned([samples(preset), 1], 1.0, 0.0, 0.02, 1.0, 1.0),
+        // Not tuned either: SAO keeps the paper's parameters (McGuire, Mara and Luebke 2012):
+        // its bias of 0.01 m at its 1 m radius, its own falloff inside the estimator (so none
+        // of ours), power and radius as given.
+        (Method::Sao, _) => tuned([samples(preset), 1], 1.0, 0.0, 0.01, 1.0, 1.0),
         (Method::Ssao, Preset::Low) => tuned([4, 1], 1.0, 1.0, 0.005, 1.0, 1.2),
         (Method::Ssao, Preset::Medium) => tuned([8, 1], 1.0, 0.35, 0.005, 1.0, 1.1),
         (Method::Ssao, Preset::High) => tuned([18, 1], 1.0, 0.5, 0.005, 1.4, 1.0),

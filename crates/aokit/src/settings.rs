@@ -88,6 +88,10 @@ named_enum! {
         /// Visibility bitmask AO (Therrien, Levesque and Gilet 2023): occluders of finite
         /// thickness mark sectors of each slice.
         Vbao = "vbao",
+        /// Scalable Ambient Obscurance (McGuire, Mara and Luebke 2012): taps on a spiral read
+        /// from a depth MIP level chosen by their distance, scored by the paper's obscurance
+        /// estimator.
+        Sao = "sao",
     }
 }
 
@@ -107,6 +111,20 @@ impl Method {
     /// ```
     pub fn has_bent_normals(self) -> bool {
         matches!(self, Method::Gtao | Method::Vbao)
+    }
+
+    /// Whether the method's kernel reads a depth MIP chain, which the pipeline then builds
+    /// from the working linear depth each frame (and otherwise never makes).
+    ///
+    /// ```
+    /// use aokit::Method;
+    /// // Budget the chain's memory (a third more than the depth) only where it is built.
+    /// let with_chain: Vec<Method> =
+    ///     Method::ALL.into_iter().filter(|m| m.reads_depth_mips()).collect();
+    /// assert_eq!(with_chain, [Method::Sao]);
+    /// ```
+    pub fn reads_depth_mips(self) -> bool {
+        self == Method::Sao
     }
 }
 
@@ -369,11 +387,36 @@ named_enum! {
     }
 }
 
-/// The spatial denoiser: a separable bilateral blur of the AO, run after the method kernel.
-/// docs/denoise.md has the formulas and the measured errors.
+named_enum! {
+    /// Which edge-aware filter the spatial denoiser runs (docs/denoise.md compares them).
+    ///
+    /// ```
+    /// use aokit::{AoSettings, SpatialKind};
+    /// let mut settings = AoSettings::default();
+    /// settings.spatial.enabled = true;
+    /// // `--set spatial.kind=guided` on the command line.
+    /// settings.spatial.kind = "guided".parse()?;
+    /// assert_eq!(settings.spatial.kind, SpatialKind::Guided);
+    /// # Ok::<(), String>(())
+    /// ```
+    pub enum SpatialKind ("spatial filter kind") {
+        /// The separable bilateral blur: weights from pixel distance, relative depth difference
+        /// and normals (`radius`, `sigma`, `depth_weight`, `depth_sigma`, `normal_power`).
+        #[default]
+        Bilateral = "bilateral",
+        /// He, Sun and Tang's guided filter with the log of linear depth as the guide: a
+        /// linear model of AO against depth in every `(2 guided_radius + 1)^2` window
+        /// (`guided_radius`, `guided_epsilon`).
+        Guided = "guided",
+    }
+}
+
+/// The spatial denoiser: an edge-aware blur of the AO, run after the method kernel, either a
+/// separable bilateral blur or a guided filter ([`SpatialSettings::kind`]). docs/denoise.md has
+/// the formulas and the measured errors.
 ///
 /// ```
-/// use aokit::{AoSettings, Method, Preset, SpatialSettings};
+/// use aokit::{AoSettings, Method, Preset, SpatialKind, SpatialSettings};
 /// // The low preset's 4 samples are noisy: a wider blur, sigma kept at half the radius.
 /// let spatial =
 ///     SpatialSettings { enabled: true, radius: 5, sigma: 2.5, ..SpatialSettings::default() };
@@ -382,6 +425,9 @@ named_enum! {
 /// // The workgroup's tile holds at most 8 pixels on each side.
 /// let wide = AoSettings { spatial: SpatialSettings { radius: 9, ..spatial }, ..settings };
 /// assert_eq!(wide.validate().unwrap_err().field, "spatial.radius");
+/// // The guided filter instead, in 5x5 windows: it has its own radius and regularisation.
+/// let guided = SpatialSettings { kind: SpatialKind::Guided, guided_radius: 2, ..spatial };
+/// AoSettings { spatial: guided, ..settings }.validate()?;
 /// # Ok::<(), aokit::SettingsError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -390,7 +436,10 @@ pub struct SpatialSettings {
     /// Filter the AO. Off by default for now: every table published in docs/ scores the raw
     /// AO of the methods, and the defaults must keep reproducing them.
     pub enabled: bool,
-    /// Kernel radius in pixels, 1..=8: each pass averages `2 * radius + 1` pixels.
+    /// Which filter runs: the bilateral blur (default) or the guided filter.
+    pub kind: SpatialKind,
+    /// Kernel radius of the bilateral filter in pixels, 1..=8: each pass averages
+    /// `2 * radius + 1` pixels.
     pub radius: u32,
     /// Standard deviation of the Gaussian spatial weight, in pixels.
     pub sigma: f32,
@@ -403,6 +452,16 @@ pub struct SpatialSettings {
     /// Exponent of the normal weight `max(0, n . n0)^normal_power`; 0 turns the normal weight
     /// off (and its normal loads with it).
     pub normal_power: f32,
+    /// Window radius of the guided filter in pixels, 1..=8: it fits AO against depth in
+    /// windows of `(2 guided_radius + 1)^2` pixels, and each pixel averages the fits of the
+    /// windows that hold it, so its AO mixes pixels up to `2 guided_radius` away.
+    pub guided_radius: u32,
+    /// The guided filter's regularisation `epsilon` (He, Sun and Tang's): the variance of the
+    /// guide, the natural log of linear depth, below which a window is smoothed flat rather
+    /// than its AO fitted against depth. Log-depth differences are relative depth differences,
+    /// so `sqrt(guided_epsilon)` is a relative depth spread, at any distance: 1e-6 is 0.1%.
+    /// Larger blurs across more depth change; below the default, nothing changes measurably.
+    pub guided_epsilon: f32,
 }
 
 /// The temporal denoiser: each frame's AO blended with its reprojected history (docs/denoise.md).
@@ -613,7 +672,9 @@ named_enum! {
 }
 
 /// Largest [`SpatialSettings::radius`]: the filter's workgroup tile holds the row or column
-/// segment of its 64 threads plus this many pixels on each side.
+/// segment of its 64 threads plus this many pixels on each side, and the guided filter's tile
+/// the 8x8 block of its threads plus as many on each side (24x24 texels, 9 KiB of the 16 KiB
+/// of workgroup memory WebGPU guarantees). Bounds `radius` and `guided_radius` alike.
 pub const MAX_SPATIAL_RADIUS: u32 = 8;
 
 impl Default for SpatialSettings {
@@ -634,6 +695,14 @@ impl Default for SpatialSettings {
             // Halves a neighbour's weight at 17 degrees: most of the gain of 64, milder on
             // normals with fine detail.
             normal_power: 16.0,
+            // The bilateral filter scores a little better on average (docs/denoise.md).
+            kind: SpatialKind::Bilateral,
+            // 3x3 windows: larger ones blur creases, where depth is continuous and AO is not,
+            // more than they remove noise (1 to 3% more RMSE at 2, 3 to 6% at 3).
+            guided_radius: 1,
+            // The best measured for both methods, and 1e-5 to 1e-8 agree within 0.0002: a
+            // window is fitted against depth unless its depth varies by less than 0.1%.
+            guided_epsilon: 1e-6,
         }
     }
 }
@@ -654,7 +723,7 @@ pub(crate) fn find_by_name<T: Copy>(
         })
 }
 
-/// Sample count of the point-sampling methods (`ssao-crytek`, `ssao`).
+/// Sample count of the point-sampling methods (`ssao-crytek`, `ssao`, `sao`).
 ///
 /// ```
 /// use aokit::{AoSettings, Method, Preset};
@@ -692,13 +761,13 @@ impl SsaoSettings {
     }
 }
 
-/// Ray-marching counts of `hbao` and `hbao-plus`.
+/// Ray-marching counts of `hbao` and `hbao-plus`, and how `hbao` runs.
 ///
 /// ```
-/// use aokit::{AoSettings, HbaoSettings, Method, Preset};
+/// use aokit::{AoSettings, HbaoSettings, HbaoVariant, Method, Preset};
 /// // Eight directions of four steps: the cost is their product.
 /// let settings = AoSettings {
-///     hbao: HbaoSettings { direction_count: 8, step_count: 4 },
+///     hbao: HbaoSettings { direction_count: 8, step_count: 4, variant: HbaoVariant::PerPixel },
 ///     ..AoSettings::preset(Method::HbaoPlus, Preset::High)
 /// };
 /// assert_eq!(settings.samples_per_pixel(), 32);
@@ -706,11 +775,63 @@ impl SsaoSettings {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct HbaoSettings {
-    /// Screen-space directions over the full circle.
+    /// Screen-space directions over the full circle, rotated per pixel. The separable variant
+    /// has its own four and does not read this.
     pub direction_count: u32,
     /// Depth samples along each direction.
     pub step_count: u32,
+    /// How `hbao` runs: one kernel per pixel, or the two separable passes. `hbao-plus` runs
+    /// per pixel only ([`AoSettings::validate`] refuses it the separable variant).
+    pub variant: HbaoVariant,
 }
+
+named_enum! {
+    /// How `hbao` marches its directions (docs/methods.md, "separable HBAO").
+    ///
+    /// ```
+    /// use aokit::{AoSettings, HbaoVariant, Method, Preset, SEPARABLE_HBAO_MAX_RADIUS_PX};
+    /// // `--method hbao --set hbao.variant=separable`: rows, then columns, in workgroup memory.
+    /// let mut settings = AoSettings::preset(Method::Hbao, Preset::High);
+    /// settings.hbao.variant = "separable".parse()?;
+    /// assert_eq!(settings.hbao.variant, HbaoVariant::Separable);
+    /// // Four fixed directions of `step_count` steps each.
+    /// assert_eq!(settings.samples_per_pixel(), 4 * settings.hbao.step_count);
+    /// // The screen radius stops at the workgroup's apron, in working texels.
+    /// assert_eq!(settings.effective_max_radius_px(), SEPARABLE_HBAO_MAX_RADIUS_PX as f32);
+    /// # Ok::<(), String>(())
+    /// ```
+    pub enum HbaoVariant ("hbao variant") {
+        /// One kernel: `hbao.direction_count` directions, rotated per pixel by the noise, each
+        /// sample read from the depth texture.
+        #[default]
+        PerPixel = "per-pixel",
+        /// Two passes after NVIDIA's compute-shader HBAO (their DirectX 11 SDK sample, seed
+        /// 000): the +x and -x horizons of every pixel from its row of depth in workgroup
+        /// memory, then +y and -y from its column. The four directions are fixed, not rotated
+        /// (the noise jitters the steps only), and the screen radius stops at
+        /// [`SEPARABLE_HBAO_MAX_RADIUS_PX`] working texels.
+        Separable = "separable",
+    }
+}
+
+/// Largest screen radius of the separable HBAO variant, in texels of the working resolution:
+/// each workgroup holds its 128-texel row or column segment and this many texels on each side
+/// in workgroup memory, and a pixel's samples must fall inside. Where the radius would reach
+/// farther, the pixel works with the world radius that covers this many texels, exactly as
+/// [`AoSettings::max_radius_px`] clamps. 128 texels is the default `max_radius_px` (256 pixels)
+/// at half resolution, NVIDIA's recommended resolution for HBAO, and keeps the tile at 1.5 KiB.
+///
+/// ```
+/// use aokit::{AoSettings, HbaoVariant, Method, Preset, Resolution};
+/// let mut settings = AoSettings::preset(Method::Hbao, Preset::High);
+/// settings.hbao.variant = HbaoVariant::Separable;
+/// // At full resolution the apron halves the default 256-pixel limit...
+/// assert_eq!(settings.effective_max_radius_px(), aokit::SEPARABLE_HBAO_MAX_RADIUS_PX as f32);
+/// // ...at half resolution its texels cover the default.
+/// settings.resolution = Resolution::Half;
+/// assert_eq!(settings.effective_max_radius_px(), settings.max_radius_px);
+/// ```
+pub const SEPARABLE_HBAO_MAX_RADIUS_PX: u32 = 128;
 
 impl Default for HbaoSettings {
     fn default() -> Self {
@@ -732,6 +853,8 @@ impl HbaoSettings {
         Self {
             direction_count,
             step_count,
+            // Per pixel, so that every table published before the separable variant stands.
+            variant: HbaoVariant::PerPixel,
         }
     }
 }
@@ -891,7 +1014,8 @@ pub struct AoSettings {
     pub power: f32,
     /// Largest screen radius in pixels of the input, whatever the working resolution: near the
     /// camera the world radius covers much of the screen, where samples spread thin and leave
-    /// the cache (seed 004's Max Radius Pixels).
+    /// the cache (seed 004's Max Radius Pixels). The separable HBAO variant may stop it sooner
+    /// ([`AoSettings::effective_max_radius_px`]).
     pub max_radius_px: f32,
     /// Smallest screen radius in pixels of the input: where the world radius covers fewer
     /// pixels (far away), it is widened to this many, so distant geometry keeps a visible
@@ -928,6 +1052,8 @@ pub struct AoSettings {
     pub gtao: GtaoSettings,
     /// `vbao` sampling and thickness.
     pub vbao: VbaoSettings,
+    /// `sao` taps on its spiral.
+    pub sao: SsaoSettings,
     /// Normal encoding and source.
     pub normals: NormalsSettings,
     /// Sampling noise.
@@ -1002,7 +1128,7 @@ impl AoSettings {
         // The method's tuned values (docs/tuning.md). The bias and angle bias of the methods
         // not chosen come from their own rows, so that switching `method` later keeps them.
         let tuned = presets::preset_values(method, preset);
-        let knob = |owners: [Method; 2]| {
+        let knob = |owners: &[Method]| {
             let owner = if owners.contains(&method) {
                 method
             } else {
@@ -1021,8 +1147,8 @@ impl AoSettings {
             // shadowing, and samples that far apart miss the texture cache.
             max_radius_px: 256.0,
             min_radius_px: 0.0,
-            bias: knob([Method::Ssao, Method::SsaoCrytek]),
-            angle_bias: knob([Method::Hbao, Method::HbaoPlus]),
+            bias: knob(&[Method::Ssao, Method::SsaoCrytek, Method::Sao]),
+            angle_bias: knob(&[Method::Hbao, Method::HbaoPlus]),
             step_power: tuned.step_power,
             max_distance: 0.0,
             distance_falloff: 0.0,
@@ -1032,6 +1158,7 @@ impl AoSettings {
             hbao: HbaoSettings::preset(preset),
             gtao: GtaoSettings::preset(preset),
             vbao: VbaoSettings::preset(preset),
+            sao: SsaoSettings::preset(preset),
             normals: NormalsSettings::default(),
             noise: NoiseSettings::default(),
             spatial: SpatialSettings::default(),
@@ -1062,9 +1189,47 @@ impl AoSettings {
         match self.method {
             Method::SsaoCrytek => self.ssao_crytek.sample_count,
             Method::Ssao => self.ssao.sample_count,
+            // +-x and +-y.
+            Method::Hbao if self.separable_hbao() => 4 * self.hbao.step_count,
             Method::Hbao | Method::HbaoPlus => self.hbao.direction_count * self.hbao.step_count,
             Method::Gtao => 2 * self.gtao.slice_count * self.gtao.steps_per_side,
             Method::Vbao => 2 * self.vbao.slice_count * self.vbao.steps_per_side,
+            Method::Sao => self.sao.sample_count,
+        }
+    }
+
+    /// Whether the pipeline runs `hbao` as its two separable passes ([`HbaoVariant::Separable`])
+    /// rather than one kernel.
+    pub(crate) fn separable_hbao(&self) -> bool {
+        self.method == Method::Hbao && self.hbao.variant == HbaoVariant::Separable
+    }
+
+    /// The largest screen radius the kernel uses, in pixels of the input: [`max_radius_px`],
+    /// or less with the separable HBAO variant, whose samples must stay inside its workgroup's
+    /// apron of [`SEPARABLE_HBAO_MAX_RADIUS_PX`] working texels. A pixel whose radius would
+    /// reach farther works with the world radius that covers this many pixels, and
+    /// [`min_radius_px`] cannot widen past it.
+    ///
+    /// [`max_radius_px`]: AoSettings::max_radius_px
+    /// [`min_radius_px`]: AoSettings::min_radius_px
+    ///
+    /// ```
+    /// use aokit::{AoSettings, HbaoVariant, Method, Preset, Resolution};
+    /// // A settings panel shows the limit that applies, not only the one asked for.
+    /// let mut settings = AoSettings::preset(Method::Hbao, Preset::High);
+    /// assert_eq!(settings.effective_max_radius_px(), 256.0);
+    /// settings.hbao.variant = HbaoVariant::Separable;
+    /// assert_eq!(settings.effective_max_radius_px(), 128.0);
+    /// // A quarter-resolution texel covers 4 pixels: the apron reaches 512, past the setting.
+    /// settings.resolution = Resolution::Quarter;
+    /// assert_eq!(settings.effective_max_radius_px(), 256.0);
+    /// ```
+    pub fn effective_max_radius_px(&self) -> f32 {
+        if self.separable_hbao() {
+            let apron = (SEPARABLE_HBAO_MAX_RADIUS_PX * self.resolution.scale()) as f32;
+            self.max_radius_px.min(apron)
+        } else {
+            self.max_radius_px
         }
     }
 
@@ -1137,11 +1302,20 @@ impl AoSettings {
         count("ssao.sample_count", self.ssao.sample_count)?;
         count("hbao.direction_count", self.hbao.direction_count)?;
         count("hbao.step_count", self.hbao.step_count)?;
+        if self.method == Method::HbaoPlus && self.hbao.variant == HbaoVariant::Separable {
+            return Err(SettingsError {
+                field: "hbao.variant",
+                value: "separable with method hbao-plus".into(),
+                expected: "per-pixel: the separable passes integrate hbao's horizons, which \
+                           hbao-plus does not have",
+            });
+        }
         count("gtao.slice_count", self.gtao.slice_count)?;
         count("gtao.steps_per_side", self.gtao.steps_per_side)?;
         in_unit_range("gtao.thickness", self.gtao.thickness)?;
         count("vbao.slice_count", self.vbao.slice_count)?;
         count("vbao.steps_per_side", self.vbao.steps_per_side)?;
+        count("sao.sample_count", self.sao.sample_count)?;
         positive("vbao.thickness", self.vbao.thickness)?;
         at_least("vbao.thickness_growth", self.vbao.thickness_growth, 0.0)?;
         if ![64, 128].contains(&self.noise.blue_size) {
@@ -1170,6 +1344,14 @@ impl AoSettings {
         positive("temporal.depth_threshold", self.temporal.depth_threshold)?;
         positive("spatial.depth_sigma", self.spatial.depth_sigma)?;
         at_least("spatial.normal_power", self.spatial.normal_power, 0.0)?;
+        if !(1..=MAX_SPATIAL_RADIUS).contains(&self.spatial.guided_radius) {
+            return Err(SettingsError {
+                field: "spatial.guided_radius",
+                value: self.spatial.guided_radius.to_string(),
+                expected: "an integer in 1..=8",
+            });
+        }
+        positive("spatial.guided_epsilon", self.spatial.guided_epsilon)?;
         positive("upsample_threshold", self.upsample_threshold)?;
         Ok(())
     }
@@ -1329,6 +1511,26 @@ mod tests {
             }),
             Err("spatial.normal_power")
         );
+        for guided_epsilon in [0.0, -1e-3, f32::NAN] {
+            assert_eq!(
+                spatial(SpatialSettings {
+                    kind: SpatialKind::Guided,
+                    guided_epsilon,
+                    ..base
+                }),
+                Err("spatial.guided_epsilon")
+            );
+        }
+        for guided_radius in [0, MAX_SPATIAL_RADIUS + 1] {
+            assert_eq!(
+                spatial(SpatialSettings {
+                    kind: SpatialKind::Guided,
+                    guided_radius,
+                    ..base
+                }),
+                Err("spatial.guided_radius")
+            );
+        }
         // Checked when off too, so that turning the filter on cannot fail later.
         assert_eq!(
             spatial(SpatialSettings {
@@ -1357,6 +1559,9 @@ mod tests {
         for w in DepthWeight::ALL {
             assert_eq!(w.name().parse::<DepthWeight>().unwrap(), w);
         }
+        for k in SpatialKind::ALL {
+            assert_eq!(k.name().parse::<SpatialKind>().unwrap(), k);
+        }
         for r in Resolution::ALL {
             assert_eq!(r.name().parse::<Resolution>().unwrap(), r);
         }
@@ -1370,5 +1575,41 @@ mod tests {
             assert_eq!(f.name().parse::<FilterResolution>().unwrap(), f);
         }
         assert!("hbao9".parse::<Method>().unwrap_err().contains("gtao"));
+    }
+
+    #[test]
+    fn the_separable_hbao_variant_is_refused_to_hbao_plus_and_stops_at_its_apron() {
+        let mut s = AoSettings::preset(Method::HbaoPlus, Preset::High);
+        s.hbao.variant = "separable".parse().unwrap();
+        assert_eq!(s.validate().unwrap_err().field, "hbao.variant");
+        // Kept but unused by the methods that have no `hbao` block.
+        s.method = Method::Gtao;
+        s.validate().unwrap();
+        assert_eq!(s.effective_max_radius_px(), s.max_radius_px);
+        s.method = Method::Hbao;
+        s.validate().unwrap();
+        assert_eq!(s.samples_per_pixel(), 4 * s.hbao.step_count);
+        let apron = SEPARABLE_HBAO_MAX_RADIUS_PX as f32;
+        for (resolution, max_radius_px, expected) in [
+            (Resolution::Full, 256.0, apron),
+            (Resolution::Half, 256.0, 256.0),
+            (Resolution::Half, 1000.0, 2.0 * apron),
+            (Resolution::Quarter, 1000.0, 4.0 * apron),
+            (Resolution::Full, 40.0, 40.0),
+        ] {
+            let s = AoSettings {
+                resolution,
+                max_radius_px,
+                ..s
+            };
+            assert_eq!(s.effective_max_radius_px(), expected, "{resolution:?}");
+        }
+        assert_eq!(
+            HbaoVariant::ALL.map(HbaoVariant::name),
+            ["per-pixel", "separable"]
+        );
+        for v in HbaoVariant::ALL {
+            assert_eq!(v.name().parse::<HbaoVariant>().unwrap(), v);
+        }
     }
 }

@@ -38,8 +38,23 @@ pub const NOISE: &str = include_str!("../shaders/common/noise.wgsl");
 /// The interface of the AO method kernels: `AoUniforms`, their bindings, the shaded surface and
 /// the shaping of the result.
 pub const AO: &str = include_str!("../shaders/common/ao.wgsl");
+/// The per-pixel kernels' entry point `main` and their `Estimate`, after [`AO`]; a method's
+/// file supplies `estimate`. Kernels of another shape (separable HBAO) leave it out.
+pub const AO_ENTRY: &str = include_str!("../shaders/common/ao_entry.wgsl");
 /// Slices of the hemisphere through the view vector, for the slice-based methods.
 pub const SLICE: &str = include_str!("../shaders/common/slice.wgsl");
+/// HBAO's horizon term along one direction, after [`AO`] and [`SLICE`]: the per-pixel kernel
+/// ([`HBAO`]) and the separable passes ([`HBAO_ROWS`], [`HBAO_COLUMNS`]) share it.
+///
+/// ```
+/// use aokit::shader;
+/// // Both HBAO variants march their directions with the same function.
+/// for program in [shader::HBAO, shader::HBAO_ROWS, shader::HBAO_COLUMNS] {
+///     assert!(program.parts.contains(&shader::HORIZON), "{}", program.name);
+///     assert!(program.source().contains("horizon = raise_horizon("), "{}", program.name);
+/// }
+/// ```
+pub const HORIZON: &str = include_str!("../shaders/common/horizon.wgsl");
 /// Multi-bounce AO and specular occlusion for lighting passes; see [`crate::occlusion`].
 pub const OCCLUSION: &str = include_str!("../shaders/common/occlusion.wgsl");
 
@@ -219,6 +234,31 @@ pub const SPATIAL_FILTER_VERTICAL: ShaderSource = ShaderSource {
     ],
 };
 
+/// The guided filter's settings, tile and indexing; each pass file adds its textures and entry
+/// point.
+const GUIDED_FILTER: &str = include_str!("../shaders/guided_filter.wgsl");
+
+/// First pass of the guided filter: AO and linear depth in, each window's line (slope and value
+/// at its centre) out.
+pub const GUIDED_FILTER_COEFFICIENTS: ShaderSource = ShaderSource {
+    name: "guided_filter_coefficients",
+    parts: &[
+        VIEW,
+        GUIDED_FILTER,
+        include_str!("../shaders/guided_filter_coefficients.wgsl"),
+    ],
+};
+
+/// Second pass of the guided filter: the windows' lines and linear depth in, AO out.
+pub const GUIDED_FILTER_OUTPUT: ShaderSource = ShaderSource {
+    name: "guided_filter_output",
+    parts: &[
+        VIEW,
+        GUIDED_FILTER,
+        include_str!("../shaders/guided_filter_output.wgsl"),
+    ],
+};
+
 /// The temporal filter.
 pub const TEMPORAL_FILTER: ShaderSource = ShaderSource {
     name: "temporal_filter",
@@ -328,6 +368,7 @@ macro_rules! method_kernel {
                 ENCODING,
                 NOISE,
                 AO,
+                AO_ENTRY,
                 $($snippet,)*
                 include_str!(concat!("../shaders/", $name, ".wgsl")),
             ],
@@ -340,13 +381,21 @@ pub const SSAO_CRYTEK: ShaderSource = method_kernel!("ssao_crytek");
 /// Normal-oriented hemisphere SSAO.
 pub const SSAO: ShaderSource = method_kernel!("ssao");
 /// Horizon-based AO.
-pub const HBAO: ShaderSource = method_kernel!("hbao", SLICE);
+pub const HBAO: ShaderSource = method_kernel!("hbao", SLICE, HORIZON);
 /// HBAO+'s normal-based estimator.
 pub const HBAO_PLUS: ShaderSource = method_kernel!("hbao_plus", SLICE);
 /// Ground-truth based AO.
 pub const GTAO: ShaderSource = method_kernel!("gtao", SLICE);
 /// Visibility bitmask AO.
 pub const VBAO: ShaderSource = method_kernel!("vbao", SLICE);
+/// Scalable Ambient Obscurance.
+pub const SAO: ShaderSource = method_kernel!("sao");
+
+/// One level of SAO's depth MIP chain from the level below.
+pub const DEPTH_MIPS: ShaderSource = ShaderSource {
+    name: "depth_mips",
+    parts: &[include_str!("../shaders/depth_mips.wgsl")],
+};
 
 /// The kernel of `method`.
 ///
@@ -366,8 +415,61 @@ pub fn method(method: Method) -> ShaderSource {
         Method::HbaoPlus => HBAO_PLUS,
         Method::Gtao => GTAO,
         Method::Vbao => VBAO,
+        Method::Sao => SAO,
     }
 }
+
+/// Separable HBAO's tile, line lookup, march and entry point; each pass file adds its axis and
+/// textures.
+const HBAO_SEPARABLE: &str = include_str!("../shaders/hbao_separable.wgsl");
+
+/// A separable HBAO pass: the kernels' interface without their entry point, the horizon, the
+/// passes' shared core, then its own file.
+macro_rules! separable_hbao_pass {
+    ($name:literal) => {
+        ShaderSource {
+            name: $name,
+            parts: &[
+                VIEW,
+                ENCODING,
+                NOISE,
+                AO,
+                SLICE,
+                HORIZON,
+                HBAO_SEPARABLE,
+                include_str!(concat!("../shaders/", $name, ".wgsl")),
+            ],
+        }
+    };
+}
+
+/// First pass of separable HBAO (`hbao.variant = separable`): the +x and -x horizons of every
+/// pixel from its row of linear depth in workgroup memory, their occlusion summed into an
+/// `R32Float` texture.
+///
+/// ```
+/// use aokit::shader;
+/// // One workgroup per 128-pixel segment of a row: a 1920x1080 image takes 15 x 1080.
+/// let [x, y, _] = shader::HBAO_ROWS.workgroup_size()?;
+/// assert_eq!([1920u32.div_ceil(x), 1080u32.div_ceil(y)], [15, 1080]);
+/// # Ok::<(), String>(())
+/// ```
+pub const HBAO_ROWS: ShaderSource = separable_hbao_pass!("hbao_rows");
+
+/// Second pass of separable HBAO: the +y and -y horizons from each column in workgroup memory,
+/// added to the rows pass's occlusion and stored as the AO, shaped as every method's is.
+///
+/// ```
+/// use aokit::shader;
+/// // Segments of 128 pixels, laid along x as the rows pass's are: the pass runs on the
+/// // transposed grid, a 1920x1080 image in 9 x 1920 workgroups.
+/// let [x, y, _] = shader::HBAO_COLUMNS.workgroup_size()?;
+/// assert_eq!([1080u32.div_ceil(x), 1920u32.div_ceil(y)], [9, 1920]);
+/// // The AO is stored by the same code as every method kernel's.
+/// assert!(shader::HBAO_COLUMNS.source().contains("fn store_ao("));
+/// # Ok::<(), String>(())
+/// ```
+pub const HBAO_COLUMNS: ShaderSource = separable_hbao_pass!("hbao_columns");
 
 /// The shading helpers of [`OCCLUSION`] alone: no entry point, validated so that the snippet
 /// renderers paste into their own shaders is known to compile.
@@ -391,8 +493,14 @@ pub const ALL: &[ShaderSource] = &[
     HBAO_PLUS,
     GTAO,
     VBAO,
+    SAO,
+    DEPTH_MIPS,
+    HBAO_ROWS,
+    HBAO_COLUMNS,
     SPATIAL_FILTER_HORIZONTAL,
     SPATIAL_FILTER_VERTICAL,
+    GUIDED_FILTER_COEFFICIENTS,
+    GUIDED_FILTER_OUTPUT,
     TEMPORAL_FILTER,
     DOWNSAMPLE,
     UPSAMPLE,
@@ -612,9 +720,11 @@ mod tests {
                 "shaders/{pass} is in no program of shader::ALL, so nothing validates it"
             );
         }
-        for snippet in [VIEW, ENCODING, NOISE, AO, SLICE, OCCLUSION] {
+        for snippet in [
+            VIEW, ENCODING, NOISE, AO, AO_ENTRY, SLICE, HORIZON, OCCLUSION,
+        ] {
             assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
         }
-        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 6);
+        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 8);
     }
 }

@@ -6,6 +6,7 @@ use glam::{Vec2, Vec4};
 use crate::noise;
 use crate::projection::Projection;
 use crate::settings::{AoSettings, Method, SpatialSettings};
+use crate::spiral;
 
 /// Mirrors `ViewUniforms` in `shaders/common/view.wgsl`.
 #[repr(C)]
@@ -132,7 +133,15 @@ impl AoUniforms {
                 settings.vbao.thickness * radius,
                 settings.vbao.thickness_growth,
             ),
+            // SAO's taps and the turns of their spiral.
+            Method::Sao => (
+                settings.sao.sample_count,
+                spiral::turns(settings.sao.sample_count),
+                0.0,
+                0.0,
+            ),
         };
+        let max_radius_px = settings.effective_max_radius_px();
         let mut bits = 0;
         if settings.gtao.normalize_slices {
             bits |= flags::NORMALIZE_SLICES;
@@ -147,9 +156,11 @@ impl AoUniforms {
             intensity: settings.intensity,
             power: settings.power,
             // The kernel measures in working texels; the limit is in the input's pixels, so
-            // that a lower resolution covers the same screen area.
-            max_radius_px: settings.max_radius_px / settings.resolution.scale() as f32,
-            min_radius_px: settings.min_radius_px / settings.resolution.scale() as f32,
+            // that a lower resolution covers the same screen area. The separable HBAO passes'
+            // apron may lower it, and the widening stops there too.
+            max_radius_px: max_radius_px / settings.resolution.scale() as f32,
+            min_radius_px: settings.min_radius_px.min(max_radius_px)
+                / settings.resolution.scale() as f32,
             bias: settings.bias * radius,
             angle_bias: settings.angle_bias,
             fade_mul,
@@ -216,6 +227,24 @@ impl SpatialUniforms {
             depth_scale: settings.depth_sigma.recip(),
             depth_weight: settings.depth_weight as u32,
             normal_power: settings.normal_power,
+        }
+    }
+}
+
+/// Mirrors `GuidedUniforms` in `shaders/guided_filter.wgsl`: the guided filter's window radius
+/// and regularisation.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub(crate) struct GuidedUniforms {
+    pub radius: u32,
+    pub epsilon: f32,
+}
+
+impl GuidedUniforms {
+    pub fn new(settings: &SpatialSettings) -> Self {
+        Self {
+            radius: settings.guided_radius,
+            epsilon: settings.guided_epsilon,
         }
     }
 }
@@ -368,14 +397,13 @@ mod tests {
             noise_kind,
             noise_temporal,
         });
-        for method in crate::Method::ALL {
-            shader::check_layout(
-                &shader::method(method),
-                "AoUniforms",
-                fields,
-                size_of::<AoUniforms>(),
-            )
-            .unwrap();
+        let separable_hbao = [shader::HBAO_ROWS, shader::HBAO_COLUMNS];
+        for program in crate::Method::ALL
+            .map(shader::method)
+            .iter()
+            .chain(&separable_hbao)
+        {
+            shader::check_layout(program, "AoUniforms", fields, size_of::<AoUniforms>()).unwrap();
         }
     }
 
@@ -433,6 +461,18 @@ mod tests {
                 size_of::<SpatialUniforms>(),
             )
             .unwrap();
+        }
+    }
+
+    #[test]
+    fn guided_uniforms_match_wgsl_in_both_passes() {
+        let fields = crate::field_offsets!(GuidedUniforms { radius, epsilon });
+        for pass in [
+            shader::GUIDED_FILTER_COEFFICIENTS,
+            shader::GUIDED_FILTER_OUTPUT,
+        ] {
+            shader::check_layout(&pass, "GuidedUniforms", fields, size_of::<GuidedUniforms>())
+                .unwrap();
         }
     }
 

@@ -259,3 +259,39 @@ pub fn trace(
 ) -> aokit_reference::ReferenceImage {
     trace_at(scene, 0.0, camera, size, spp)
 }
+
+/// Pixel index where the world point `world` is the visible surface of `frame`.
+pub fn pixel_of(frame: &aokit_scene::Frame, world: glam::Vec3) -> usize {
+    use glam::Vec2;
+    let view = frame.view_from_world.transform_point3(world);
+    let clip = frame.projection.clip_from_view() * view.extend(1.0);
+    let ndc = Vec2::new(clip.x, clip.y) / clip.w;
+    let size = Vec2::new(frame.size[0] as f32, frame.size[1] as f32);
+    let pixel = Vec2::new((ndc.x + 1.0) * 0.5, (1.0 - ndc.y) * 0.5) * size;
+    let index = pixel.y as usize * frame.size[0] as usize + pixel.x as usize;
+    assert!(
+        (frame.linear_depth[index] + view.z).abs() < 0.02 * -view.z,
+        "{world} is not the visible surface"
+    );
+    index
+}
+
+/// The AO of the pixels of `frame` that show a surface.
+pub fn covered(frame: &aokit_scene::Frame) -> impl Iterator<Item = f32> + '_ {
+    frame
+        .ao
+        .iter()
+        .zip(&frame.linear_depth)
+        .filter(|&(_, &d)| d > 0.0)
+        .map(|(&ao, _)| ao)
+}
+
+/// Every AO value of `frame` is finite and in [0, 1], and 1 where there is no surface.
+pub fn assert_in_range_with_sky_at_one(frame: &aokit_scene::Frame, view: &str) {
+    for (ao, depth) in frame.ao.iter().zip(&frame.linear_depth) {
+        assert!((0.0..=1.0).contains(ao), "{view}: AO {ao}");
+        if *depth == 0.0 {
+            assert_eq!(*ao, 1.0, "{view}: sky pixel AO {ao}");
+        }
+    }
+}

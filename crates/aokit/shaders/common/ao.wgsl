@@ -1,6 +1,6 @@
 // The interface every AO method kernel shares (mirrors `AoUniforms` in uniforms.rs): its settings,
-// its inputs and outputs, the surface at the pixel, the entry point, and the final shaping of
-// the result. A method's file supplies `estimate`.
+// its inputs and outputs, the surface at the pixel, and the final shaping of the result. The
+// per-pixel kernels add common/ao_entry.wgsl's entry point, and a method's file its `estimate`.
 
 struct AoUniforms {
     // World-space radius.
@@ -26,7 +26,7 @@ struct AoUniforms {
     thickness_growth: f32,
     // Samples, directions or slices.
     count: u32,
-    // Steps per direction or per side.
+    // Steps per direction or per side; SAO: turns of its spiral.
     steps: u32,
     flags: u32,
     // Exponent of the step distribution: 1 even, 2 quadratic.
@@ -180,31 +180,4 @@ fn store_unoccluded(s: Surface) {
         let n = select(vec3<f32>(0.0), s.n, s.depth != NO_SURFACE);
         textureStore(bent_out, s.pixel, vec4<f32>(n, 1.0));
     }
-}
-
-// What a method estimates for one pixel.
-struct Estimate {
-    // Cosine-weighted visibility of the hemisphere, 1 = unoccluded.
-    visibility: f32,
-    // Unnormalised mean unoccluded direction, view space (slice methods; others return n).
-    bent: vec3<f32>,
-}
-
-// 16x16 rather than 8x8: a workgroup's slices then fetch from a larger shared neighbourhood, so
-// more of their far samples hit the texture cache. Measured on an H100 (docs/performance.md):
-// GTAO `high` 8 to 17% faster, HBAO 2 to 12%; the other passes gained nothing from it.
-@compute @workgroup_size(16, 16)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let surface = load_surface(id.xy);
-    if nothing_to_sample(surface) {
-        store_unoccluded(surface);
-        return;
-    }
-    let texel = textureLoad(noise_tile, id.xy % textureDimensions(noise_tile), 0).xy;
-    let noise = pixel_noise(id.xy, view.frame_index, ao.noise_kind, ao.noise_temporal, texel);
-    let result = estimate(surface, noise);
-    store_ao(surface, result.visibility, result.bent);
 }

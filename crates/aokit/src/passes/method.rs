@@ -33,7 +33,8 @@ pub struct MethodPass {
     noise_placeholder: wgpu::TextureView,
 }
 
-fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
+/// The bindings every AO kernel declares (`common/ao.wgsl`), 0 to 7.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
     [
         bind::uniform(0),
         bind::uniform(1),
@@ -47,7 +48,8 @@ fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
 }
 
 impl MethodPass {
-    /// Creates the shared resources and compiles the kernel of `settings.method`.
+    /// Creates the shared resources and compiles the kernel of `settings.method` (none when the
+    /// separable HBAO passes run instead).
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &AoSettings) -> Self {
         // Depths are gathered and loaded, never filtered: clamping repeats edge depths instead
         // of wrapping to the other side of the image.
@@ -87,9 +89,12 @@ impl MethodPass {
         queue: &wgpu::Queue,
         settings: &AoSettings,
     ) {
-        self.kernels.entry(settings.method).or_insert_with(|| {
-            ComputeKernel::new(device, &shader::method(settings.method), &layout())
-        });
+        // The separable HBAO passes run instead of the method's kernel (`SeparableHbaoPass`).
+        if !settings.separable_hbao() {
+            self.kernels.entry(settings.method).or_insert_with(|| {
+                ComputeKernel::new(device, &shader::method(settings.method), &layout())
+            });
+        }
         self.noise_tile = noise::tile(&settings.noise).map(|tile| {
             let key = (settings.noise.kind, tile.size);
             self.noise_tiles
@@ -124,18 +129,30 @@ impl MethodPass {
         let kernel = &self.kernels[&method];
         ctx.dispatch(
             kernel,
-            &[
-                self.uniforms.as_entire_binding(),
-                wgpu::BindingResource::TextureView(linear_depth),
-                wgpu::BindingResource::TextureView(normals),
-                wgpu::BindingResource::TextureView(ao),
-                wgpu::BindingResource::Sampler(&self.point_clamp),
-                wgpu::BindingResource::TextureView(bent_normals.unwrap_or(&self.bent_placeholder)),
-                wgpu::BindingResource::TextureView(
-                    self.noise_tile
-                        .map_or(&self.noise_placeholder, |key| &self.noise_tiles[&key]),
-                ),
-            ],
+            &self.bindings(linear_depth, normals, ao, bent_normals),
         );
+    }
+
+    /// Bindings 1 to 7 of [`layout`] for the current settings, with `ao` and `bent_normals` as
+    /// [`MethodPass::encode`] takes them: what every AO kernel reads and writes.
+    pub(crate) fn bindings<'a>(
+        &'a self,
+        linear_depth: &'a wgpu::TextureView,
+        normals: &'a wgpu::TextureView,
+        ao: &'a wgpu::TextureView,
+        bent_normals: Option<&'a wgpu::TextureView>,
+    ) -> [wgpu::BindingResource<'a>; 7] {
+        [
+            self.uniforms.as_entire_binding(),
+            wgpu::BindingResource::TextureView(linear_depth),
+            wgpu::BindingResource::TextureView(normals),
+            wgpu::BindingResource::TextureView(ao),
+            wgpu::BindingResource::Sampler(&self.point_clamp),
+            wgpu::BindingResource::TextureView(bent_normals.unwrap_or(&self.bent_placeholder)),
+            wgpu::BindingResource::TextureView(
+                self.noise_tile
+                    .map_or(&self.noise_placeholder, |key| &self.noise_tiles[&key]),
+            ),
+        ]
     }
 }

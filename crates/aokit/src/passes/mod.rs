@@ -4,11 +4,14 @@
 //! companion crates write their passes the same way.
 
 pub(crate) mod decode_normals;
+pub(crate) mod depth_mips;
+pub(crate) mod guided_filter;
 pub(crate) mod linear_depth;
 pub(crate) mod mask;
 pub(crate) mod method;
 pub(crate) mod normals_from_depth;
 pub(crate) mod resample;
+pub(crate) mod separable_hbao;
 pub(crate) mod spatial_filter;
 pub(crate) mod temporal_filter;
 

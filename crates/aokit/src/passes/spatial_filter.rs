@@ -5,7 +5,7 @@
 use super::method::AO_FORMAT;
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::create_uniform_buffer;
-use crate::settings::SpatialSettings;
+use crate::settings::{SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::SpatialUniforms;
 
@@ -24,8 +24,8 @@ pub struct SpatialFilterPass {
 }
 
 impl SpatialFilterPass {
-    /// Creates the settings buffer and uploads `settings`, compiling the kernels if they are
-    /// enabled.
+    /// Creates the settings buffer and uploads `settings`, compiling the kernels if they
+    /// enable the bilateral kind.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
         let mut pass = Self {
             kernels: None,
@@ -36,14 +36,14 @@ impl SpatialFilterPass {
     }
 
     /// Uploads validated settings for later `encode`s, compiling the kernels the first time
-    /// they are enabled.
+    /// they enable the bilateral kind.
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         settings: &SpatialSettings,
     ) {
-        if settings.enabled && self.kernels.is_none() {
+        if settings.enabled && settings.kind == SpatialKind::Bilateral && self.kernels.is_none() {
             // View, filter settings, normals, and each pass's first input: the AO along rows,
             // the packed AO and depth along columns.
             let shared = [
@@ -82,7 +82,8 @@ impl SpatialFilterPass {
     /// `output` (`R32Float`, as the AO kernels write).
     ///
     /// # Panics
-    /// When the settings given so far never enabled the filter, so its kernels never compiled.
+    /// When the settings given so far never enabled the bilateral kind, so its kernels never
+    /// compiled.
     ///
     /// See [`SpatialFilterPass`] for an example.
     pub fn encode(
@@ -122,7 +123,7 @@ impl SpatialFilterPass {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use glam::Vec3;
 
     use super::*;
@@ -133,9 +134,9 @@ mod tests {
     use crate::{GpuContext, Projection};
 
     /// Neither side a multiple of the 64-pixel segments, so partial workgroups run both ways.
-    const SIZE: [u32; 2] = [100, 70];
+    pub(crate) const SIZE: [u32; 2] = [100, 70];
     /// Columns left of this are a near plane, the rest a far one.
-    const STEP_X: u32 = 40;
+    pub(crate) const STEP_X: u32 = 40;
 
     #[test]
     fn constants_match_wgsl() {
@@ -166,14 +167,14 @@ mod tests {
     }
 
     /// One synthetic frame, row by row: AO, linear depth (0: sky) and view-space normals.
-    struct Image {
-        ao: Vec<f32>,
-        depth: Vec<f32>,
-        normals: Vec<Vec3>,
+    pub(crate) struct Image {
+        pub ao: Vec<f32>,
+        pub depth: Vec<f32>,
+        pub normals: Vec<Vec3>,
     }
 
     /// A value in [0, 1) that looks random from pixel to pixel.
-    fn hash(x: u32, y: u32) -> f32 {
+    pub(crate) fn hash(x: u32, y: u32) -> f32 {
         let h =
             (x.wrapping_mul(73_856_093) ^ y.wrapping_mul(19_349_663)).wrapping_mul(2_654_435_761);
         (h >> 8) as f32 / (1u32 << 24) as f32
@@ -182,7 +183,7 @@ mod tests {
     /// Sky in the top 10 rows and a 3x3 hole; below, a near plane (depth about 2, facing the
     /// eye) left of `STEP_X` and a slanted far one (depth 6 to 8) right of it, with AO from
     /// `ao(near, x, y)`.
-    fn image(ao: impl Fn(bool, u32, u32) -> f32) -> Image {
+    pub(crate) fn image(ao: impl Fn(bool, u32, u32) -> f32) -> Image {
         let mut image = Image {
             ao: Vec::new(),
             depth: Vec::new(),
@@ -205,35 +206,53 @@ mod tests {
         image
     }
 
-    /// The filtered AO of `image`, from both passes on the GPU.
-    fn filter(gpu: &GpuContext, settings: &SpatialSettings, image: &Image) -> Vec<f32> {
+    /// `image` on the GPU, with an intermediate and an output texture for a filter's two
+    /// passes to write.
+    pub(crate) struct Textures {
+        pub ao: wgpu::TextureView,
+        pub depth: wgpu::TextureView,
+        pub normals: wgpu::TextureView,
+        pub packed: wgpu::TextureView,
+        pub output: wgpu::TextureView,
+    }
+
+    /// Runs `encode` on `image`'s textures at `SIZE` and reads back the output.
+    pub(crate) fn run_filter(
+        gpu: &GpuContext,
+        image: &Image,
+        encode: impl FnOnce(&mut PassContext<'_>, &Textures),
+    ) -> Vec<f32> {
         let (device, queue) = (&gpu.device, &gpu.queue);
         let upload = |label, format, bytes: &[u8]| {
             upload_texture_2d(device, queue, label, SIZE, format, bytes)
                 .unwrap()
                 .create_view(&Default::default())
         };
-        let ao = upload(
-            "ao",
-            wgpu::TextureFormat::R32Float,
-            bytemuck::cast_slice(&image.ao),
-        );
-        let depth = upload(
-            "depth",
-            wgpu::TextureFormat::R32Float,
-            bytemuck::cast_slice(&image.depth),
-        );
         let packed_normals: Vec<u32> = image.normals.iter().map(|&n| pack_oct32(n)).collect();
-        let normals = upload(
-            "normals",
-            wgpu::TextureFormat::R32Uint,
-            bytemuck::cast_slice(&packed_normals),
-        );
         let usage = wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
-        let packed = create_texture_2d(device, "packed", SIZE, PACKED_FORMAT, usage);
         let output = create_texture_2d(device, "output", SIZE, AO_FORMAT, usage);
+        let textures = Textures {
+            ao: upload(
+                "ao",
+                wgpu::TextureFormat::R32Float,
+                bytemuck::cast_slice(&image.ao),
+            ),
+            depth: upload(
+                "depth",
+                wgpu::TextureFormat::R32Float,
+                bytemuck::cast_slice(&image.depth),
+            ),
+            normals: upload(
+                "normals",
+                wgpu::TextureFormat::R32Uint,
+                bytemuck::cast_slice(&packed_normals),
+            ),
+            packed: create_texture_2d(device, "packed", SIZE, PACKED_FORMAT, usage)
+                .create_view(&Default::default()),
+            output: output.create_view(&Default::default()),
+        };
         let view_uniforms = create_uniform_buffer::<ViewUniforms>(device, "view");
         let projection = Projection::perspective(1.0, SIZE[0] as f32 / SIZE[1] as f32, 0.1, None);
         queue.write_buffer(
@@ -241,9 +260,8 @@ mod tests {
             0,
             bytemuck::bytes_of(&ViewUniforms::new(&projection, SIZE, 0)),
         );
-        let pass = SpatialFilterPass::new(device, queue, settings);
         let mut encoder = device.create_command_encoder(&Default::default());
-        pass.encode(
+        encode(
             &mut PassContext {
                 device,
                 encoder: &mut encoder,
@@ -251,14 +269,18 @@ mod tests {
                 size: SIZE,
                 timer: None,
             },
-            &ao,
-            &depth,
-            &normals,
-            &packed.create_view(&Default::default()),
-            &output.create_view(&Default::default()),
+            &textures,
         );
         queue.submit([encoder.finish()]);
         read_texture_f32(device, queue, &output).unwrap()
+    }
+
+    /// The filtered AO of `image`, from both passes on the GPU.
+    fn filter(gpu: &GpuContext, settings: &SpatialSettings, image: &Image) -> Vec<f32> {
+        let pass = SpatialFilterPass::new(&gpu.device, &gpu.queue, settings);
+        run_filter(gpu, image, |ctx, t| {
+            pass.encode(ctx, &t.ao, &t.depth, &t.normals, &t.packed, &t.output);
+        })
     }
 
     /// The extremes of the kernel: radius 1 and 8, both depth weights, with a normal weight.
@@ -288,12 +310,12 @@ mod tests {
         ]
     }
 
-    fn gpu() -> GpuContext {
+    pub(crate) fn gpu() -> GpuContext {
         GpuContext::headless()
             .expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
     }
 
-    fn standard_deviation(values: impl Iterator<Item = f32> + Clone) -> f32 {
+    pub(crate) fn standard_deviation(values: impl Iterator<Item = f32> + Clone) -> f32 {
         let n = values.clone().count() as f32;
         let mean = values.clone().sum::<f32>() / n;
         (values.map(|v| (v - mean) * (v - mean)).sum::<f32>() / n).sqrt()
