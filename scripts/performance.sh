@@ -25,7 +25,7 @@ set_view() {
     esac
 }
 configurations=()
-for method in ssao-crytek ssao hbao hbao-plus gtao vbao sao; do
+for method in ssao-crytek ssao hbao hbao-plus gtao vbao sao ue4-ssao msvo; do
     for preset in low medium high ultra; do
         configurations+=("--method $method --preset $preset")
     done
@@ -65,14 +65,16 @@ for size in 1920x1080 3840x2160; do
         >"$out/passes-sponza-atrium-$size.json"
     echo "wrote $out/passes-sponza-atrium-$size.json" >&2
 done
-# The separable HBAO against the per-pixel one at the same samples (four directions), and SAO's
-# passes, to OUT/variants-SCENE-SIZE.json.
+# The separable HBAO against the per-pixel one at the same samples (four directions), and the
+# passes of SAO, UE4's SSAO and MSVO (one per level), to OUT/variants-SCENE-SIZE.json.
 variants=(
     "--method hbao --preset high --set hbao.direction_count=4"
     "--method hbao --preset high --set hbao.variant=separable"
     "--method hbao --preset high --set hbao.direction_count=4 --set resolution=half"
     "--method hbao --preset high --set hbao.variant=separable --set resolution=half"
     "--method sao --preset high"
+    "--method ue4-ssao --preset high"
+    "--method msvo --preset high"
 )
 for scene in room sponza-atrium; do
     set_view "$scene"

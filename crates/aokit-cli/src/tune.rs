@@ -34,10 +34,11 @@ pub struct TuneArgs {
     /// Image size of every view.
     #[arg(long, value_name = "WxH", default_value = "240x135", value_parser = parse_size)]
     pub size: [u32; 2],
-    /// Methods to tune, comma-separated, or `all`. `ssao-crytek` and `sao` are left out unless
-    /// named: their presets keep their published forms, Crytek's 2007 formulation, whose grey
-    /// look is what the method is chosen for (the search would trade it away: docs/tuning.md),
-    /// and the SAO paper's parameters.
+    /// Methods to tune, comma-separated, or `all`. `ssao-crytek`, `sao`, `ue4-ssao` and `msvo`
+    /// are left out unless named: their presets keep their published forms, Crytek's 2007
+    /// formulation, whose grey look is what the method is chosen for (the search would trade
+    /// it away: docs/tuning.md), the SAO paper's parameters, Unreal's as seed 002 gives them
+    /// and Unity's MSVO defaults (seed 003).
     #[arg(
         long,
         value_delimiter = ',',
@@ -99,10 +100,11 @@ pub struct Candidate {
 /// The setting each method's knob is.
 pub fn knob_name(method: Method) -> &'static str {
     match method {
-        Method::SsaoCrytek | Method::Ssao | Method::Sao => "bias",
+        Method::SsaoCrytek | Method::Ssao | Method::Sao | Method::Ue4Ssao => "bias",
         Method::Hbao | Method::HbaoPlus => "angle_bias",
         Method::Gtao => "gtao.thickness",
         Method::Vbao => "vbao.thickness",
+        Method::Msvo => "msvo.thickness",
     }
 }
 
@@ -113,6 +115,8 @@ impl Candidate {
             Method::SsaoCrytek => (settings.bias, [settings.ssao_crytek.sample_count, 1]),
             Method::Ssao => (settings.bias, [settings.ssao.sample_count, 1]),
             Method::Sao => (settings.bias, [settings.sao.sample_count, 1]),
+            Method::Ue4Ssao => (settings.bias, [settings.ue4_ssao.sample_count, 1]),
+            Method::Msvo => (settings.msvo.thickness, [settings.msvo.sample_count, 1]),
             Method::Hbao | Method::HbaoPlus => (
                 settings.angle_bias,
                 [settings.hbao.direction_count, settings.hbao.step_count],
@@ -151,6 +155,8 @@ impl Candidate {
             Method::SsaoCrytek => (s.bias, s.ssao_crytek.sample_count) = (self.knob, a),
             Method::Ssao => (s.bias, s.ssao.sample_count) = (self.knob, a),
             Method::Sao => (s.bias, s.sao.sample_count) = (self.knob, a),
+            Method::Ue4Ssao => (s.bias, s.ue4_ssao.sample_count) = (self.knob, a),
+            Method::Msvo => (s.msvo.thickness, s.msvo.sample_count) = (self.knob, a),
             Method::Hbao | Method::HbaoPlus => {
                 s.angle_bias = self.knob;
                 (s.hbao.direction_count, s.hbao.step_count) = (a, b);
@@ -217,15 +223,20 @@ fn dimensions(method: Method, at: &Candidate, samples: u32) -> Vec<Dimension> {
     let knob: &[f32] = match method {
         // Not 0: the views hold 32-bit float depth, and with 16- or 24-bit depth a plane
         // needs some bias not to occlude itself.
-        Method::SsaoCrytek | Method::Ssao | Method::Sao => {
+        Method::SsaoCrytek | Method::Ssao | Method::Sao | Method::Ue4Ssao => {
             &[0.005, 0.01, 0.02, 0.04, 0.08, 0.12, 0.2, 0.3]
         }
         Method::Hbao | Method::HbaoPlus => &[0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5],
         Method::Gtao => &[0.0, 0.05, 0.1, 0.2, 0.3, 0.5],
         Method::Vbao => &[0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.3],
+        // Unity's slider runs from 1 to 10; below 1 rejects occluders of a plain crease.
+        Method::Msvo => &[0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0],
     };
     dims.push(along(knob_name(method), knob, |c, v| c.knob = v));
-    if matches!(method, Method::SsaoCrytek | Method::Ssao | Method::Sao) {
+    if matches!(
+        method,
+        Method::SsaoCrytek | Method::Ssao | Method::Sao | Method::Ue4Ssao | Method::Msvo
+    ) {
         return dims;
     }
     dims.push(along("step_power", STEP_POWERS, |c, v| c.step_power = v));

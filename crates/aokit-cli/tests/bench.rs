@@ -236,3 +236,47 @@ fn separable_hbao_is_timed_per_pass_and_refused_to_hbao_plus() {
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("hbao.variant"), "{stderr}");
 }
+
+#[test]
+fn msvo_is_timed_per_level_and_refuses_an_odd_sample_count() {
+    let (stdout, stderr) = bench_ok(&["--json", "--method", "msvo"]);
+    let object: Value = serde_json::from_str(&stdout).expect("stdout is one JSON value");
+    assert_eq!(object["settings"]["msvo"]["levels"], 5);
+    let passes = check_object(&object, &stderr);
+    if !passes.is_empty() {
+        // The chain's four levels, each level's obscurance, then the merges coarsest first.
+        let msvo: Vec<&str> = passes
+            .iter()
+            .map(String::as_str)
+            .filter(|p| p.starts_with("depth_mips") || p.starts_with("msvo"))
+            .collect();
+        assert_eq!(
+            msvo,
+            [
+                "depth_mips_1",
+                "depth_mips_2",
+                "depth_mips_3",
+                "depth_mips_4",
+                "msvo_obscurance_0",
+                "msvo_obscurance_1",
+                "msvo_obscurance_2",
+                "msvo_obscurance_3",
+                "msvo_obscurance_4",
+                "msvo_merge_3",
+                "msvo_merge_2",
+                "msvo_merge_1",
+                "msvo_merge_0",
+            ]
+        );
+    }
+    let out = bench(
+        &[
+            &TINY[..],
+            &["--method", "msvo", "--set", "msvo.sample_count=7"],
+        ]
+        .concat(),
+    );
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("msvo.sample_count"), "{stderr}");
+}

@@ -67,8 +67,9 @@ fn the_presets_are_the_tuning_table() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/tuning.json");
     let json: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let results = json["results"].as_array().unwrap();
-    // Every method but ssao-crytek and sao, whose presets keep their published forms.
-    assert_eq!(results.len(), (Method::ALL.len() - 2) * Preset::ALL.len());
+    // Every method but ssao-crytek, sao, ue4-ssao and msvo, whose presets keep their published
+    // forms.
+    assert_eq!(results.len(), (Method::ALL.len() - 4) * Preset::ALL.len());
     for preset in Preset::ALL {
         let crytek = AoSettings::preset(Method::SsaoCrytek, preset);
         assert_eq!(
@@ -81,11 +82,29 @@ fn the_presets_are_the_tuning_table() {
             (sao.power, sao.falloff, sao.radius_multiplier, sao.bias),
             (1.0, 0.0, 1.0, 0.01)
         );
+        // Seed 002's Unreal SSAO: its weight's linear fade over the radius, its flat-surface
+        // bias of 5 units at Unreal's default 200-unit radius, half the samples in pairs.
+        let ue4 = AoSettings::preset(Method::Ue4Ssao, preset);
+        assert_eq!(
+            (ue4.power, ue4.falloff, ue4.radius_multiplier, ue4.bias),
+            (1.0, 1.0, 1.0, 0.025)
+        );
+        let gtao = AoSettings::preset(Method::Gtao, preset);
+        assert_eq!(ue4.samples_per_pixel(), gtao.samples_per_pixel());
+        // Unity's MSVO defaults (seed 003): thickness modifier 1, every level, no shaping.
+        let msvo = AoSettings::preset(Method::Msvo, preset);
+        assert_eq!(
+            (msvo.power, msvo.falloff, msvo.radius_multiplier),
+            (1.0, 0.0, 1.0)
+        );
+        assert_eq!((msvo.msvo.thickness, msvo.msvo.levels), (1.0, 5));
+        assert_eq!(msvo.samples_per_pixel(), gtao.samples_per_pixel());
     }
     assert!(
         results
             .iter()
-            .all(|r| !["ssao-crytek", "sao"].contains(&r["method"].as_str().unwrap())),
+            .all(|r| !["ssao-crytek", "sao", "ue4-ssao", "msvo"]
+                .contains(&r["method"].as_str().unwrap())),
         "the published forms are not tuned"
     );
     for r in results {
@@ -107,6 +126,8 @@ fn the_presets_are_the_tuning_table() {
             Method::SsaoCrytek => (s.bias, [s.ssao_crytek.sample_count, 1]),
             Method::Ssao => (s.bias, [s.ssao.sample_count, 1]),
             Method::Sao => (s.bias, [s.sao.sample_count, 1]),
+            Method::Ue4Ssao => (s.bias, [s.ue4_ssao.sample_count, 1]),
+            Method::Msvo => (s.msvo.thickness, [s.msvo.sample_count, 1]),
             Method::Hbao | Method::HbaoPlus => {
                 (s.angle_bias, [s.hbao.direction_count, s.hbao.step_count])
             }

@@ -42,9 +42,10 @@ const MAX_RADIUS: u32 = 8u;
 
 // Workgroups of GROUP x GROUP threads, one per pixel. Both passes read every texel of the
 // workgroup's block and `radius` more on each side: staged once in workgroup memory, each
-// texel is loaded once per workgroup instead of once per tap ((8 + 2 radius)^2 / 64 loads per
-// pixel against (2 radius + 1)^2).
-const GROUP: u32 = 8u;
+// texel is loaded once per workgroup instead of once per tap ((16 + 2 radius)^2 / 256 loads
+// per pixel against (2 radius + 1)^2). 16 rather than 8: on an H100 each pass took half the
+// time (docs/performance.md), the staging and its barrier being paid per workgroup.
+const GROUP: u32 = 16u;
 const TILE: u32 = GROUP + 2u * MAX_RADIUS;
 
 // Side of the staged tile at the current radius.

@@ -36,8 +36,9 @@ pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
     AoSettings, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings, HbaoVariant,
-    Method, NoiseKind, NoiseSettings, NormalEncoding, NormalSource, NormalSpace, NormalsSettings,
-    Preset, Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX, SettingsError, SpatialKind, SpatialSettings,
-    SsaoSettings, TemporalOffset, TemporalSettings, Upsample, VbaoSettings,
+    MSVO_MAX_LEVELS, Method, MsvoSettings, NoiseKind, NoiseSettings, NormalEncoding, NormalSource,
+    NormalSpace, NormalsSettings, Preset, Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX, SettingsError,
+    SpatialKind, SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings, Ue4SsaoSettings,
+    Upsample, VbaoSettings,
 };
 pub use timing::PassTime;

@@ -7,18 +7,19 @@ use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
 use crate::passes::decode_normals::DecodeNormalsPass;
-use crate::passes::depth_mips::DepthMipsPass;
+use crate::passes::depth_mips::{DepthMipsPass, DepthReduction};
 use crate::passes::guided_filter::GuidedFilterPass;
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::mask::MaskPass;
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
+use crate::passes::msvo::MsvoPass;
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
 use crate::passes::resample::{DownsampleTargets, ResamplePass, WORKING_MOTION_FORMAT};
 use crate::passes::separable_hbao::SeparableHbaoPass;
 use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
 use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
 use crate::settings::{
-    AoSettings, FilterResolution, NormalEncoding, NormalSource, NormalSpace, SpatialKind,
+    AoSettings, FilterResolution, Method, NormalEncoding, NormalSource, NormalSpace, SpatialKind,
 };
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
@@ -283,12 +284,14 @@ pub struct AoOutputs<'a> {
     /// it blended. A debug view of where ghosting or fresh noise can show. At the filters'
     /// size: [`AoOutputs::working_size`], or the input's with [`FilterResolution::Full`].
     pub history_rejected: Option<&'a wgpu::Texture>,
-    /// With a method that reads one (`sao`, see
+    /// With a method that reads one (`sao`, `ue4-ssao`, see
     /// [`Method::reads_depth_mips`](crate::Method::reads_depth_mips)): the depth MIP chain its
     /// kernel read, `R32Float` at [`AoOutputs::working_size`], up to five levels: level 0 is
-    /// [`AoOutputs::working_linear_depth`], each further level keeps one depth of every 2x2
-    /// block of the level below (the texel at offset `(y & 1, x & 1)` of texel `(x, y)`'s
-    /// block, clamped to the level), never an average.
+    /// [`AoOutputs::working_linear_depth`], each further level reduces every 2x2 block of the
+    /// level below (blocks clamped to the level), never to an average. For `sao` it keeps one
+    /// depth of the four, the texel at offset `(y & 1, x & 1)` of texel `(x, y)`'s block; for
+    /// `ue4-ssao` the largest, so that each texel of level `k` holds the furthest depth of its
+    /// `2^k x 2^k` block of level 0.
     pub depth_mips: Option<&'a wgpu::Texture>,
 }
 
@@ -324,10 +327,13 @@ pub struct AoPipeline {
     /// Runs instead of `method`'s kernel for `hbao.variant = separable`; compiled the first
     /// time that is chosen.
     separable_hbao: Option<SeparableHbaoPass>,
+    /// Runs instead of a single kernel for `msvo`; compiled the first time that is chosen.
+    msvo: Option<MsvoPass>,
     denoiser: Denoiser,
     /// Compiled the first time the resolution is below full.
     resample: Option<ResamplePass>,
-    /// Compiled the first time a method reads a depth MIP chain.
+    /// Made the first time a method reads a depth MIP chain; each reduction's kernel compiles
+    /// on first use.
     depth_mips: Option<DepthMipsPass>,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
@@ -368,6 +374,7 @@ impl AoPipeline {
             input_normals_view: None,
             method: MethodPass::new(device, queue, settings),
             separable_hbao: None,
+            msvo: None,
             denoiser: Denoiser {
                 spatial: SpatialFilterPass::new(device, queue, &settings.spatial),
                 guided: GuidedFilterPass::new(device, queue, &settings.spatial),
@@ -651,20 +658,35 @@ impl AoPipeline {
         };
         // A method that reads a depth MIP chain binds it where the others bind the working
         // depth, which is its level 0.
-        let kernel_depth = match &targets.depth_mips {
-            Some((chain, view)) => {
+        let kernel_depth = match (&targets.depth_mips, DepthReduction::of(settings.method)) {
+            (Some((chain, view)), Some(reduction)) => {
                 let working_texture = match &targets.working {
                     Some(working) => &working.linear_depth.0,
                     None => &targets.linear_depth.0,
                 };
                 self.depth_mips
-                    .get_or_insert_with(|| DepthMipsPass::new(device))
-                    .encode(&mut ctx, working_texture, chain);
+                    .get_or_insert_with(DepthMipsPass::default)
+                    .encode(&mut ctx, reduction, working_texture, chain);
                 view
             }
-            None => working_depth,
+            _ => working_depth,
         };
-        if settings.separable_hbao() {
+        if settings.method == Method::Msvo {
+            let (chain, _) = targets
+                .depth_mips
+                .as_ref()
+                .expect("msvo reads a depth MIP chain");
+            self.msvo
+                .get_or_insert_with(|| MsvoPass::new(device))
+                .encode(
+                    &mut ctx,
+                    &self.method,
+                    chain,
+                    working_normals,
+                    &targets.ao.1,
+                    settings.msvo.levels,
+                );
+        } else if settings.separable_hbao() {
             self.separable_hbao
                 .get_or_insert_with(|| SeparableHbaoPass::new(device))
                 .encode(

@@ -92,6 +92,14 @@ named_enum! {
         /// from a depth MIP level chosen by their distance, scored by the paper's obscurance
         /// estimator.
         Sao = "sao",
+        /// Unreal Engine 4's legacy SSAO (seed 002): sample pairs mirrored about the pixel,
+        /// occlusion from the angle between each pair, read from a furthest-depth MIP chain.
+        Ue4Ssao = "ue4-ssao",
+        /// Multi-scale volumetric obscurance (Microsoft MiniEngine's SSAO, Unity
+        /// PostProcessing's MSVO): the fraction of a sphere in front of the depth buffer,
+        /// from mirrored sample pairs at each level of a depth MIP chain, the levels merged
+        /// by a depth-aware upsample.
+        Msvo = "msvo",
     }
 }
 
@@ -114,17 +122,19 @@ impl Method {
     }
 
     /// Whether the method's kernel reads a depth MIP chain, which the pipeline then builds
-    /// from the working linear depth each frame (and otherwise never makes).
+    /// from the working linear depth each frame (and otherwise never makes): `sao`'s keeps one
+    /// depth of every 2x2 block (and `msvo`'s, whose levels are its scales), `ue4-ssao`'s the
+    /// furthest.
     ///
     /// ```
     /// use aokit::Method;
     /// // Budget the chain's memory (a third more than the depth) only where it is built.
     /// let with_chain: Vec<Method> =
     ///     Method::ALL.into_iter().filter(|m| m.reads_depth_mips()).collect();
-    /// assert_eq!(with_chain, [Method::Sao]);
+    /// assert_eq!(with_chain, [Method::Sao, Method::Ue4Ssao, Method::Msvo]);
     /// ```
     pub fn reads_depth_mips(self) -> bool {
-        self == Method::Sao
+        matches!(self, Method::Sao | Method::Ue4Ssao | Method::Msvo)
     }
 }
 
@@ -761,6 +771,124 @@ impl SsaoSettings {
     }
 }
 
+/// Sampling of `ue4-ssao`: how many mirrored sample pairs, and which of Unreal's two versions
+/// scores them (seed 002).
+///
+/// ```
+/// use aokit::{AoSettings, Method, Preset};
+/// let mut settings = AoSettings::preset(Method::Ue4Ssao, Preset::High);
+/// // Nine pairs: 18 depth samples, the budget of every method at `high`.
+/// assert_eq!(settings.ue4_ssao.sample_count, 9);
+/// assert_eq!(settings.samples_per_pixel(), 18);
+/// // The depth-only version, for inputs without normals worth reading.
+/// settings.ue4_ssao.use_normals = false;
+/// settings.validate()?;
+/// # Ok::<(), aokit::SettingsError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Ue4SsaoSettings {
+    /// Sample pairs per pixel, each two depth samples mirrored about the pixel, so a pixel
+    /// reads `2 * sample_count` depths. Their directions split the half circle evenly.
+    pub sample_count: u32,
+    /// The normal version: each sample's angle is measured from the tangent plane of the
+    /// pixel's normal. Off, the depth-only version: the angle between the two samples of each
+    /// pair, with the flat-surface bias ([`AoSettings::bias`]) telling creases from ridges.
+    pub use_normals: bool,
+}
+
+impl Default for Ue4SsaoSettings {
+    fn default() -> Self {
+        Self::preset(Preset::default())
+    }
+}
+
+impl Ue4SsaoSettings {
+    /// The pairs of a preset, half its depth samples, and the normal version.
+    ///
+    /// ```
+    /// use aokit::{Preset, Ue4SsaoSettings};
+    /// let pairs = Preset::ALL.map(|p| Ue4SsaoSettings::preset(p).sample_count);
+    /// assert_eq!(pairs, [2, 4, 9, 27]);
+    /// ```
+    pub fn preset(preset: Preset) -> Self {
+        Self {
+            sample_count: presets::samples(preset) / 2,
+            // Our inputs always carry normals (decoded or reconstructed), and the normal
+            // version needs no bias to keep planes and ridges unoccluded.
+            use_normals: true,
+        }
+    }
+}
+
+/// Sampling of `msvo`: sample pairs per level, how many levels, and Unity's thickness
+/// modifier (docs/methods.md, "msvo").
+///
+/// ```
+/// use aokit::{AoSettings, Method, MsvoSettings, Preset};
+/// // Unity's "Thickness Modifier" at 2: occluders count further in front of the sphere,
+/// // darker creases at the price of halos around objects.
+/// let msvo = MsvoSettings { thickness: 2.0, ..MsvoSettings::preset(Preset::High) };
+/// let settings = AoSettings { msvo, ..AoSettings::preset(Method::Msvo, Preset::High) };
+/// settings.validate()?;
+/// // The coarsest of five levels holds a disc of 5 texels of 16 pixels: 80 pixels at most.
+/// assert_eq!(settings.effective_max_radius_px(), 80.0);
+/// // Samples come in mirrored pairs: an odd count is refused.
+/// let odd = AoSettings { msvo: MsvoSettings { sample_count: 7, ..msvo }, ..settings };
+/// assert_eq!(odd.validate().unwrap_err().field, "msvo.sample_count");
+/// # Ok::<(), aokit::SettingsError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MsvoSettings {
+    /// Depth samples per texel at each level, in mirrored pairs (even, 2 to 64), on a disc of
+    /// 5 texels of the level. The working level costs this many per pixel; each coarser level
+    /// a quarter of the one before, so all five at most a third more.
+    pub sample_count: u32,
+    /// Levels of the depth MIP chain the obscurance is computed at, 1 to [`MSVO_MAX_LEVELS`]:
+    /// level `k` covers radii up to `5 * 2^k` working texels, so the screen radius stops at
+    /// `5 * 2^(levels - 1)` ([`AoSettings::effective_max_radius_px`]).
+    pub levels: u32,
+    /// Unity's thickness modifier (MiniEngine's rejection falloff): a sample more than this
+    /// many sphere chords in front of the sphere is taken for a thin occluder and rejected.
+    /// Larger values darken creases and add halos around objects; must be > 0.
+    pub thickness: f32,
+}
+
+/// Most levels `msvo` runs: the working resolution and the four coarser levels of the depth
+/// MIP chain, as Unity's MSVO merges four downsampled levels.
+pub const MSVO_MAX_LEVELS: u32 = 5;
+
+/// Radius of `msvo`'s sample disc in texels of each level (MiniEngine's and Unity's 5).
+const MSVO_DISC_RADIUS: u32 = 5;
+
+impl Default for MsvoSettings {
+    fn default() -> Self {
+        Self::preset(Preset::default())
+    }
+}
+
+impl MsvoSettings {
+    /// A preset's samples per level, all five levels, and Unity's default thickness of 1.
+    ///
+    /// ```
+    /// use aokit::{MsvoSettings, Preset};
+    /// let counts = Preset::ALL.map(|p| MsvoSettings::preset(p).sample_count);
+    /// assert_eq!(counts, [4, 8, 18, 54]);
+    /// assert_eq!(MsvoSettings::preset(Preset::Low).levels, aokit::MSVO_MAX_LEVELS);
+    /// ```
+    pub fn preset(preset: Preset) -> Self {
+        let tuned = presets::preset_values(Method::Msvo, preset);
+        Self {
+            sample_count: tuned.split[0],
+            // Every level at every preset: fewer levels cut the radius, not just the cost
+            // (the coarser four add at most a third to the working level's samples).
+            levels: MSVO_MAX_LEVELS,
+            thickness: tuned.knob,
+        }
+    }
+}
+
 /// Ray-marching counts of `hbao` and `hbao-plus`, and how `hbao` runs.
 ///
 /// ```
@@ -1024,7 +1152,9 @@ pub struct AoSettings {
     /// where the radius falls under one pixel.
     pub min_radius_px: f32,
     /// Self-occlusion bias of the point-sampling methods, as a fraction of the radius: a sample
-    /// must lie this far behind the depth buffer to count as occluded.
+    /// must lie this far behind the depth buffer to count as occluded. For `ue4-ssao`'s
+    /// depth-only version, Unreal's flat-surface bias: a pair occludes only where its two
+    /// samples together lie this far nearer the eye than the pixel.
     pub bias: f32,
     /// Angle bias of the horizon methods, radians: horizons must rise this far above the tangent
     /// plane to occlude, which hides the false occlusion of tessellated curved surfaces.
@@ -1054,6 +1184,10 @@ pub struct AoSettings {
     pub vbao: VbaoSettings,
     /// `sao` taps on its spiral.
     pub sao: SsaoSettings,
+    /// `ue4-ssao` sample pairs and version.
+    pub ue4_ssao: Ue4SsaoSettings,
+    /// `msvo` sample pairs, levels and thickness.
+    pub msvo: MsvoSettings,
     /// Normal encoding and source.
     pub normals: NormalsSettings,
     /// Sampling noise.
@@ -1147,7 +1281,12 @@ impl AoSettings {
             // shadowing, and samples that far apart miss the texture cache.
             max_radius_px: 256.0,
             min_radius_px: 0.0,
-            bias: knob(&[Method::Ssao, Method::SsaoCrytek, Method::Sao]),
+            bias: knob(&[
+                Method::Ssao,
+                Method::SsaoCrytek,
+                Method::Sao,
+                Method::Ue4Ssao,
+            ]),
             angle_bias: knob(&[Method::Hbao, Method::HbaoPlus]),
             step_power: tuned.step_power,
             max_distance: 0.0,
@@ -1159,6 +1298,8 @@ impl AoSettings {
             gtao: GtaoSettings::preset(preset),
             vbao: VbaoSettings::preset(preset),
             sao: SsaoSettings::preset(preset),
+            ue4_ssao: Ue4SsaoSettings::preset(preset),
+            msvo: MsvoSettings::preset(preset),
             normals: NormalsSettings::default(),
             noise: NoiseSettings::default(),
             spatial: SpatialSettings::default(),
@@ -1195,6 +1336,9 @@ impl AoSettings {
             Method::Gtao => 2 * self.gtao.slice_count * self.gtao.steps_per_side,
             Method::Vbao => 2 * self.vbao.slice_count * self.vbao.steps_per_side,
             Method::Sao => self.sao.sample_count,
+            Method::Ue4Ssao => 2 * self.ue4_ssao.sample_count,
+            // The working level's; the coarser levels add at most a third.
+            Method::Msvo => self.msvo.sample_count,
         }
     }
 
@@ -1208,7 +1352,8 @@ impl AoSettings {
     /// or less with the separable HBAO variant, whose samples must stay inside its workgroup's
     /// apron of [`SEPARABLE_HBAO_MAX_RADIUS_PX`] working texels. A pixel whose radius would
     /// reach farther works with the world radius that covers this many pixels, and
-    /// [`min_radius_px`] cannot widen past it.
+    /// [`min_radius_px`] cannot widen past it. `msvo` stops at its coarsest level's disc,
+    /// `5 * 2^(msvo.levels - 1)` working texels.
     ///
     /// [`max_radius_px`]: AoSettings::max_radius_px
     /// [`min_radius_px`]: AoSettings::min_radius_px
@@ -1228,6 +1373,11 @@ impl AoSettings {
         if self.separable_hbao() {
             let apron = (SEPARABLE_HBAO_MAX_RADIUS_PX * self.resolution.scale()) as f32;
             self.max_radius_px.min(apron)
+        } else if self.method == Method::Msvo {
+            // The coarsest level's disc, in the input's pixels.
+            let disc = MSVO_DISC_RADIUS << (self.msvo.levels.clamp(1, MSVO_MAX_LEVELS) - 1);
+            self.max_radius_px
+                .min((disc * self.resolution.scale()) as f32)
         } else {
             self.max_radius_px
         }
@@ -1316,6 +1466,23 @@ impl AoSettings {
         count("vbao.slice_count", self.vbao.slice_count)?;
         count("vbao.steps_per_side", self.vbao.steps_per_side)?;
         count("sao.sample_count", self.sao.sample_count)?;
+        count("ue4_ssao.sample_count", self.ue4_ssao.sample_count)?;
+        count("msvo.sample_count", self.msvo.sample_count)?;
+        if !self.msvo.sample_count.is_multiple_of(2) {
+            return Err(SettingsError {
+                field: "msvo.sample_count",
+                value: self.msvo.sample_count.to_string(),
+                expected: "an even integer in 2..=64: samples come in mirrored pairs",
+            });
+        }
+        if !(1..=MSVO_MAX_LEVELS).contains(&self.msvo.levels) {
+            return Err(SettingsError {
+                field: "msvo.levels",
+                value: self.msvo.levels.to_string(),
+                expected: "an integer in 1..=5",
+            });
+        }
+        positive("msvo.thickness", self.msvo.thickness)?;
         positive("vbao.thickness", self.vbao.thickness)?;
         at_least("vbao.thickness_growth", self.vbao.thickness_growth, 0.0)?;
         if ![64, 128].contains(&self.noise.blue_size) {
@@ -1456,6 +1623,11 @@ mod tests {
         let mut s = AoSettings::default();
         s.gtao.steps_per_side = 65;
         assert_eq!(s.validate().unwrap_err().field, "gtao.steps_per_side");
+        for pairs in [0, MAX_SAMPLE_COUNT + 1] {
+            let mut s = AoSettings::preset(Method::Ue4Ssao, Preset::High);
+            s.ue4_ssao.sample_count = pairs;
+            assert_eq!(s.validate().unwrap_err().field, "ue4_ssao.sample_count");
+        }
         assert_eq!(
             field(AoSettings {
                 falloff: 1.5,

@@ -390,8 +390,44 @@ pub const GTAO: ShaderSource = method_kernel!("gtao", SLICE);
 pub const VBAO: ShaderSource = method_kernel!("vbao", SLICE);
 /// Scalable Ambient Obscurance.
 pub const SAO: ShaderSource = method_kernel!("sao");
+/// Unreal Engine 4's legacy SSAO: mirrored sample pairs scored by the angle between them.
+pub const UE4_SSAO: ShaderSource = method_kernel!("ue4_ssao");
 
-/// One level of SAO's depth MIP chain from the level below.
+/// `msvo`'s obscurance at one level of the depth MIP chain: the kernels' interface without
+/// their entry point, then its own, one thread per texel of the level.
+///
+/// ```
+/// use aokit::{Method, shader};
+/// // What `shader::method` gives for `msvo`; the merge of the levels is its second program.
+/// assert_eq!(shader::method(Method::Msvo).name, shader::MSVO_OBSCURANCE.name);
+/// assert!(shader::MSVO_MERGE.source().contains("fn shape_ao("));
+/// ```
+pub const MSVO_OBSCURANCE: ShaderSource = ShaderSource {
+    name: "msvo_obscurance",
+    parts: &[
+        VIEW,
+        ENCODING,
+        NOISE,
+        AO,
+        include_str!("../shaders/msvo_obscurance.wgsl"),
+    ],
+};
+
+/// `msvo`'s merge of one level: its obscurance times the depth-aware upsample of the merged
+/// level below it, shaped at the working level into the method's AO.
+pub const MSVO_MERGE: ShaderSource = ShaderSource {
+    name: "msvo_merge",
+    parts: &[
+        VIEW,
+        ENCODING,
+        NOISE,
+        AO,
+        include_str!("../shaders/msvo_merge.wgsl"),
+    ],
+};
+
+/// One level of a depth MIP chain from the level below, by the reduction its `REDUCTION`
+/// override names: SAO's subsample or `ue4-ssao`'s furthest depth.
 pub const DEPTH_MIPS: ShaderSource = ShaderSource {
     name: "depth_mips",
     parts: &[include_str!("../shaders/depth_mips.wgsl")],
@@ -416,6 +452,9 @@ pub fn method(method: Method) -> ShaderSource {
         Method::Gtao => GTAO,
         Method::Vbao => VBAO,
         Method::Sao => SAO,
+        Method::Ue4Ssao => UE4_SSAO,
+        // Per level; `MSVO_MERGE` combines the levels.
+        Method::Msvo => MSVO_OBSCURANCE,
     }
 }
 
@@ -494,6 +533,9 @@ pub const ALL: &[ShaderSource] = &[
     GTAO,
     VBAO,
     SAO,
+    UE4_SSAO,
+    MSVO_OBSCURANCE,
+    MSVO_MERGE,
     DEPTH_MIPS,
     HBAO_ROWS,
     HBAO_COLUMNS,

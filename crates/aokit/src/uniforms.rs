@@ -93,6 +93,8 @@ pub(crate) mod flags {
     pub const NORMALIZE_SLICES: u32 = 1;
     /// Write bent normals.
     pub const BENT_NORMALS: u32 = 2;
+    /// `ue4-ssao`: the normal version rather than the depth-only one.
+    pub const UE4_SSAO_NORMALS: u32 = 4;
 }
 
 /// Shortest fade the kernels use, as a fraction of the radius: `falloff = 0` (a hard cut) becomes
@@ -140,6 +142,15 @@ impl AoUniforms {
                 0.0,
                 0.0,
             ),
+            // Sample pairs, each one step.
+            Method::Ue4Ssao => (settings.ue4_ssao.sample_count, 1, 0.0, 0.0),
+            // Samples per level, the level count, and the rejection distance in chords.
+            Method::Msvo => (
+                settings.msvo.sample_count,
+                settings.msvo.levels,
+                settings.msvo.thickness,
+                0.0,
+            ),
         };
         let max_radius_px = settings.effective_max_radius_px();
         let mut bits = 0;
@@ -148,6 +159,9 @@ impl AoUniforms {
         }
         if settings.bent_normals {
             bits |= flags::BENT_NORMALS;
+        }
+        if settings.ue4_ssao.use_normals {
+            bits |= flags::UE4_SSAO_NORMALS;
         }
         Self {
             radius,
@@ -405,6 +419,27 @@ mod tests {
         {
             shader::check_layout(program, "AoUniforms", fields, size_of::<AoUniforms>()).unwrap();
         }
+    }
+
+    #[test]
+    fn ao_flags_match_wgsl_and_ue4_ssao_sets_its_version() {
+        let module = shader::UE4_SSAO.validate().unwrap();
+        for (name, bit) in [
+            ("FLAG_NORMALIZE_SLICES", flags::NORMALIZE_SLICES),
+            ("FLAG_BENT_NORMALS", flags::BENT_NORMALS),
+            ("FLAG_UE4_SSAO_NORMALS", flags::UE4_SSAO_NORMALS),
+        ] {
+            assert_eq!(shader::u32_constant(&module, name), Some(bit), "{name}");
+        }
+        let mut settings = AoSettings::preset(Method::Ue4Ssao, crate::Preset::High);
+        let uniforms = AoUniforms::new(&settings);
+        assert_eq!((uniforms.count, uniforms.steps), (9, 1));
+        assert_ne!(uniforms.flags & flags::UE4_SSAO_NORMALS, 0);
+        settings.ue4_ssao.use_normals = false;
+        assert_eq!(
+            AoUniforms::new(&settings).flags & flags::UE4_SSAO_NORMALS,
+            0
+        );
     }
 
     #[test]

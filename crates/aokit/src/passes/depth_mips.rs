@@ -1,13 +1,40 @@
-//! SAO's depth MIP chain: the working linear depth at level 0 and, at each coarser level, one of
-//! every 2x2 depths of the level below (McGuire, Mara and Luebke 2012, section 2.2), so that far
-//! taps read nearby texels of a coarse level instead of scattered pixels.
+//! The depth MIP chain of the methods that read one: the working linear depth at level 0 and, at
+//! each coarser level, a reduction of every 2x2 depths of the level below, so that far taps read
+//! nearby texels of a coarse level instead of scattered pixels. `sao` keeps one of the four
+//! (McGuire, Mara and Luebke 2012, section 2.2), `ue4-ssao` the furthest (a hierarchical Z
+//! buffer, as Unreal's SSAO reads: seed 002).
+
+use std::collections::HashMap;
 
 use super::{ComputeKernel, PassContext, bind};
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
+use crate::settings::Method;
 use crate::shader;
 
-/// Levels of the chain: the working depth and four coarser ones, as far as the kernel's taps
-/// reach (`MAX_MIP_LEVEL` in `sao.wgsl`).
+/// How a level of the chain reduces each 2x2 block of the level below (the `REDUCTION_*` codes
+/// of `depth_mips.wgsl`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum DepthReduction {
+    /// SAO's rotated-grid subsample: the child at offset `(y & 1, x & 1)` of texel `(x, y)`.
+    Subsample = 0,
+    /// The largest linear depth of the four: the surface furthest from the eye.
+    Furthest = 1,
+}
+
+impl DepthReduction {
+    /// The reduction `method`'s kernel expects, or `None` for a method that reads no chain.
+    pub fn of(method: Method) -> Option<Self> {
+        match method {
+            // MSVO's levels hold real depths too: an average across an edge would occlude.
+            Method::Sao | Method::Msvo => Some(Self::Subsample),
+            Method::Ue4Ssao => Some(Self::Furthest),
+            _ => None,
+        }
+    }
+}
+
+/// Levels of the chain: the working depth and four coarser ones, as far as the kernels' taps
+/// reach (`MAX_MIP_LEVEL` in `sao.wgsl` and `ue4_ssao.wgsl`).
 const LEVELS: u32 = 5;
 /// The timer's name of the dispatch that builds each level past 0, so that `aokit bench` shows
 /// one time per level.
@@ -19,25 +46,13 @@ const LEVEL_PASS_NAMES: [&str; LEVELS as usize - 1] = [
 ];
 
 /// Builds the chain's coarser levels from its level 0, a copy of the working depth.
+#[derive(Default)]
 pub struct DepthMipsPass {
-    kernel: ComputeKernel,
+    /// One level kernel per reduction, compiled the first time it is used.
+    kernels: HashMap<DepthReduction, ComputeKernel>,
 }
 
 impl DepthMipsPass {
-    /// Compiles the level kernel.
-    pub fn new(device: &wgpu::Device) -> Self {
-        Self {
-            kernel: ComputeKernel::new(
-                device,
-                &shader::DEPTH_MIPS,
-                &[
-                    bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
-                    bind::storage_texture(1, LINEAR_DEPTH_FORMAT),
-                ],
-            ),
-        }
-    }
-
     /// The chain's texture for a depth of `size`: [`LINEAR_DEPTH_FORMAT`], up to five levels
     /// (fewer where a side runs out of texels first).
     pub fn create_texture(device: &wgpu::Device, size: [u32; 2]) -> wgpu::Texture {
@@ -63,8 +78,25 @@ impl DepthMipsPass {
 
     /// Records the copy of `depth` (the working linear depth, of `chain`'s size) into level 0
     /// of `chain` (made by [`DepthMipsPass::create_texture`]) and the building of each coarser
-    /// level from the one below.
-    pub fn encode(&self, ctx: &mut PassContext<'_>, depth: &wgpu::Texture, chain: &wgpu::Texture) {
+    /// level from the one below by `reduction`.
+    pub fn encode(
+        &mut self,
+        ctx: &mut PassContext<'_>,
+        reduction: DepthReduction,
+        depth: &wgpu::Texture,
+        chain: &wgpu::Texture,
+    ) {
+        let kernel = self.kernels.entry(reduction).or_insert_with(|| {
+            ComputeKernel::with_constants(
+                ctx.device,
+                &shader::DEPTH_MIPS,
+                &[
+                    bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+                    bind::storage_texture(1, LINEAR_DEPTH_FORMAT),
+                ],
+                &[("REDUCTION", f64::from(reduction as u32))],
+            )
+        });
         ctx.encoder.copy_texture_to_texture(
             depth.as_image_copy(),
             chain.as_image_copy(),
@@ -86,7 +118,7 @@ impl DepthMipsPass {
                 .timer
                 .as_mut()
                 .and_then(|timer| timer.pass(LEVEL_PASS_NAMES[level as usize - 1]));
-            self.kernel.dispatch(
+            kernel.dispatch(
                 ctx.device,
                 ctx.encoder,
                 &[
@@ -95,6 +127,33 @@ impl DepthMipsPass {
                 ],
                 [size.width, size.height],
                 timestamps,
+            );
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reduction_codes_match_wgsl_and_every_chain_method_has_one() {
+        let module = shader::DEPTH_MIPS.validate().unwrap();
+        for (name, reduction) in [
+            ("REDUCTION_SUBSAMPLE", DepthReduction::Subsample),
+            ("REDUCTION_FURTHEST", DepthReduction::Furthest),
+        ] {
+            assert_eq!(
+                shader::u32_constant(&module, name),
+                Some(reduction as u32),
+                "{name}"
+            );
+        }
+        for method in Method::ALL {
+            assert_eq!(
+                DepthReduction::of(method).is_some(),
+                method.reads_depth_mips(),
+                "{method:?}"
             );
         }
     }

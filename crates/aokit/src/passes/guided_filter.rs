@@ -133,7 +133,7 @@ mod tests {
                 shader::u32_constant(&module, "MAX_RADIUS"),
                 Some(MAX_SPATIAL_RADIUS)
             );
-            assert_eq!(pass.workgroup_size(), Ok([8, 8, 1]));
+            assert_eq!(pass.workgroup_size(), Ok([16, 16, 1]));
         }
     }
 

@@ -89,8 +89,9 @@ impl MethodPass {
         queue: &wgpu::Queue,
         settings: &AoSettings,
     ) {
-        // The separable HBAO passes run instead of the method's kernel (`SeparableHbaoPass`).
-        if !settings.separable_hbao() {
+        // The separable HBAO passes and MSVO's passes run instead of the method's kernel
+        // (`SeparableHbaoPass`, `MsvoPass`).
+        if !settings.separable_hbao() && settings.method != Method::Msvo {
             self.kernels.entry(settings.method).or_insert_with(|| {
                 ComputeKernel::new(device, &shader::method(settings.method), &layout())
             });

@@ -9,6 +9,7 @@ pub(crate) mod guided_filter;
 pub(crate) mod linear_depth;
 pub(crate) mod mask;
 pub(crate) mod method;
+pub(crate) mod msvo;
 pub(crate) mod normals_from_depth;
 pub(crate) mod resample;
 pub(crate) mod separable_hbao;
