@@ -6,35 +6,7 @@ mod common;
 
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset, Projection};
 use aokit_scene::{Builtin, Renderer, Scene};
-use common::{encode_frame, gpu, linear_depth_texture, rmse, trace};
-
-/// Level `level` of `texture`, read back through a one-level copy.
-fn read_level(gpu: &GpuContext, texture: &wgpu::Texture, level: u32) -> (Vec<f32>, [u32; 2]) {
-    let size = texture
-        .size()
-        .mip_level_size(level, wgpu::TextureDimension::D2);
-    let copy = aokit::gpu::create_texture_2d(
-        &gpu.device,
-        "level copy",
-        [size.width, size.height],
-        texture.format(),
-        wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::COPY_SRC,
-    );
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    encoder.copy_texture_to_texture(
-        wgpu::TexelCopyTextureInfo {
-            texture,
-            mip_level: level,
-            origin: wgpu::Origin3d::ZERO,
-            aspect: wgpu::TextureAspect::All,
-        },
-        copy.as_image_copy(),
-        size,
-    );
-    gpu.queue.submit([encoder.finish()]);
-    let texels = aokit::gpu::read_texture_f32(&gpu.device, &gpu.queue, &copy).unwrap();
-    (texels, [size.width, size.height])
-}
+use common::{encode_frame, gpu, linear_depth_texture, read_level, rmse, trace};
 
 /// The level above `finer` (of `size`) as the paper's rotated-grid subsample builds it: texel
 /// `(x, y)` keeps child `(2x + (y & 1), 2y + (x & 1))`, clamped to the finer level.

@@ -9,7 +9,7 @@ use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset, Projec
 use aokit_scene::{Builtin, Frame, Renderer, Scene};
 use common::{
     assert_in_range_with_sky_at_one, covered, encode_frame, gpu, linear_depth_texture, pixel_of,
-    rmse, trace,
+    read_level, rmse, trace,
 };
 use glam::Vec3;
 
@@ -34,34 +34,6 @@ fn render(gpu: &GpuContext, scene: &Scene, camera: usize, settings: &AoSettings)
 
 fn version(use_normals: bool) -> &'static str {
     if use_normals { "normal" } else { "depth-only" }
-}
-
-/// Level `level` of `texture`, read back through a one-level copy.
-fn read_level(gpu: &GpuContext, texture: &wgpu::Texture, level: u32) -> (Vec<f32>, [u32; 2]) {
-    let size = texture
-        .size()
-        .mip_level_size(level, wgpu::TextureDimension::D2);
-    let copy = aokit::gpu::create_texture_2d(
-        &gpu.device,
-        "level copy",
-        [size.width, size.height],
-        texture.format(),
-        wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::COPY_SRC,
-    );
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    encoder.copy_texture_to_texture(
-        wgpu::TexelCopyTextureInfo {
-            texture,
-            mip_level: level,
-            origin: wgpu::Origin3d::ZERO,
-            aspect: wgpu::TextureAspect::All,
-        },
-        copy.as_image_copy(),
-        size,
-    );
-    gpu.queue.submit([encoder.finish()]);
-    let texels = aokit::gpu::read_texture_f32(&gpu.device, &gpu.queue, &copy).unwrap();
-    (texels, [size.width, size.height])
 }
 
 /// The largest depth of the texels of level 0 (of `size`) that texel `(x, y)` of `level`

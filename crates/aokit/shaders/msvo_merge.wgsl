@@ -15,17 +15,6 @@ const DEPTH_TOLERANCE: f32 = 0.01;
 // object the coarse level lost), which then keeps its own level's obscurance alone.
 const UNMATCHED_WEIGHT: f32 = 0.1;
 
-// The chain level `ao_out` is the size of.
-fn output_level() -> u32 {
-    let size = textureDimensions(ao_out);
-    for (var level = 1u; level < textureNumLevels(linear_depth); level++) {
-        if all(textureDimensions(linear_depth, level) == size) {
-            return level;
-        }
-    }
-    return 0u;
-}
-
 // The coarser level's merged obscurance at texel `t` of `level`, whose depth is `depth`: its
 // 2x2 bilinear footprint, each texel weighted by its depth's closeness.
 fn coarser_at(t: vec2<u32>, level: u32, depth: f32) -> f32 {

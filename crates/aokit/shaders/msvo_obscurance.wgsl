@@ -25,18 +25,6 @@ var<private> PAIRS: array<vec2<f32>, 32> = array<vec2<f32>, 32>(
     vec2(-3.0, 3.0), vec2(3.0, 3.0), vec2(-4.0, 2.0), vec2(4.0, 2.0),
 );
 
-// The chain level `ao_out` is a view of: the one of the same size (the chain's levels all
-// differ in size, its level count stops before two would not).
-fn output_level() -> u32 {
-    let size = textureDimensions(ao_out);
-    for (var level = 1u; level < textureNumLevels(linear_depth); level++) {
-        if all(textureDimensions(linear_depth, level) == size) {
-            return level;
-        }
-    }
-    return 0u;
-}
-
 // The working pixel whose depth texel `t` of `level` holds: the chain's subsample keeps, of the
 // 2x2 texels below each of its texels, the one at offset (y & 1, x & 1), clamped to that level.
 fn source_pixel(t: vec2<u32>, level: u32) -> vec2<f32> {

@@ -393,6 +393,9 @@ pub const SAO: ShaderSource = method_kernel!("sao");
 /// Unreal Engine 4's legacy SSAO: mirrored sample pairs scored by the angle between them.
 pub const UE4_SSAO: ShaderSource = method_kernel!("ue4_ssao");
 
+/// What `msvo`'s two passes share.
+const MSVO: &str = include_str!("../shaders/msvo.wgsl");
+
 /// `msvo`'s obscurance at one level of the depth MIP chain: the kernels' interface without
 /// their entry point, then its own, one thread per texel of the level.
 ///
@@ -409,6 +412,7 @@ pub const MSVO_OBSCURANCE: ShaderSource = ShaderSource {
         ENCODING,
         NOISE,
         AO,
+        MSVO,
         include_str!("../shaders/msvo_obscurance.wgsl"),
     ],
 };
@@ -422,6 +426,7 @@ pub const MSVO_MERGE: ShaderSource = ShaderSource {
         ENCODING,
         NOISE,
         AO,
+        MSVO,
         include_str!("../shaders/msvo_merge.wgsl"),
     ],
 };
