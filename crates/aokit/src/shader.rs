@@ -358,8 +358,10 @@ pub const UPSAMPLE: ShaderSource = ShaderSource {
     ],
 };
 
-/// A method kernel: the shared snippets, any of its own, then its file.
-macro_rules! method_kernel {
+/// A program on the AO kernels' interface ([`AO`] and what it needs), then `snippets`, then
+/// its own file. The per-pixel method kernels take [`AO_ENTRY`] as their first snippet; the
+/// multi-pass methods bring entry points of their own.
+macro_rules! ao_program {
     ($name:literal $(, $snippet:expr)*) => {
         ShaderSource {
             name: $name,
@@ -368,7 +370,6 @@ macro_rules! method_kernel {
                 ENCODING,
                 NOISE,
                 AO,
-                AO_ENTRY,
                 $($snippet,)*
                 include_str!(concat!("../shaders/", $name, ".wgsl")),
             ],
@@ -377,21 +378,21 @@ macro_rules! method_kernel {
 }
 
 /// Crytek's sphere-sampling SSAO.
-pub const SSAO_CRYTEK: ShaderSource = method_kernel!("ssao_crytek");
+pub const SSAO_CRYTEK: ShaderSource = ao_program!("ssao_crytek", AO_ENTRY);
 /// Normal-oriented hemisphere SSAO.
-pub const SSAO: ShaderSource = method_kernel!("ssao");
+pub const SSAO: ShaderSource = ao_program!("ssao", AO_ENTRY);
 /// Horizon-based AO.
-pub const HBAO: ShaderSource = method_kernel!("hbao", SLICE, HORIZON);
+pub const HBAO: ShaderSource = ao_program!("hbao", AO_ENTRY, SLICE, HORIZON);
 /// HBAO+'s normal-based estimator.
-pub const HBAO_PLUS: ShaderSource = method_kernel!("hbao_plus", SLICE);
+pub const HBAO_PLUS: ShaderSource = ao_program!("hbao_plus", AO_ENTRY, SLICE);
 /// Ground-truth based AO.
-pub const GTAO: ShaderSource = method_kernel!("gtao", SLICE);
+pub const GTAO: ShaderSource = ao_program!("gtao", AO_ENTRY, SLICE);
 /// Visibility bitmask AO.
-pub const VBAO: ShaderSource = method_kernel!("vbao", SLICE);
+pub const VBAO: ShaderSource = ao_program!("vbao", AO_ENTRY, SLICE);
 /// Scalable Ambient Obscurance.
-pub const SAO: ShaderSource = method_kernel!("sao");
+pub const SAO: ShaderSource = ao_program!("sao", AO_ENTRY);
 /// Unreal Engine 4's legacy SSAO: mirrored sample pairs scored by the angle between them.
-pub const UE4_SSAO: ShaderSource = method_kernel!("ue4_ssao");
+pub const UE4_SSAO: ShaderSource = ao_program!("ue4_ssao", AO_ENTRY);
 
 /// What `msvo`'s two passes share.
 const MSVO: &str = include_str!("../shaders/msvo.wgsl");
@@ -405,31 +406,11 @@ const MSVO: &str = include_str!("../shaders/msvo.wgsl");
 /// assert_eq!(shader::method(Method::Msvo).name, shader::MSVO_OBSCURANCE.name);
 /// assert!(shader::MSVO_MERGE.source().contains("fn shape_ao("));
 /// ```
-pub const MSVO_OBSCURANCE: ShaderSource = ShaderSource {
-    name: "msvo_obscurance",
-    parts: &[
-        VIEW,
-        ENCODING,
-        NOISE,
-        AO,
-        MSVO,
-        include_str!("../shaders/msvo_obscurance.wgsl"),
-    ],
-};
+pub const MSVO_OBSCURANCE: ShaderSource = ao_program!("msvo_obscurance", MSVO);
 
 /// `msvo`'s merge of one level: its obscurance times the depth-aware upsample of the merged
 /// level below it, shaped at the working level into the method's AO.
-pub const MSVO_MERGE: ShaderSource = ShaderSource {
-    name: "msvo_merge",
-    parts: &[
-        VIEW,
-        ENCODING,
-        NOISE,
-        AO,
-        MSVO,
-        include_str!("../shaders/msvo_merge.wgsl"),
-    ],
-};
+pub const MSVO_MERGE: ShaderSource = ao_program!("msvo_merge", MSVO);
 
 /// One level of a depth MIP chain from the level below, by the reduction its `REDUCTION`
 /// override names: SAO's subsample or `ue4-ssao`'s furthest depth.
@@ -467,26 +448,6 @@ pub fn method(method: Method) -> ShaderSource {
 /// textures.
 const HBAO_SEPARABLE: &str = include_str!("../shaders/hbao_separable.wgsl");
 
-/// A separable HBAO pass: the kernels' interface without their entry point, the horizon, the
-/// passes' shared core, then its own file.
-macro_rules! separable_hbao_pass {
-    ($name:literal) => {
-        ShaderSource {
-            name: $name,
-            parts: &[
-                VIEW,
-                ENCODING,
-                NOISE,
-                AO,
-                SLICE,
-                HORIZON,
-                HBAO_SEPARABLE,
-                include_str!(concat!("../shaders/", $name, ".wgsl")),
-            ],
-        }
-    };
-}
-
 /// First pass of separable HBAO (`hbao.variant = separable`): the +x and -x horizons of every
 /// pixel from its row of linear depth in workgroup memory, their occlusion summed into an
 /// `R32Float` texture.
@@ -498,7 +459,7 @@ macro_rules! separable_hbao_pass {
 /// assert_eq!([1920u32.div_ceil(x), 1080u32.div_ceil(y)], [15, 1080]);
 /// # Ok::<(), String>(())
 /// ```
-pub const HBAO_ROWS: ShaderSource = separable_hbao_pass!("hbao_rows");
+pub const HBAO_ROWS: ShaderSource = ao_program!("hbao_rows", SLICE, HORIZON, HBAO_SEPARABLE);
 
 /// Second pass of separable HBAO: the +y and -y horizons from each column in workgroup memory,
 /// added to the rows pass's occlusion and stored as the AO, shaped as every method's is.
@@ -513,7 +474,7 @@ pub const HBAO_ROWS: ShaderSource = separable_hbao_pass!("hbao_rows");
 /// assert!(shader::HBAO_COLUMNS.source().contains("fn store_ao("));
 /// # Ok::<(), String>(())
 /// ```
-pub const HBAO_COLUMNS: ShaderSource = separable_hbao_pass!("hbao_columns");
+pub const HBAO_COLUMNS: ShaderSource = ao_program!("hbao_columns", SLICE, HORIZON, HBAO_SEPARABLE);
 
 /// The shading helpers of [`OCCLUSION`] alone: no entry point, validated so that the snippet
 /// renderers paste into their own shaders is known to compile.
