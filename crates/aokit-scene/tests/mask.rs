@@ -4,13 +4,13 @@
 
 mod common;
 
-use aokit::gpu::{create_texture_2d, read_texture_f32, upload_texture_2d};
+use aokit::gpu::{create_texture_2d, read_texture_f32};
 use aokit::{
     AoError, AoInputs, AoMask, AoPipeline, AoSettings, InputError, Method, NormalEncoding, Preset,
     Resolution,
 };
 use aokit_scene::{Builtin, Renderer};
-use common::{DepthCopy, copy_depth, encode_frame, gpu};
+use common::{DepthCopy, copy_depth, encode_frame, gpu, r8_texture};
 
 const SIZE: [u32; 2] = [96, 64];
 /// The stencil rectangle `[x, y, width, height]`.
@@ -59,15 +59,7 @@ fn masked_pixels_keep_ao_1_and_the_others_are_untouched() {
     let weights: Vec<u8> = (0..unmasked.len())
         .map(|i| [255, 128, 0][third(i)])
         .collect();
-    let mask = upload_texture_2d(
-        device,
-        queue,
-        "mask",
-        SIZE,
-        wgpu::TextureFormat::R8Unorm,
-        &weights,
-    )
-    .unwrap();
+    let mask = r8_texture(&gpu, SIZE, &weights);
     let masked = ao_with(Some(AoMask::Texture(&mask)), &gbuffer.depth);
     for (i, (&m, &u)) in masked.iter().zip(&unmasked).enumerate() {
         let expected = match third(i) {

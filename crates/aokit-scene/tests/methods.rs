@@ -4,23 +4,15 @@ mod common;
 
 use aokit::{AoSettings, GpuContext, Method, NoiseKind, NoiseSettings, Preset, TemporalOffset};
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
-use common::{assert_in_range_with_sky_at_one, covered, gpu, pixel_of, trace};
+use common::{
+    assert_in_range_with_sky_at_one, covered, gpu, pixel_of, render_frame, scene_settings, trace,
+};
 use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
 
-fn settings(scene: &Scene, method: Method, preset: Preset) -> AoSettings {
-    AoSettings {
-        radius: scene.suggested_radius.unwrap_or(1.0),
-        ..AoSettings::preset(method, preset)
-    }
-}
-
 fn render(gpu: &GpuContext, scene: &Scene, camera: &Camera, settings: &AoSettings) -> Frame {
-    Renderer::new(gpu, scene, settings)
-        .unwrap()
-        .render(gpu, camera, SIZE, 0)
-        .unwrap()
+    render_frame(gpu, scene, camera, settings, SIZE)
 }
 
 #[test]
@@ -34,7 +26,7 @@ fn every_method_writes_finite_ao_in_range_with_sky_left_at_one() {
                     &gpu,
                     &scene,
                     camera,
-                    &settings(&scene, method, Preset::Medium),
+                    &scene_settings(&scene, method, Preset::Medium),
                 );
                 let view = format!("{} / {} / {}", method.name(), scene.name, camera.name);
                 assert_in_range_with_sky_at_one(&frame, &view);
@@ -69,7 +61,7 @@ fn every_noise_kind_renders_every_method_in_range_and_unbiased() {
         for noise in &kinds {
             let ao_settings = AoSettings {
                 noise: *noise,
-                ..settings(&scene, method, Preset::Medium)
+                ..scene_settings(&scene, method, Preset::Medium)
             };
             renderer.set_settings(&gpu, &ao_settings).unwrap();
             for frame_index in [0, 5] {
@@ -119,7 +111,7 @@ fn an_open_plane_is_unoccluded_except_for_crytek_grey() {
                 &gpu,
                 &scene,
                 camera,
-                &settings(&scene, method, Preset::High),
+                &scene_settings(&scene, method, Preset::High),
             );
             let values: Vec<f32> = covered(&frame).collect();
             let mean = values.iter().sum::<f32>() / values.len() as f32;
@@ -154,7 +146,7 @@ fn every_method_darkens_room_corners_more_than_open_floor() {
             &gpu,
             &scene,
             camera,
-            &settings(&scene, method, Preset::Ultra),
+            &scene_settings(&scene, method, Preset::Ultra),
         );
         let open_floor = frame.ao[pixel_of(&frame, Vec3::new(-0.3, 0.0, 2.5))];
         let corner = frame.ao[pixel_of(&frame, Vec3::new(3.93, 0.06, -3.93))];
@@ -195,7 +187,7 @@ fn bent_normals_follow_the_normal_on_open_ground_and_lean_out_of_corners() {
             &open.cameras[0],
             &AoSettings {
                 bent_normals: true,
-                ..settings(&open, method, Preset::High)
+                ..scene_settings(&open, method, Preset::High)
             },
         );
         let bent = frame
@@ -220,7 +212,7 @@ fn bent_normals_follow_the_normal_on_open_ground_and_lean_out_of_corners() {
             &room.cameras[0],
             &AoSettings {
                 bent_normals: true,
-                ..settings(&room, method, Preset::Ultra)
+                ..scene_settings(&room, method, Preset::Ultra)
             },
         );
         let i = pixel_of(&frame, Vec3::new(3.8, 0.0, 1.0));
@@ -241,7 +233,12 @@ fn rmse_against_reference(gpu: &GpuContext, scene: &Scene, methods: &[Method]) -
     methods
         .iter()
         .map(|&method| {
-            let frame = render(gpu, scene, camera, &settings(scene, method, Preset::High));
+            let frame = render(
+                gpu,
+                scene,
+                camera,
+                &scene_settings(scene, method, Preset::High),
+            );
             let (sum, count) = frame
                 .ao
                 .iter()
@@ -285,11 +282,11 @@ fn distance_fade_intensity_and_method_switches_apply_at_runtime() {
     let gpu = gpu();
     let scene = Builtin::Room.build();
     let camera = &scene.cameras[0];
-    let base = settings(&scene, Method::Gtao, Preset::Medium);
+    let base = scene_settings(&scene, Method::Gtao, Preset::Medium);
     let mut renderer = Renderer::new(&gpu, &scene, &base).unwrap();
     // Every method through one renderer gives what a fresh one gives.
     for method in Method::ALL {
-        let s = settings(&scene, method, Preset::Medium);
+        let s = scene_settings(&scene, method, Preset::Medium);
         renderer.set_settings(&gpu, &s).unwrap();
         let switched = renderer.render(&gpu, camera, SIZE, 0).unwrap();
         assert_eq!(
@@ -353,7 +350,7 @@ fn the_pixel_radius_clamps_apply_to_every_method() {
         // The kernel's radius is the world radius here, which the clamps are compared with.
         let base = AoSettings {
             radius_multiplier: 1.0,
-            ..settings(&scene, method, Preset::Medium)
+            ..scene_settings(&scene, method, Preset::Medium)
         };
         // A radius far under a pixel everywhere: no AO at all, unless min_radius_px widens it.
         let tiny = AoSettings {

@@ -6,24 +6,22 @@
 mod common;
 
 use aokit::{AoSettings, GpuContext, Method, MsvoSettings, Preset, Resolution};
-use aokit_scene::{Builtin, Frame, Renderer, Scene};
-use common::{assert_in_range_with_sky_at_one, covered, gpu, pixel_of, rmse, trace};
+use aokit_scene::{Builtin, Frame, Scene};
+use common::{
+    assert_in_range_with_sky_at_one, covered, gpu, pixel_of, render_frame, rmse, scene_settings,
+    trace,
+};
 use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
 
 fn settings(scene: &Scene, preset: Preset) -> AoSettings {
-    AoSettings {
-        radius: scene.suggested_radius.unwrap_or(1.0),
-        ..AoSettings::preset(Method::Msvo, preset)
-    }
+    scene_settings(scene, Method::Msvo, preset)
 }
 
+/// The scene's first view.
 fn render(gpu: &GpuContext, scene: &Scene, settings: &AoSettings) -> Frame {
-    Renderer::new(gpu, scene, settings)
-        .unwrap()
-        .render(gpu, &scene.cameras[0], SIZE, 0)
-        .unwrap()
+    render_frame(gpu, scene, &scene.cameras[0], settings, SIZE)
 }
 
 fn mean(frame: &Frame) -> f32 {

@@ -5,8 +5,10 @@
 mod common;
 
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset, Projection};
-use aokit_scene::{Builtin, Renderer, Scene};
-use common::{encode_frame, gpu, linear_depth_texture, read_level, rmse, trace};
+use aokit_scene::{Builtin, Scene};
+use common::{
+    encode_frame, gpu, linear_depth_texture, read_level, render_frame, rmse, scene_settings, trace,
+};
 
 /// The level above `finer` (of `size`) as the paper's rotated-grid subsample builds it: texel
 /// `(x, y)` keeps child `(2x + (y & 1), 2y + (x & 1))`, clamped to the finer level.
@@ -72,14 +74,8 @@ const SIZE: [u32; 2] = [160, 96];
 fn rmse_and_unoccluded_rmse(gpu: &GpuContext, scene: &Scene) -> (f64, f64) {
     let camera = &scene.cameras[0];
     let traced = trace(scene, camera, SIZE, 128);
-    let settings = AoSettings {
-        radius: scene.suggested_radius.unwrap_or(1.0),
-        ..AoSettings::preset(Method::Sao, Preset::High)
-    };
-    let frame = Renderer::new(gpu, scene, &settings)
-        .unwrap()
-        .render(gpu, camera, SIZE, 0)
-        .unwrap();
+    let settings = scene_settings(scene, Method::Sao, Preset::High);
+    let frame = render_frame(gpu, scene, camera, &settings, SIZE);
     let surface = |i: usize| traced.linear_depth[i] > 0.0;
     let ones = vec![1.0; frame.ao.len()];
     (

@@ -5,23 +5,23 @@
 
 mod common;
 
-use aokit::gpu::{read_texture_f32, upload_texture_2d};
+use aokit::gpu::read_texture_f32;
 use aokit::{
     AoInputs, AoMask, AoPipeline, AoSettings, HbaoVariant, Method, NormalEncoding, Preset,
     Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX,
 };
-use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
-use common::{assert_in_range_with_sky_at_one, covered, encode_frame, gpu, pixel_of, rmse, trace};
+use aokit_scene::{Builtin, Camera, Lens, Renderer, Scene};
+use common::{
+    assert_in_range_with_sky_at_one, covered, encode_frame, gpu, pixel_of, r8_texture,
+    render_frame, rmse, scene_settings, trace,
+};
 use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
 
 /// `hbao` at `preset` with the scene's radius, run as `variant`.
 fn settings(scene: &Scene, preset: Preset, variant: HbaoVariant) -> AoSettings {
-    let mut settings = AoSettings {
-        radius: scene.suggested_radius.unwrap_or(1.0),
-        ..AoSettings::preset(Method::Hbao, preset)
-    };
+    let mut settings = scene_settings(scene, Method::Hbao, preset);
     settings.hbao.variant = variant;
     settings
 }
@@ -30,16 +30,9 @@ fn separable(scene: &Scene, preset: Preset) -> AoSettings {
     settings(scene, preset, HbaoVariant::Separable)
 }
 
-fn render(scene: &Scene, camera: &Camera, settings: &AoSettings, size: [u32; 2]) -> Frame {
-    let gpu = gpu();
-    Renderer::new(&gpu, scene, settings)
-        .unwrap()
-        .render(&gpu, camera, size, 0)
-        .unwrap()
-}
-
 #[test]
 fn every_view_at_every_resolution_is_finite_in_range_with_sky_at_one() {
+    let gpu = gpu();
     for builtin in Builtin::ALL {
         let scene = builtin.build();
         for camera in &scene.cameras {
@@ -49,7 +42,7 @@ fn every_view_at_every_resolution_is_finite_in_range_with_sky_at_one() {
                         resolution,
                         ..separable(&scene, preset)
                     };
-                    let frame = render(&scene, camera, &s, SIZE);
+                    let frame = render_frame(&gpu, &scene, camera, &s, SIZE);
                     let view = format!(
                         "{} / {} / {} / {}",
                         scene.name,
@@ -66,9 +59,10 @@ fn every_view_at_every_resolution_is_finite_in_range_with_sky_at_one() {
 
 #[test]
 fn an_open_plane_is_unoccluded() {
+    let gpu = gpu();
     let scene = Builtin::Open.build();
     for camera in &scene.cameras {
-        let frame = render(&scene, camera, &separable(&scene, Preset::High), SIZE);
+        let frame = render_frame(&gpu, &scene, camera, &separable(&scene, Preset::High), SIZE);
         let values: Vec<f32> = covered(&frame).collect();
         let mean = values.iter().sum::<f32>() / values.len() as f32;
         let lowest = values.iter().copied().fold(1.0f32, f32::min);
@@ -84,8 +78,10 @@ fn an_open_plane_is_unoccluded() {
 
 #[test]
 fn room_corners_and_wall_feet_are_darker_than_open_floor() {
+    let gpu = gpu();
     let scene = Builtin::Room.build();
-    let frame = render(
+    let frame = render_frame(
+        &gpu,
         &scene,
         &scene.cameras[0],
         &separable(&scene, Preset::Ultra),
@@ -110,6 +106,7 @@ const RMSE_MARGIN: f64 = 0.015;
 
 #[test]
 fn error_against_the_reference_is_within_a_margin_of_per_pixel_hbao_at_the_same_samples() {
+    let gpu = gpu();
     let mut rows = Vec::new();
     for builtin in Builtin::ALL {
         let scene = builtin.build();
@@ -121,7 +118,11 @@ fn error_against_the_reference_is_within_a_margin_of_per_pixel_hbao_at_the_same_
                 let mut s = settings(&scene, Preset::High, variant);
                 s.hbao.direction_count = 4;
                 s.hbao.step_count = steps;
-                rmse(&render(&scene, camera, &s, SIZE).ao, &traced.ao, surface)
+                rmse(
+                    &render_frame(&gpu, &scene, camera, &s, SIZE).ao,
+                    &traced.ao,
+                    surface,
+                )
             };
             let per_pixel = rmse_of(HbaoVariant::PerPixel);
             let separable = rmse_of(HbaoVariant::Separable);
@@ -145,6 +146,7 @@ fn error_against_the_reference_is_within_a_margin_of_per_pixel_hbao_at_the_same_
 
 #[test]
 fn a_radius_past_the_apron_works_as_the_radius_that_covers_the_apron() {
+    let gpu = gpu();
     let scene = Builtin::Room.build();
     // Through an orthographic lens a world radius covers the same pixels at every depth, so
     // the clamp to the apron must give exactly the AO of the radius that covers it.
@@ -162,7 +164,8 @@ fn a_radius_past_the_apron_works_as_the_radius_that_covers_the_apron() {
         radius_multiplier: 1.0,
         ..separable(&scene, Preset::Medium)
     };
-    let exact = render(
+    let exact = render_frame(
+        &gpu,
         &scene,
         &camera,
         &AoSettings {
@@ -192,7 +195,7 @@ fn a_radius_past_the_apron_works_as_the_radius_that_covers_the_apron() {
         ),
     ] {
         assert!(settings.effective_max_radius_px() == apron, "{what}");
-        let clamped = render(&scene, &camera, &settings, size);
+        let clamped = render_frame(&gpu, &scene, &camera, &settings, size);
         let worst = clamped
             .ao
             .iter()
@@ -218,15 +221,7 @@ fn below_full_resolution_the_filters_and_the_mask_follow_as_for_per_pixel_hbao()
     let weights: Vec<u8> = (0..width * SIZE[1] as usize)
         .map(|i| if masked(i) { 255 } else { 0 })
         .collect();
-    let mask = upload_texture_2d(
-        device,
-        queue,
-        "mask",
-        SIZE,
-        wgpu::TextureFormat::R8Unorm,
-        &weights,
-    )
-    .unwrap();
+    let mask = r8_texture(&gpu, SIZE, &weights);
     let run = |settings: &AoSettings| {
         let mut pipeline = AoPipeline::new(device, queue, settings).unwrap();
         let inputs = AoInputs {

@@ -6,10 +6,10 @@
 mod common;
 
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset, Projection};
-use aokit_scene::{Builtin, Frame, Renderer, Scene};
+use aokit_scene::{Builtin, Frame, Scene};
 use common::{
     assert_in_range_with_sky_at_one, covered, encode_frame, gpu, linear_depth_texture, pixel_of,
-    read_level, rmse, trace,
+    read_level, render_frame, rmse, scene_settings, trace,
 };
 use glam::Vec3;
 
@@ -17,19 +17,13 @@ const SIZE: [u32; 2] = [160, 96];
 
 /// `ue4-ssao` at `preset` with the scene's radius, in the normal or the depth-only version.
 fn settings(scene: &Scene, preset: Preset, use_normals: bool) -> AoSettings {
-    let mut settings = AoSettings {
-        radius: scene.suggested_radius.unwrap_or(1.0),
-        ..AoSettings::preset(Method::Ue4Ssao, preset)
-    };
+    let mut settings = scene_settings(scene, Method::Ue4Ssao, preset);
     settings.ue4_ssao.use_normals = use_normals;
     settings
 }
 
 fn render(gpu: &GpuContext, scene: &Scene, camera: usize, settings: &AoSettings) -> Frame {
-    Renderer::new(gpu, scene, settings)
-        .unwrap()
-        .render(gpu, &scene.cameras[camera], SIZE, 0)
-        .unwrap()
+    render_frame(gpu, scene, &scene.cameras[camera], settings, SIZE)
 }
 
 fn version(use_normals: bool) -> &'static str {

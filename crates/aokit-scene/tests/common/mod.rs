@@ -2,10 +2,46 @@
 #![allow(dead_code)]
 
 use aokit::gpu::upload_texture_2d;
-use aokit::{AoInputs, AoOutputs, AoPipeline, GpuContext};
+use aokit::{AoInputs, AoOutputs, AoPipeline, AoSettings, GpuContext, Method, Preset};
+use aokit_scene::{Camera, Frame, Renderer, Scene};
 
 pub fn gpu() -> GpuContext {
     GpuContext::headless().expect("tests need a wgpu adapter (apt-get install mesa-vulkan-drivers)")
+}
+
+/// `method` at `preset`, with the scene's suggested radius (1 where it suggests none).
+pub fn scene_settings(scene: &Scene, method: Method, preset: Preset) -> AoSettings {
+    AoSettings {
+        radius: scene.suggested_radius.unwrap_or(1.0),
+        ..AoSettings::preset(method, preset)
+    }
+}
+
+/// The first frame a fresh renderer with `settings` draws of `scene` from `camera`.
+pub fn render_frame(
+    gpu: &GpuContext,
+    scene: &Scene,
+    camera: &Camera,
+    settings: &AoSettings,
+    size: [u32; 2],
+) -> Frame {
+    Renderer::new(gpu, scene, settings)
+        .unwrap()
+        .render(gpu, camera, size, 0)
+        .unwrap()
+}
+
+/// An `R8Unorm` texture of one byte per texel, as `AoMask::Texture` accepts.
+pub fn r8_texture(gpu: &GpuContext, size: [u32; 2], texels: &[u8]) -> wgpu::Texture {
+    upload_texture_2d(
+        &gpu.device,
+        &gpu.queue,
+        "mask",
+        size,
+        wgpu::TextureFormat::R8Unorm,
+        texels,
+    )
+    .unwrap()
 }
 
 /// Linear view depth as the `R32Float` texture `AoInputs::depth` accepts.
