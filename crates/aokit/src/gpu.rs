@@ -266,6 +266,30 @@ pub fn create_texture_2d(
     format: wgpu::TextureFormat,
     usage: wgpu::TextureUsages,
 ) -> wgpu::Texture {
+    create_texture_2d_mips(device, label, size, 1, format, usage)
+}
+
+/// A 2D texture with `levels` mip levels and one sample, as the depth MIP chain and `msvo`'s
+/// per-level targets use; [`mip_view`] views one level for a pass to write or read.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device) {
+/// use aokit::gpu::{create_texture_2d_mips, mip_view};
+/// // A four-level pyramid of linear depth, each level written by its own compute pass.
+/// let pyramid = create_texture_2d_mips(device, "depth pyramid", [1920, 1080], 4,
+///     wgpu::TextureFormat::R32Float,
+///     wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING);
+/// let level_2 = mip_view(&pyramid, 2);
+/// # }
+/// ```
+pub fn create_texture_2d_mips(
+    device: &wgpu::Device,
+    label: &str,
+    size: [u32; 2],
+    levels: u32,
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
     device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
         size: wgpu::Extent3d {
@@ -273,12 +297,28 @@ pub fn create_texture_2d(
             height: size[1],
             depth_or_array_layers: 1,
         },
-        mip_level_count: 1,
+        mip_level_count: levels,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
         format,
         usage,
         view_formats: &[],
+    })
+}
+
+/// A view of mip level `level` of `texture` alone: what a storage binding needs, and what a
+/// pass reading one level as its level 0 binds.
+///
+/// ```no_run
+/// # fn f(texture: &wgpu::Texture) {
+/// let finest = aokit::gpu::mip_view(texture, 0);
+/// # }
+/// ```
+pub fn mip_view(texture: &wgpu::Texture, level: u32) -> wgpu::TextureView {
+    texture.create_view(&wgpu::TextureViewDescriptor {
+        base_mip_level: level,
+        mip_level_count: Some(1),
+        ..Default::default()
     })
 }
 

@@ -7,6 +7,7 @@
 use std::collections::HashMap;
 
 use super::{ComputeKernel, PassContext, bind};
+use crate::gpu::{create_texture_2d_mips, mip_view};
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::settings::Method;
 use crate::shader;
@@ -57,23 +58,17 @@ impl DepthMipsPass {
     /// (fewer where a side runs out of texels first).
     pub fn create_texture(device: &wgpu::Device, size: [u32; 2]) -> wgpu::Texture {
         let full_chain = 32 - size[0].max(size[1]).leading_zeros();
-        device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("aokit depth mips"),
-            size: wgpu::Extent3d {
-                width: size[0],
-                height: size[1],
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: LEVELS.min(full_chain),
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: LINEAR_DEPTH_FORMAT,
-            usage: wgpu::TextureUsages::COPY_DST
+        create_texture_2d_mips(
+            device,
+            "aokit depth mips",
+            size,
+            LEVELS.min(full_chain),
+            LINEAR_DEPTH_FORMAT,
+            wgpu::TextureUsages::COPY_DST
                 | wgpu::TextureUsages::COPY_SRC
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::STORAGE_BINDING,
-            view_formats: &[],
-        })
+        )
     }
 
     /// Records the copy of `depth` (the working linear depth, of `chain`'s size) into level 0
@@ -102,13 +97,7 @@ impl DepthMipsPass {
             chain.as_image_copy(),
             depth.size(),
         );
-        let level_view = |level| {
-            chain.create_view(&wgpu::TextureViewDescriptor {
-                base_mip_level: level,
-                mip_level_count: Some(1),
-                ..Default::default()
-            })
-        };
+        let level_view = |level| mip_view(chain, level);
         for level in 1..chain.mip_level_count() {
             let size = chain
                 .size()

@@ -6,6 +6,7 @@
 
 use super::method::{MethodPass, layout};
 use super::{ComputeKernel, PassContext, bind};
+use crate::gpu::{create_texture_2d_mips, mip_view};
 use crate::settings::MSVO_MAX_LEVELS;
 use crate::shader;
 
@@ -91,17 +92,10 @@ impl MsvoPass {
             self.targets = Some((own, merged));
         }
         let (own, merged) = self.targets.as_ref().expect("made just above");
-        let mip = |texture: &wgpu::Texture, level: u32| {
-            texture.create_view(&wgpu::TextureViewDescriptor {
-                base_mip_level: level,
-                mip_level_count: Some(1),
-                ..Default::default()
-            })
-        };
         let chain_view = chain.create_view(&Default::default());
         // One level alone is the method's AO; otherwise each level's obscurance is kept for
         // its merge.
-        let own_levels: Vec<wgpu::TextureView> = (0..levels).map(|l| mip(own, l)).collect();
+        let own_levels: Vec<wgpu::TextureView> = (0..levels).map(|l| mip_view(own, l)).collect();
         for level in 0..levels {
             let target = if levels == 1 {
                 ao
@@ -124,7 +118,7 @@ impl MsvoPass {
         // merged obscurance is its own.
         let merged_levels: Vec<wgpu::TextureView> = merged
             .iter()
-            .flat_map(|m| (0..levels - 2).map(|l| mip(m, l)))
+            .flat_map(|m| (0..levels - 2).map(|l| mip_view(m, l)))
             .collect();
         for level in (0..levels.saturating_sub(1)).rev() {
             let coarser = if level + 1 == levels - 1 {
@@ -186,18 +180,6 @@ fn half(size: [u32; 2]) -> [u32; 2] {
 
 /// A texture of `levels` MIP levels from `size`, written as storage and read as a texture.
 fn level_texture(device: &wgpu::Device, label: &str, size: [u32; 2], levels: u32) -> wgpu::Texture {
-    device.create_texture(&wgpu::TextureDescriptor {
-        label: Some(label),
-        size: wgpu::Extent3d {
-            width: size[0],
-            height: size[1],
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: levels,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: LEVEL_FORMAT,
-        usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING,
-        view_formats: &[],
-    })
+    let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
+    create_texture_2d_mips(device, label, size, levels, LEVEL_FORMAT, usage)
 }
