@@ -74,25 +74,25 @@ fn motion(in: VertexOut) -> vec2<f32> {
     return previous - in.clip.xy;
 }
 
-fn shading_normal(in: VertexOut) -> vec3<f32> {
-    // Files mix windings and double-sided sheets, so the facing is decided geometrically: the
-    // shading normal goes to the side of the surface the eye is on.
-    let geometric = cross(dpdx(in.view_position), dpdy(in.view_position));
+// The interpolated normal, turned to the side of the surface the eye is on: open sheets are seen
+// from both sides. It is turned only where both the triangle and the normal face away from the
+// eye. The triangle's facing alone would turn the normals of back faces that win the depth test
+// against the front faces they share a silhouette edge with, whose interpolated normals still
+// face the eye; the normal's alone would turn those that tilt just past grazing on front faces
+// near a silhouette. GpuMesh winds every triangle towards its normals, so the rasteriser's
+// facing, exact however thin the triangle is on screen, means the same in every file.
+fn shading_normal(in: VertexOut, front_facing: bool) -> vec3<f32> {
     let to_eye = mix(-in.view_position, vec3<f32>(0.0, 0.0, 1.0), frame.orthographic);
-    let eye_side = select(-1.0, 1.0, dot(geometric, to_eye) >= 0.0) * geometric;
-    var n = normalize(in.view_normal);
-    if dot(n, eye_side) < 0.0 {
-        n = -n;
-    }
-    return n;
+    let n = normalize(in.view_normal);
+    return select(n, -n, !front_facing && dot(n, to_eye) < 0.0);
 }
 
 @fragment
-fn fs_uint(in: VertexOut) -> GBufferUintOut {
-    return GBufferUintOut(encode_normal_uint(shading_normal(in), ENCODING), vec4<f32>(in.albedo, 1.0), motion(in));
+fn fs_uint(in: VertexOut, @builtin(front_facing) front_facing: bool) -> GBufferUintOut {
+    return GBufferUintOut(encode_normal_uint(shading_normal(in, front_facing), ENCODING), vec4<f32>(in.albedo, 1.0), motion(in));
 }
 
 @fragment
-fn fs_float(in: VertexOut) -> GBufferFloatOut {
-    return GBufferFloatOut(encode_normal_float(shading_normal(in), ENCODING), vec4<f32>(in.albedo, 1.0), motion(in));
+fn fs_float(in: VertexOut, @builtin(front_facing) front_facing: bool) -> GBufferFloatOut {
+    return GBufferFloatOut(encode_normal_float(shading_normal(in, front_facing), ENCODING), vec4<f32>(in.albedo, 1.0), motion(in));
 }

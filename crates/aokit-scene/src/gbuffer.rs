@@ -141,7 +141,7 @@ impl GpuMesh {
         });
         let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("scene indices"),
-            contents: bytemuck::cast_slice(&mesh.indices),
+            contents: bytemuck::cast_slice(&wound_to_normals(mesh)),
             usage: wgpu::BufferUsages::INDEX,
         });
         Self {
@@ -472,9 +472,46 @@ impl GBufferPass {
     }
 }
 
+/// `mesh`'s indices with every triangle wound so that its front face is the side its vertex
+/// normals point to: the G-buffer shader then turns a normal by the rasteriser's facing alone
+/// (gbuffer.wgsl, `shading_normal`). Files mix windings, and open sheets are seen from both
+/// sides. A triangle whose normals sum to nothing along its face keeps its winding.
+fn wound_to_normals(mesh: &Mesh) -> Vec<u32> {
+    mesh.indices
+        .chunks_exact(3)
+        .flat_map(|t| {
+            let [a, b, c] = [t[0], t[1], t[2]].map(|i| i as usize);
+            let p = &mesh.positions;
+            let face = (p[b] - p[a]).cross(p[c] - p[a]);
+            let normals = mesh.normals[a] + mesh.normals[b] + mesh.normals[c];
+            if face.dot(normals) < 0.0 {
+                [t[0], t[2], t[1]]
+            } else {
+                [t[0], t[1], t[2]]
+            }
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn triangles_are_wound_towards_their_normals() {
+        let positions = vec![Vec3::ZERO, Vec3::X, Vec3::Y];
+        let mesh = |normal: Vec3| Mesh {
+            positions: positions.clone(),
+            normals: vec![normal; 3],
+            albedo: vec![Vec3::ONE; 3],
+            indices: vec![0, 1, 2],
+        };
+        // Counter-clockwise about +Z: kept for normals along +Z, turned for normals along -Z.
+        assert_eq!(wound_to_normals(&mesh(Vec3::Z)), [0, 1, 2]);
+        assert_eq!(wound_to_normals(&mesh(Vec3::NEG_Z)), [0, 2, 1]);
+        // Normals in the triangle's plane say nothing: the file's winding stays.
+        assert_eq!(wound_to_normals(&mesh(Vec3::X)), [0, 1, 2]);
+    }
 
     #[test]
     fn uniforms_match_wgsl() {

@@ -358,6 +358,39 @@ fn normals_reconstructed_from_depth_match_the_gbuffer() {
     }
 }
 
+/// The room's sphere (radius 1 about (-1.5, 1, -1.2)) has outward G-buffer normals at every pixel
+/// that shows it, silhouettes included: a normal turned into a surface reads as a fully occluded
+/// pixel. At 480x270 a back face of the sphere wins the depth test on its silhouette, where the
+/// facing once taken from screen derivatives turned its normal inwards.
+#[test]
+fn gbuffer_normals_point_out_of_the_sphere_at_its_silhouette() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let size = [480, 270];
+    let frame = common::render_frame(&gpu, &scene, &scene.cameras[0], &settings_for(&scene), size);
+    let world_from_view = frame.view_from_world.inverse();
+    let centre = Vec3::new(-1.5, 1.0, -1.2);
+    let mut on_sphere = 0;
+    for (i, (&depth, &normal)) in frame.linear_depth.iter().zip(&frame.normals).enumerate() {
+        let pixel = Vec2::new((i % 480) as f32 + 0.5, (i / 480) as f32 + 0.5);
+        let ndc = Vec2::new(pixel.x / 240.0 - 1.0, 1.0 - pixel.y / 135.0);
+        let world = world_from_view
+            .transform_point3(frame.projection.view_position_from_linear(ndc, depth));
+        // The facets lie up to a few hundredths inside the sphere, which touches the floor.
+        if depth > 0.0 && ((world - centre).length() - 1.0).abs() < 0.05 && world.y > 0.1 {
+            on_sphere += 1;
+            let outward = world_from_view
+                .transform_vector3(normal)
+                .dot(world - centre);
+            assert!(
+                outward > 0.0,
+                "pixel {pixel}: normal {normal} points into the sphere"
+            );
+        }
+    }
+    assert!(on_sphere > 1000, "only {on_sphere} pixels show the sphere");
+}
+
 #[test]
 fn pass_times_are_reported_when_the_adapter_has_timestamps() {
     let gpu = gpu();
