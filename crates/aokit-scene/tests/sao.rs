@@ -28,39 +28,47 @@ fn coarser_level(finer: &[f32], size: [u32; 2]) -> (Vec<f32>, [u32; 2]) {
 #[test]
 fn the_depth_mip_chain_keeps_real_depths_picked_by_a_checkerboard() {
     let gpu = gpu();
-    // Odd sides, so that the clamp at the last texel matters, and every depth distinct, so
-    // that a wrong pick or an average cannot match by chance.
-    let size = [37, 23];
-    let depth: Vec<f32> = (0..size[0] * size[1])
-        .map(|i| 2.0 + (i as f32 * 0.618_034).fract() * 5.0 + i as f32 * 1e-4)
-        .collect();
-    let texture = linear_depth_texture(&gpu, size, &depth);
-    let projection = Projection::perspective(1.0, 37.0 / 23.0, 0.1, None);
     let settings = AoSettings::preset(Method::Sao, Preset::High);
     let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
-    let inputs = AoInputs::new(&texture, projection);
-    let (working, levels) = encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
-        let chain = outputs.depth_mips.expect("sao reads a depth MIP chain");
-        let working =
-            aokit::gpu::read_texture_f32(&gpu.device, &gpu.queue, outputs.working_linear_depth)
-                .unwrap();
-        let levels: Vec<_> = (0..chain.mip_level_count())
-            .map(|level| read_level(&gpu, chain, level))
+    // Odd sides, so that the clamp at the last texel matters, and every depth distinct, so
+    // that a wrong pick or an average cannot match by chance. 37 pixels hold six levels and
+    // the chain stops at the five the taps read (3 x 2 workgroups of 16x16 pixels, the last
+    // ones partly outside); 6x3 holds three (the levels it lacks are never written); 40 pixels
+    // by 1 five again, with a one-texel side at every level.
+    for (size, expected_levels) in [([37, 23], 5), ([6, 3], 3), ([40, 1], 5)] {
+        let depth: Vec<f32> = (0..size[0] * size[1])
+            .map(|i| 2.0 + (i as f32 * 0.618_034).fract() * 5.0 + i as f32 * 1e-4)
             .collect();
-        (working, levels)
-    });
-    // 37 pixels hold six levels; the chain stops at the five the taps read.
-    assert_eq!(levels.len(), 5);
-    assert_eq!(levels[0], (working, size));
-    for level in 1..levels.len() {
-        let expected = coarser_level(&levels[level - 1].0, levels[level - 1].1);
-        assert_eq!(levels[level], expected, "level {level}");
-        for d in &levels[level].0 {
-            assert!(depth.contains(d), "level {level}: {d} is no input depth");
+        let texture = linear_depth_texture(&gpu, size, &depth);
+        let aspect = size[0] as f32 / size[1] as f32;
+        let inputs = AoInputs::new(&texture, Projection::perspective(1.0, aspect, 0.1, None));
+        let (working, levels) = encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
+            let chain = outputs.depth_mips.expect("sao reads a depth MIP chain");
+            let working =
+                aokit::gpu::read_texture_f32(&gpu.device, &gpu.queue, outputs.working_linear_depth)
+                    .unwrap();
+            let levels: Vec<_> = (0..chain.mip_level_count())
+                .map(|level| read_level(&gpu, chain, level))
+                .collect();
+            (working, levels)
+        });
+        assert_eq!(levels.len(), expected_levels, "{size:?}");
+        assert_eq!(levels[0], (working, size));
+        for level in 1..levels.len() {
+            let expected = coarser_level(&levels[level - 1].0, levels[level - 1].1);
+            assert_eq!(levels[level], expected, "{size:?}, level {level}");
+            for d in &levels[level].0 {
+                assert!(
+                    depth.contains(d),
+                    "{size:?}, level {level}: {d} is no input depth"
+                );
+            }
         }
     }
 
     // The other methods do not build one.
+    let texture = linear_depth_texture(&gpu, [37, 23], &[3.0; 37 * 23]);
+    let inputs = AoInputs::new(&texture, Projection::perspective(1.0, 1.6, 0.1, None));
     let mut gtao = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default()).unwrap();
     assert!(encode_frame(&gpu, &mut gtao, &inputs, |o| o
         .depth_mips

@@ -35,22 +35,19 @@ impl DepthReduction {
 }
 
 /// Levels of the chain: the working depth and four coarser ones, as far as the kernels' taps
-/// reach (`MAX_MIP_LEVEL` in `sao.wgsl` and `ue4_ssao.wgsl`).
+/// reach (`MAX_MIP_LEVEL` in `sao.wgsl` and `ue4_ssao.wgsl`), and as many as one workgroup of
+/// `depth_mips.wgsl` reduces from a 16x16 block of level 0.
 const LEVELS: u32 = 5;
-/// The timer's name of the dispatch that builds each level past 0, so that `aokit bench` shows
-/// one time per level.
-const LEVEL_PASS_NAMES: [&str; LEVELS as usize - 1] = [
-    "depth_mips_1",
-    "depth_mips_2",
-    "depth_mips_3",
-    "depth_mips_4",
-];
 
-/// Builds the chain's coarser levels from its level 0, a copy of the working depth.
+/// Builds the chain's coarser levels from its level 0, a copy of the working depth, in one
+/// dispatch (`depth_mips.wgsl`).
 #[derive(Default)]
 pub struct DepthMipsPass {
-    /// One level kernel per reduction, compiled the first time it is used.
-    kernels: HashMap<DepthReduction, ComputeKernel>,
+    /// One kernel per reduction and number of coarser levels, compiled the first time it is
+    /// used.
+    kernels: HashMap<(DepthReduction, u32), ComputeKernel>,
+    /// Bound in place of the levels a small chain lacks; never written.
+    stand_in: Option<wgpu::TextureView>,
 }
 
 impl DepthMipsPass {
@@ -72,8 +69,8 @@ impl DepthMipsPass {
     }
 
     /// Records the copy of `depth` (the working linear depth, of `chain`'s size) into level 0
-    /// of `chain` (made by [`DepthMipsPass::create_texture`]) and the building of each coarser
-    /// level from the one below by `reduction`.
+    /// of `chain` (made by [`DepthMipsPass::create_texture`]) and the building of its coarser
+    /// levels from it by `reduction`.
     pub fn encode(
         &mut self,
         ctx: &mut PassContext<'_>,
@@ -81,43 +78,71 @@ impl DepthMipsPass {
         depth: &wgpu::Texture,
         chain: &wgpu::Texture,
     ) {
-        let kernel = self.kernels.entry(reduction).or_insert_with(|| {
-            ComputeKernel::with_constants(
-                ctx.device,
-                &shader::DEPTH_MIPS,
-                &[
-                    bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
-                    bind::storage_texture(1, LINEAR_DEPTH_FORMAT),
-                ],
-                &[("REDUCTION", f64::from(reduction as u32))],
-            )
-        });
         ctx.encoder.copy_texture_to_texture(
             depth.as_image_copy(),
             chain.as_image_copy(),
             depth.size(),
         );
-        let level_view = |level| mip_view(chain, level);
-        for level in 1..chain.mip_level_count() {
-            let size = chain
-                .size()
-                .mip_level_size(level, wgpu::TextureDimension::D2);
-            let (finer, coarser) = (level_view(level - 1), level_view(level));
-            let timestamps = ctx
-                .timer
-                .as_mut()
-                .and_then(|timer| timer.pass(LEVEL_PASS_NAMES[level as usize - 1]));
-            kernel.dispatch(
-                ctx.device,
-                ctx.encoder,
-                &[
-                    wgpu::BindingResource::TextureView(&finer),
-                    wgpu::BindingResource::TextureView(&coarser),
-                ],
-                [size.width, size.height],
-                timestamps,
-            );
+        let coarser_levels = chain.mip_level_count() - 1;
+        if coarser_levels == 0 {
+            return;
         }
+        let kernel = self
+            .kernels
+            .entry((reduction, coarser_levels))
+            .or_insert_with(|| {
+                ComputeKernel::with_constants(
+                    ctx.device,
+                    &shader::DEPTH_MIPS,
+                    &[
+                        bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+                        bind::storage_texture(1, LINEAR_DEPTH_FORMAT),
+                        bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
+                        bind::storage_texture(3, LINEAR_DEPTH_FORMAT),
+                        bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
+                    ],
+                    &[
+                        ("REDUCTION", f64::from(reduction as u32)),
+                        ("COARSER_LEVELS", f64::from(coarser_levels)),
+                    ],
+                )
+            });
+        let stand_in = self.stand_in.get_or_insert_with(|| {
+            create_texture_2d_mips(
+                ctx.device,
+                "aokit depth mips stand-in",
+                [1, 1],
+                1,
+                LINEAR_DEPTH_FORMAT,
+                wgpu::TextureUsages::STORAGE_BINDING,
+            )
+            .create_view(&Default::default())
+        });
+        let levels: Vec<wgpu::TextureView> = (0..LEVELS)
+            .map(|level| {
+                if level < chain.mip_level_count() {
+                    mip_view(chain, level)
+                } else {
+                    stand_in.clone()
+                }
+            })
+            .collect();
+        let resources: Vec<wgpu::BindingResource<'_>> = levels
+            .iter()
+            .map(wgpu::BindingResource::TextureView)
+            .collect();
+        let level_1 = chain.size().mip_level_size(1, wgpu::TextureDimension::D2);
+        let timestamps = ctx
+            .timer
+            .as_mut()
+            .and_then(|timer| timer.pass(kernel.name()));
+        kernel.dispatch(
+            ctx.device,
+            ctx.encoder,
+            &resources,
+            [level_1.width, level_1.height],
+            timestamps,
+        );
     }
 }
 
