@@ -33,10 +33,11 @@ override COARSER_LEVELS: u32;
 @group(0) @binding(3) var level_3: texture_storage_2d<r32float, write>;
 @group(0) @binding(4) var level_4: texture_storage_2d<r32float, write>;
 
-// This workgroup's texels of levels 1, 2 and 3, row by row.
-var<workgroup> block_1: array<f32, 64>;
-var<workgroup> block_2: array<f32, 16>;
-var<workgroup> block_3: array<f32, 4>;
+// This workgroup's texels of levels 1 (8x8), 2 (4x4), 3 (2x2) and 4 (1x1), each level row by
+// row from its offset in OFFSETS (indexed by level - 1), so that a level is read while the next
+// is written.
+const OFFSETS = array<u32, 4>(0u, 64u, 80u, 84u);
+var<workgroup> block: array<f32, 85>;
 
 // The texel at `texel` of a coarser level from its children at offsets (0, 0), (1, 0), (0, 1)
 // and (1, 1), in that order.
@@ -52,64 +53,67 @@ fn child(texel: vec2<u32>, k: u32, last: vec2<u32>) -> vec2<u32> {
     return min(2u * texel + vec2<u32>(k & 1u, k >> 1u), last);
 }
 
+fn level_size(level: u32) -> vec2<u32> {
+    switch level {
+        case 0u: { return textureDimensions(level_0); }
+        case 1u: { return textureDimensions(level_1); }
+        case 2u: { return textureDimensions(level_2); }
+        case 3u: { return textureDimensions(level_3); }
+        default: { return textureDimensions(level_4); }
+    }
+}
+
+// Stores texel `texel` of `level` (1 to 4) and keeps it in the workgroup's block, where the
+// thread at `local` makes it.
+fn keep(level: u32, texel: vec2<u32>, local: vec2<u32>, depth: f32) {
+    let side = 16u >> level;
+    block[OFFSETS[level - 1u] + local.y * side + local.x] = depth;
+    if any(texel >= level_size(level)) {
+        return;
+    }
+    let value = vec4<f32>(depth, 0.0, 0.0, 0.0);
+    switch level {
+        case 1u: { textureStore(level_1, texel, value); }
+        case 2u: { textureStore(level_2, texel, value); }
+        case 3u: { textureStore(level_3, texel, value); }
+        default: { textureStore(level_4, texel, value); }
+    }
+}
+
+// The texel of `level` (2 to 4) that the thread at `local` of workgroup `group` makes, from the
+// block of the level below.
+fn next_level(level: u32, group: vec2<u32>, local: vec2<u32>) {
+    let side = 16u >> level;
+    let texel = group * side + local;
+    let last = level_size(level - 1u) - 1u;
+    var children: vec4<f32>;
+    for (var k = 0u; k < 4u; k++) {
+        let at = child(texel, k, last) - group * (2u * side);
+        children[k] = block[OFFSETS[level - 2u] + at.y * 2u * side + at.x];
+    }
+    keep(level, texel, local, reduce(texel, children));
+}
+
 @compute @workgroup_size(8, 8)
 fn main(@builtin(workgroup_id) group: vec3<u32>, @builtin(local_invocation_id) local: vec3<u32>) {
     // Level 1: every thread, from level 0.
-    let last_0 = textureDimensions(level_0) - 1u;
     let texel_1 = group.xy * 8u + local.xy;
     var children: vec4<f32>;
     for (var k = 0u; k < 4u; k++) {
-        children[k] = textureLoad(level_0, child(texel_1, k, last_0), 0).r;
+        children[k] = textureLoad(level_0, child(texel_1, k, level_size(0u) - 1u), 0).r;
     }
-    let depth_1 = reduce(texel_1, children);
-    if all(texel_1 < textureDimensions(level_1)) {
-        textureStore(level_1, texel_1, vec4<f32>(depth_1, 0.0, 0.0, 0.0));
-    }
-    block_1[local.y * 8u + local.x] = depth_1;
+    keep(1u, texel_1, local.xy, reduce(texel_1, children));
+    // Levels 2 to 4: 4x4 threads, then 2x2, then one, each from the level below.
     workgroupBarrier();
-
-    // Level 2: 4x4 threads, from level 1's 8x8.
     if COARSER_LEVELS >= 2u && all(local.xy < vec2<u32>(4u)) {
-        let last = textureDimensions(level_1) - 1u;
-        let texel = group.xy * 4u + local.xy;
-        for (var k = 0u; k < 4u; k++) {
-            let at = child(texel, k, last) - group.xy * 8u;
-            children[k] = block_1[at.y * 8u + at.x];
-        }
-        let depth = reduce(texel, children);
-        if all(texel < textureDimensions(level_2)) {
-            textureStore(level_2, texel, vec4<f32>(depth, 0.0, 0.0, 0.0));
-        }
-        block_2[local.y * 4u + local.x] = depth;
+        next_level(2u, group.xy, local.xy);
     }
     workgroupBarrier();
-
-    // Level 3: 2x2 threads, from level 2's 4x4.
     if COARSER_LEVELS >= 3u && all(local.xy < vec2<u32>(2u)) {
-        let last = textureDimensions(level_2) - 1u;
-        let texel = group.xy * 2u + local.xy;
-        for (var k = 0u; k < 4u; k++) {
-            let at = child(texel, k, last) - group.xy * 4u;
-            children[k] = block_2[at.y * 4u + at.x];
-        }
-        let depth = reduce(texel, children);
-        if all(texel < textureDimensions(level_3)) {
-            textureStore(level_3, texel, vec4<f32>(depth, 0.0, 0.0, 0.0));
-        }
-        block_3[local.y * 2u + local.x] = depth;
+        next_level(3u, group.xy, local.xy);
     }
     workgroupBarrier();
-
-    // Level 4: one thread, from level 3's 2x2.
     if COARSER_LEVELS >= 4u && all(local.xy == vec2<u32>(0u)) {
-        let last = textureDimensions(level_3) - 1u;
-        let texel = group.xy;
-        for (var k = 0u; k < 4u; k++) {
-            let at = child(texel, k, last) - group.xy * 2u;
-            children[k] = block_3[at.y * 2u + at.x];
-        }
-        if all(texel < textureDimensions(level_4)) {
-            textureStore(level_4, texel, vec4<f32>(reduce(texel, children), 0.0, 0.0, 0.0));
-        }
+        next_level(4u, group.xy, local.xy);
     }
 }
