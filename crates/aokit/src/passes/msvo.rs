@@ -35,9 +35,10 @@ const MERGE_PASS_NAMES: [&str; MSVO_MAX_LEVELS as usize - 1] = [
 pub struct MsvoPass {
     obscurance: ComputeKernel,
     merge: ComputeKernel,
-    /// Each level's own obscurance, the chain's size and levels; and the merged levels 1 and
-    /// up, from half the chain's size (level 0's merge writes the method's AO).
-    targets: Option<(wgpu::Texture, Option<wgpu::Texture>)>,
+    /// Each level's own obscurance, the chain's size and levels, when there are two or more
+    /// (one level alone is written straight into the method's AO); and the merged levels 1
+    /// and up, from half the chain's size (level 0's merge writes the method's AO).
+    targets: Option<(Option<wgpu::Texture>, Option<wgpu::Texture>)>,
 }
 
 impl MsvoPass {
@@ -76,17 +77,21 @@ impl MsvoPass {
     ) {
         let levels = levels.min(chain.mip_level_count());
         let size = [chain.width(), chain.height()];
-        let stale = |texture: &wgpu::Texture, size: [u32; 2], mips: u32| {
-            [texture.width(), texture.height()] != size || texture.mip_level_count() != mips
+        // A texture of `mips` levels from `size` where `wanted`, and none elsewhere.
+        let stale = |texture: &Option<wgpu::Texture>, size: [u32; 2], mips: u32, wanted: bool| {
+            match texture {
+                Some(t) => {
+                    !wanted || [t.width(), t.height()] != size || t.mip_level_count() != mips
+                }
+                None => wanted,
+            }
         };
         if self.targets.as_ref().is_none_or(|(own, merged)| {
-            stale(own, size, levels)
-                || match merged {
-                    Some(merged) => stale(merged, half(size), levels - 2),
-                    None => levels > 2,
-                }
+            stale(own, size, levels, levels > 1)
+                || stale(merged, half(size), levels.saturating_sub(2), levels > 2)
         }) {
-            let own = level_texture(ctx.device, "aokit msvo obscurance", size, levels);
+            let own = (levels > 1)
+                .then(|| level_texture(ctx.device, "aokit msvo obscurance", size, levels));
             let merged = (levels > 2)
                 .then(|| level_texture(ctx.device, "aokit msvo merged", half(size), levels - 2));
             self.targets = Some((own, merged));
@@ -95,13 +100,12 @@ impl MsvoPass {
         let chain_view = chain.create_view(&Default::default());
         // One level alone is the method's AO; otherwise each level's obscurance is kept for
         // its merge.
-        let own_levels: Vec<wgpu::TextureView> = (0..levels).map(|l| mip_view(own, l)).collect();
+        let own_levels: Vec<wgpu::TextureView> = own
+            .iter()
+            .flat_map(|own| (0..levels).map(|l| mip_view(own, l)))
+            .collect();
         for level in 0..levels {
-            let target = if levels == 1 {
-                ao
-            } else {
-                &own_levels[level as usize]
-            };
+            let target = own_levels.get(level as usize).unwrap_or(ao);
             self.dispatch(
                 ctx,
                 &self.obscurance,
