@@ -391,6 +391,58 @@ fn gbuffer_normals_point_out_of_the_sphere_at_its_silhouette() {
     assert!(on_sphere > 1000, "only {on_sphere} pixels show the sphere");
 }
 
+/// AoOutputs' promise to renderers that cache bind groups: the output texture stays the same
+/// from frame to frame, and a new size, a setting that adds a texture or another temporal view
+/// gives a new one, which the texture's identity tells.
+#[test]
+fn the_output_texture_changes_only_when_the_pipeline_makes_new_ones() {
+    let gpu = gpu();
+    let settings = AoSettings::preset(aokit::Method::Gtao, Preset::Low);
+    let mut pipeline = aokit::AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
+    let projection = Projection::perspective(1.0, 1.5, 0.1, None);
+    let small = common::linear_depth_texture(&gpu, [24, 16], &[2.0; 24 * 16]);
+    let large = common::linear_depth_texture(&gpu, [36, 24], &[2.0; 36 * 24]);
+    let ao = |pipeline: &mut aokit::AoPipeline, inputs: &aokit::AoInputs<'_>| {
+        common::encode_frame(&gpu, pipeline, inputs, |outputs| outputs.ao.clone())
+    };
+    let first = ao(&mut pipeline, &aokit::AoInputs::new(&small, projection));
+    let again = ao(&mut pipeline, &aokit::AoInputs::new(&small, projection));
+    assert_eq!(
+        first, again,
+        "the same inputs and settings reuse the output"
+    );
+    let resized = ao(&mut pipeline, &aokit::AoInputs::new(&large, projection));
+    assert_ne!(resized, again, "a new size makes new textures");
+
+    let temporal = AoSettings {
+        temporal: aokit::TemporalSettings {
+            enabled: true,
+            ..settings.temporal
+        },
+        ..settings
+    };
+    pipeline
+        .set_settings(&gpu.device, &gpu.queue, &temporal)
+        .unwrap();
+    let view = |view_id| aokit::AoInputs {
+        view_id,
+        ..aokit::AoInputs::new(&large, projection)
+    };
+    let view_0 = ao(&mut pipeline, &view(0));
+    assert_ne!(view_0, resized, "the temporal filter writes its own output");
+    assert_eq!(
+        ao(&mut pipeline, &view(0)),
+        view_0,
+        "each view keeps its output"
+    );
+    let view_1 = ao(&mut pipeline, &view(1));
+    assert_ne!(
+        view_1, view_0,
+        "another view has another history and output"
+    );
+    assert_eq!(ao(&mut pipeline, &view(0)), view_0);
+}
+
 #[test]
 fn pass_times_are_reported_when_the_adapter_has_timestamps() {
     let gpu = gpu();

@@ -213,9 +213,16 @@ impl Denoiser {
     }
 }
 
-/// What [`AoPipeline::encode`] produced. The textures stay valid until the next `encode` with a
-/// different size or resolution. Each says its size: the input's, or
+/// What [`AoPipeline::encode`] produced. Each texture says its size: the input's, or
 /// [`AoOutputs::working_size`] for what the kernel wrote before the upsample.
+///
+/// The textures are the same from one `encode` to the next unless the pipeline had to make new
+/// ones: for a new input size or [`AoSettings::resolution`], for settings that add or drop a
+/// texture (bent normals, the spatial filter and [`AoSettings::filter_resolution`], a mask, a
+/// method that reads a depth MIP chain, motion vectors for a temporal filter below full
+/// resolution), and, with the temporal filter on, per [`AoInputs::view_id`] (each view keeps
+/// its own history and output). wgpu textures compare by identity, so a renderer that keeps a
+/// bind group remakes it only when `outputs.ao != cached_texture`.
 ///
 /// ```no_run
 /// # fn f(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, outputs: &aokit::AoOutputs<'_>) {
