@@ -8,8 +8,8 @@ mod common;
 use aokit::{AoSettings, GpuContext, Method, MsvoSettings, Preset, Resolution};
 use aokit_scene::{Builtin, Frame, Scene};
 use common::{
-    assert_in_range_with_sky_at_one, covered, gpu, pixel_of, render_frame, rmse, scene_settings,
-    trace,
+    assert_in_range_with_sky_at_one, covered, gpu, pixel_of, reference_errors, render_frame,
+    scene_settings,
 };
 use glam::Vec3;
 
@@ -100,20 +100,6 @@ fn room_corners_occlude_and_the_open_floor_does_not() {
     );
 }
 
-/// MSVO's RMSE at `high` against the reference, and that of AO 1 everywhere (a kernel that
-/// finds no occlusion), on the scene's first camera.
-fn rmse_and_unoccluded_rmse(gpu: &GpuContext, scene: &Scene) -> (f64, f64) {
-    let camera = &scene.cameras[0];
-    let traced = trace(scene, camera, SIZE, 128);
-    let frame = render(gpu, scene, &settings(scene, Preset::High));
-    let surface = |i: usize| traced.linear_depth[i] > 0.0;
-    let ones = vec![1.0; frame.ao.len()];
-    (
-        rmse(&frame.ao, &traced.ao, surface),
-        rmse(&ones, &traced.ao, surface),
-    )
-}
-
 #[test]
 fn msvo_error_against_the_reference_at_high_is_recorded_and_bounded() {
     let gpu = gpu();
@@ -124,7 +110,9 @@ fn msvo_error_against_the_reference_at_high_is_recorded_and_bounded() {
     // on room at 480x270.
     for (builtin, bound) in [(Builtin::Room, 0.075), (Builtin::Stairs, 0.105)] {
         let scene = builtin.build();
-        let (msvo, unoccluded) = rmse_and_unoccluded_rmse(&gpu, &scene);
+        let settings = settings(&scene, Preset::High);
+        let (errors, unoccluded) = reference_errors(&gpu, &scene, &[settings], SIZE);
+        let msvo = errors[0];
         eprintln!(
             "{}: MSVO RMSE {msvo:.4}, AO 1 everywhere {unoccluded:.4}",
             scene.name

@@ -4,10 +4,10 @@
 
 mod common;
 
-use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset, Projection};
-use aokit_scene::{Builtin, Scene};
+use aokit::{AoInputs, AoPipeline, AoSettings, Method, Preset, Projection};
+use aokit_scene::Builtin;
 use common::{
-    encode_frame, gpu, linear_depth_texture, read_level, render_frame, rmse, scene_settings, trace,
+    encode_frame, gpu, linear_depth_texture, read_level, reference_errors, scene_settings,
 };
 
 /// The level above `finer` (of `size`) as the paper's rotated-grid subsample builds it: texel
@@ -77,21 +77,6 @@ fn the_depth_mip_chain_keeps_real_depths_picked_by_a_checkerboard() {
 
 const SIZE: [u32; 2] = [160, 96];
 
-/// SAO's RMSE at `high` against the reference, and that of AO 1 everywhere (a kernel that
-/// finds no occlusion), on the scene's first camera.
-fn rmse_and_unoccluded_rmse(gpu: &GpuContext, scene: &Scene) -> (f64, f64) {
-    let camera = &scene.cameras[0];
-    let traced = trace(scene, camera, SIZE, 128);
-    let settings = scene_settings(scene, Method::Sao, Preset::High);
-    let frame = render_frame(gpu, scene, camera, &settings, SIZE);
-    let surface = |i: usize| traced.linear_depth[i] > 0.0;
-    let ones = vec![1.0; frame.ao.len()];
-    (
-        rmse(&frame.ao, &traced.ao, surface),
-        rmse(&ones, &traced.ao, surface),
-    )
-}
-
 #[test]
 fn sao_error_against_the_reference_at_high_is_recorded_and_bounded() {
     let gpu = gpu();
@@ -101,7 +86,9 @@ fn sao_error_against_the_reference_at_high_is_recorded_and_bounded() {
     // to 0 and fades out far occluders, so it stays well above the horizon methods.
     for (builtin, bound) in [(Builtin::Room, 0.13), (Builtin::Stairs, 0.18)] {
         let scene = builtin.build();
-        let (sao, unoccluded) = rmse_and_unoccluded_rmse(&gpu, &scene);
+        let settings = scene_settings(&scene, Method::Sao, Preset::High);
+        let (errors, unoccluded) = reference_errors(&gpu, &scene, &[settings], SIZE);
+        let sao = errors[0];
         eprintln!(
             "{}: SAO RMSE {sao:.4}, AO 1 everywhere {unoccluded:.4}",
             scene.name

@@ -9,7 +9,7 @@ use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset, Projec
 use aokit_scene::{Builtin, Frame, Scene};
 use common::{
     assert_in_range_with_sky_at_one, covered, encode_frame, gpu, linear_depth_texture, pixel_of,
-    read_level, render_frame, rmse, scene_settings, trace,
+    read_level, reference_errors, render_frame, scene_settings,
 };
 use glam::Vec3;
 
@@ -183,19 +183,14 @@ fn error_against_the_reference_at_high_is_recorded_and_bounded() {
         (Builtin::Stairs, [0.175, 0.2]),
     ] {
         let scene = builtin.build();
-        let camera = &scene.cameras[0];
-        let traced = trace(&scene, camera, SIZE, 128);
-        let surface = |i: usize| traced.linear_depth[i] > 0.0;
-        let ones = vec![1.0; traced.ao.len()];
-        let unoccluded = rmse(&ones, &traced.ao, surface);
-        for (use_normals, bound) in [true, false].into_iter().zip(bounds) {
-            let frame = render(
-                &gpu,
-                &scene,
-                0,
-                &settings(&scene, Preset::High, use_normals),
-            );
-            let error = rmse(&frame.ao, &traced.ao, surface);
+        let versions = [true, false];
+        let (errors, unoccluded) = reference_errors(
+            &gpu,
+            &scene,
+            &versions.map(|use_normals| settings(&scene, Preset::High, use_normals)),
+            SIZE,
+        );
+        for ((use_normals, bound), error) in versions.into_iter().zip(bounds).zip(errors) {
             let view = format!("{} / {}", version(use_normals), scene.name);
             eprintln!("{view}: RMSE {error:.4}, AO 1 everywhere {unoccluded:.4}");
             assert!(error < bound, "{view}: RMSE {error}");

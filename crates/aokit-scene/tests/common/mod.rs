@@ -296,6 +296,32 @@ pub fn trace(
     trace_at(scene, 0.0, camera, size, spp)
 }
 
+/// RMSE against a 128-ray reference of `scene`'s first camera at `size`, over the pixels that
+/// show a surface: of the frame each of `settings` renders, and of AO 1 everywhere (a kernel
+/// that finds no occlusion), which any method worth its samples must beat.
+pub fn reference_errors(
+    gpu: &GpuContext,
+    scene: &Scene,
+    settings: &[AoSettings],
+    size: [u32; 2],
+) -> (Vec<f64>, f64) {
+    let camera = &scene.cameras[0];
+    let traced = trace(scene, camera, size, 128);
+    let surface = |i: usize| traced.linear_depth[i] > 0.0;
+    let errors = settings
+        .iter()
+        .map(|s| {
+            rmse(
+                &render_frame(gpu, scene, camera, s, size).ao,
+                &traced.ao,
+                surface,
+            )
+        })
+        .collect();
+    let ones = vec![1.0; traced.ao.len()];
+    (errors, rmse(&ones, &traced.ao, surface))
+}
+
 /// Pixel index where the world point `world` is the visible surface of `frame`.
 pub fn pixel_of(frame: &aokit_scene::Frame, world: glam::Vec3) -> usize {
     use glam::Vec2;
