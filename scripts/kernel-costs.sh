@@ -13,9 +13,8 @@
 # OUT to target/performance.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-aokit=${1:-target/release/aokit}
-out=${2:-target/performance}
-mkdir -p "$out"
+# shellcheck source=bench-common.sh
+source scripts/bench-common.sh "$@"
 configurations=("--method gtao --preset high")
 for px in 4 8 16 32 64 128; do
     configurations+=("--method gtao --preset high --set max_radius_px=$px")
@@ -31,14 +30,4 @@ configurations+=(
     "--method hbao --preset high"
     "--method hbao --preset high --set max_radius_px=16"
 )
-for scene in room sponza-atrium; do
-    case $scene in
-        room) view=(--scene room) ;;
-        sponza-atrium) view=(--scene scenes/sponza.obj --camera atrium) ;;
-    esac
-    for size in 1920x1080 3840x2160; do
-        "$aokit" bench "${view[@]}" --size "$size" --frames 100 --warmup 10 --json \
-            --compare "${configurations[@]}" >"$out/costs-$scene-$size.json"
-        echo "wrote $out/costs-$scene-$size.json" >&2
-    done
-done
+bench_each_view costs "${configurations[@]}"

@@ -14,16 +14,8 @@
 # OUT to target/performance.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-aokit=${1:-target/release/aokit}
-out=${2:-target/performance}
-mkdir -p "$out"
-# The `aokit bench` options that show scene name $1.
-set_view() {
-    case $1 in
-        room) view=(--scene room) ;;
-        sponza-atrium) view=(--scene scenes/sponza.obj --camera atrium) ;;
-    esac
-}
+# shellcheck source=bench-common.sh
+source scripts/bench-common.sh "$@"
 configurations=()
 for method in ssao-crytek ssao hbao hbao-plus gtao vbao sao ue4-ssao msvo; do
     for preset in low medium high ultra; do
@@ -33,14 +25,12 @@ done
 for preset in low medium high ultra; do
     configurations+=("--method hbao --preset $preset --set hbao.variant=separable")
 done
-for scene in room sponza-atrium; do
+for scene in "${scenes[@]}"; do
     set_view "$scene"
-    for size in 1920x1080 3840x2160; do
+    for size in "${sizes[@]}"; do
         for resolution in full half; do
-            "$aokit" bench "${view[@]}" --size "$size" --set resolution="$resolution" \
-                --frames 100 --warmup 10 --json --compare "${configurations[@]}" \
-                >"$out/$scene-$size-$resolution.json"
-            echo "wrote $out/$scene-$size-$resolution.json" >&2
+            bench_json "$scene-$size-$resolution" "${view[@]}" --size "$size" \
+                --set resolution="$resolution" -- "${configurations[@]}"
         done
     done
 done
@@ -59,14 +49,14 @@ passes=(
     "--set normals.encoding=oct16"
     "--set normals.source=depth-5tap"
 )
-for size in 1920x1080 3840x2160; do
-    "$aokit" bench --scene scenes/sponza.obj --camera atrium --size "$size" --method gtao \
-        --preset high --frames 100 --warmup 10 --json --compare "${passes[@]}" \
-        >"$out/passes-sponza-atrium-$size.json"
-    echo "wrote $out/passes-sponza-atrium-$size.json" >&2
+set_view sponza-atrium
+for size in "${sizes[@]}"; do
+    bench_json "passes-sponza-atrium-$size" "${view[@]}" --size "$size" --method gtao \
+        --preset high -- "${passes[@]}"
 done
 # The separable HBAO against the per-pixel one at the same samples (four directions), and the
-# passes of SAO, UE4's SSAO and MSVO (one per level), to OUT/variants-SCENE-SIZE.json.
+# passes of SAO, UE4's SSAO and MSVO (the depth chain, and MSVO's per level), to
+# OUT/variants-SCENE-SIZE.json.
 variants=(
     "--method hbao --preset high --set hbao.direction_count=4"
     "--method hbao --preset high --set hbao.variant=separable"
@@ -76,11 +66,4 @@ variants=(
     "--method ue4-ssao --preset high"
     "--method msvo --preset high"
 )
-for scene in room sponza-atrium; do
-    set_view "$scene"
-    for size in 1920x1080 3840x2160; do
-        "$aokit" bench "${view[@]}" --size "$size" --frames 100 --warmup 10 --json \
-            --compare "${variants[@]}" >"$out/variants-$scene-$size.json"
-        echo "wrote $out/variants-$scene-$size.json" >&2
-    done
-done
+bench_each_view variants "${variants[@]}"

@@ -1,0 +1,44 @@
+# Sourced by performance.sh and kernel-costs.sh with their arguments ([AOKIT] [OUT]): the
+# binary, the output directory, the two views and sizes they time, and the one way they run
+# `aokit bench`.
+aokit=${1:-target/release/aokit}
+out=${2:-target/performance}
+mkdir -p "$out"
+scenes=(room sponza-atrium)
+sizes=(1920x1080 3840x2160)
+
+# The `aokit bench` options that show scene name $1, in `view`.
+set_view() {
+    case $1 in
+        room) view=(--scene room) ;;
+        sponza-atrium) view=(--scene scenes/sponza.obj --camera atrium) ;;
+    esac
+}
+
+# bench_json NAME OPTION... -- CONFIGURATION...: one interleaved `--compare` run of the
+# configurations, 100 timed frames after 10, its JSON array to OUT/NAME.json.
+bench_json() {
+    local name=$1 options=()
+    shift
+    while [ "$1" != -- ]; do
+        options+=("$1")
+        shift
+    done
+    shift
+    "$aokit" bench "${options[@]}" --frames 100 --warmup 10 --json --compare "$@" \
+        >"$out/$name.json"
+    echo "wrote $out/$name.json" >&2
+}
+
+# bench_each_view NAME CONFIGURATION...: bench_json on every scene at every size, to
+# OUT/NAME-SCENE-SIZE.json.
+bench_each_view() {
+    local name=$1
+    shift
+    for scene in "${scenes[@]}"; do
+        set_view "$scene"
+        for size in "${sizes[@]}"; do
+            bench_json "$name-$scene-$size" "${view[@]}" --size "$size" -- "$@"
+        done
+    done
+}
