@@ -4,7 +4,7 @@
 # scene, size and resolution, each writing its JSON array to OUT/SCENE-SIZE-RESOLUTION.json.
 # Then GTAO `high` on the atrium with the denoisers, lower resolutions, bent normals and the
 # normal sources, one run per size, to OUT/passes-sponza-atrium-SIZE.json. Last, the separable
-# HBAO and SAO (below).
+# HBAO and SAO, and the depth MIP chain (below).
 # docs/performance.md's tables come from these files. Meant for a GPU: on a software adapter
 # the per-pass times mean nothing (docs/bench.md).
 #
@@ -67,3 +67,15 @@ variants=(
     "--method msvo --preset high"
 )
 bench_each_view variants "${variants[@]}"
+# The depth MIP chain (docs/depth-mips.md): each reading method at `high` with it off, at both
+# precisions and at two offsets, to OUT/depth-mips-SCENE-SIZE.json.
+depth_mips=()
+for method in gtao vbao hbao ssao; do
+    depth_mips+=(
+        "--method $method --preset high"
+        "--method $method --preset high --set depth_mips=fp32"
+        "--method $method --preset high --set depth_mips=fp16"
+        "--method $method --preset high --set depth_mips=fp16 --set depth_mip_offset=2"
+    )
+done
+bench_each_view depth-mips "${depth_mips[@]}"

@@ -13,6 +13,17 @@
 //   furthest rather than nearest. NO_SURFACE is 0, below every surface, so a block with any
 //   surface keeps one.
 //
+// - MEAN_OR_FURTHEST (`depth_mips`, the chain the marching and point kernels read far samples
+//   from): where the four children lie on one surface (the kernels' DEPTH_EDGE test in
+//   common/ao.wgsl), their mean in the quantity that is affine on a plane, 1 / depth or depth
+//   (orthographic), so that a coarser texel is exact at its centre on a plane; else the
+//   furthest, so that a coarse read at an edge keeps the background and does not invent a
+//   surface between the two (docs/depth-mips.md measured the four candidate reductions).
+//
+// The levels go either to a texture's MIP levels 1 to 4 (`level_1` to `level_4`) or, with
+// ATLAS, all to `level_1`, stacked: level L at rows atlas_row(L) on, which lets a kernel
+// gather 2x2 texels of any level (WGSL gathers level 0 only).
+//
 // A workgroup reduces one 16x16 block of level 0: each of its 8x8 threads makes a texel of level
 // 1, then a quarter of them those of level 2 from level 1's in workgroup memory, and so on to
 // level 4, so the chain takes one dispatch instead of one per level. Children are clamped to
@@ -22,16 +33,24 @@
 
 const REDUCTION_SUBSAMPLE: u32 = 0u;
 const REDUCTION_FURTHEST: u32 = 1u;
+const REDUCTION_MEAN_OR_FURTHEST: u32 = 2u;
 override REDUCTION: u32;
+// MEAN_OR_FURTHEST: whether depth (orthographic) or 1 / depth (perspective) is affine on a
+// plane.
+override ORTHOGRAPHIC: bool = false;
+// Whether every level goes to `level_1`, stacked (see above).
+override ATLAS: bool = false;
+// common/ao.wgsl's DEPTH_EDGE: the relative spread of one surface.
+const ONE_SURFACE: f32 = 0.1;
 // Levels past 0 the chain holds, 1 to 4: a small image runs out of texels sooner, and the
 // bindings of the levels it lacks hold a stand-in that is never written.
 override COARSER_LEVELS: u32;
 
 @group(0) @binding(0) var level_0: texture_2d<f32>;
-@group(0) @binding(1) var level_1: texture_storage_2d<r32float, write>;
-@group(0) @binding(2) var level_2: texture_storage_2d<r32float, write>;
-@group(0) @binding(3) var level_3: texture_storage_2d<r32float, write>;
-@group(0) @binding(4) var level_4: texture_storage_2d<r32float, write>;
+@group(0) @binding(1) var level_1: LevelTexture;
+@group(0) @binding(2) var level_2: LevelTexture;
+@group(0) @binding(3) var level_3: LevelTexture;
+@group(0) @binding(4) var level_4: LevelTexture;
 
 // This workgroup's texels of levels 1 (8x8), 2 (4x4), 3 (2x2) and 4 (1x1), each level row by
 // row from its offset in OFFSETS (indexed by level - 1), so that a level is read while the next
@@ -45,7 +64,15 @@ fn reduce(texel: vec2<u32>, children: vec4<f32>) -> f32 {
     if REDUCTION == REDUCTION_SUBSAMPLE {
         return children[(texel.y & 1u) + 2u * (texel.x & 1u)];
     }
-    return max(max(children.x, children.y), max(children.z, children.w));
+    let furthest = max(max(children.x, children.y), max(children.z, children.w));
+    let nearest = min(min(children.x, children.y), min(children.z, children.w));
+    if REDUCTION == REDUCTION_MEAN_OR_FURTHEST && nearest > 0.0 && furthest <= nearest * (1.0 + ONE_SURFACE) {
+        if ORTHOGRAPHIC {
+            return dot(children, vec4<f32>(0.25));
+        }
+        return 1.0 / dot(1.0 / children, vec4<f32>(0.25));
+    }
+    return furthest;
 }
 
 // Child `k` (0 to 3, in reduce's order) of `texel`, clamped to the level below's last texel.
@@ -53,14 +80,18 @@ fn child(texel: vec2<u32>, k: u32, last: vec2<u32>) -> vec2<u32> {
     return min(2u * texel + vec2<u32>(k & 1u, k >> 1u), last);
 }
 
+// A level's size, as a texture's MIP level has it: halved and rounded down, at least 1.
 fn level_size(level: u32) -> vec2<u32> {
-    switch level {
-        case 0u: { return textureDimensions(level_0); }
-        case 1u: { return textureDimensions(level_1); }
-        case 2u: { return textureDimensions(level_2); }
-        case 3u: { return textureDimensions(level_3); }
-        default: { return textureDimensions(level_4); }
+    return max(textureDimensions(level_0) >> vec2<u32>(level), vec2<u32>(1u));
+}
+
+// With ATLAS, the first row of `level` in `level_1`: the heights of the levels above it.
+fn atlas_row(level: u32) -> u32 {
+    var row = 0u;
+    for (var k = 1u; k < level; k++) {
+        row += level_size(k).y;
     }
+    return row;
 }
 
 // Stores texel `texel` of `level` (1 to 4) and keeps it in the workgroup's block, where the
@@ -72,6 +103,10 @@ fn keep(level: u32, texel: vec2<u32>, local: vec2<u32>, depth: f32) {
         return;
     }
     let value = vec4<f32>(depth, 0.0, 0.0, 0.0);
+    if ATLAS {
+        textureStore(level_1, texel + vec2<u32>(0u, atlas_row(level)), value);
+        return;
+    }
     switch level {
         case 1u: { textureStore(level_1, texel, value); }
         case 2u: { textureStore(level_2, texel, value); }

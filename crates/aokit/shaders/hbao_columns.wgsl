@@ -5,7 +5,7 @@
 const AXIS = vec2<i32>(0, 1);
 
 // The rows pass's output: the +x and -x directions' occlusion.
-@group(0) @binding(8) var row_occlusion: texture_2d<f32>;
+@group(0) @binding(9) var row_occlusion: texture_2d<f32>;
 
 fn store_line(s: Surface, occlusion: f32) {
     let total = occlusion + textureLoad(row_occlusion, s.pixel, 0).r;

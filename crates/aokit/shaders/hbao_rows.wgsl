@@ -3,7 +3,7 @@
 
 const AXIS = vec2<i32>(1, 0);
 
-@group(0) @binding(8) var row_occlusion_out: texture_storage_2d<r32float, write>;
+@group(0) @binding(9) var row_occlusion_out: texture_storage_2d<r32float, write>;
 
 fn store_line(s: Surface, occlusion: f32) {
     textureStore(row_occlusion_out, s.pixel, vec4<f32>(occlusion, 0.0, 0.0, 0.0));

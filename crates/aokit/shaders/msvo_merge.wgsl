@@ -4,8 +4,8 @@
 // the texel's (MiniEngine's and Unity's blend of levels, seed 003). Written into `ao_out`,
 // whose size names the level; at level 0 the product is shaped and is the method's AO.
 
-@group(0) @binding(8) var finer: texture_2d<f32>;
-@group(0) @binding(9) var coarser: texture_2d<f32>;
+@group(0) @binding(9) var finer: texture_2d<f32>;
+@group(0) @binding(10) var coarser: texture_2d<f32>;
 
 // Relative depth difference that halves a coarse texel's weight against one on the texel's
 // own surface: about what a plane seen at 60 degrees from its normal changes across one texel.

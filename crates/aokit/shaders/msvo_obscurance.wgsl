@@ -83,7 +83,7 @@ fn level_visibility(t: vec2<u32>, level: u32) -> f32 {
         let sa = source_pixel(vec2<u32>(a), level);
         let sb = source_pixel(vec2<u32>(b), level);
         let reach = 0.5 * length(sa - sb) / disc_px;
-        let mid = depth_at(0.5 * (sa + sb));
+        let mid = depth_at(0.5 * (sa + sb), 0u);
         if reach >= 1.0 || mid == NO_SURFACE {
             continue;
         }

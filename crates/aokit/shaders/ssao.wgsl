@@ -26,7 +26,8 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
             visible += weight;
             continue;
         }
-        let occluder = depth_at(pixel_of(sample));
+        let at = pixel_of(sample);
+        let occluder = depth_at(at, mip_level(length(at - surface.center)));
         let sample_depth = -sample.z;
         // Occluded when the depth buffer lies in front of the point by more than the bias
         // (self-occlusion of a plane stored at finite precision), and within range of it.

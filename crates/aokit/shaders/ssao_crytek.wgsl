@@ -21,7 +21,8 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         if view.orthographic < 0.5 && sample.z >= 0.0 {
             continue;
         }
-        let occluder = depth_at(pixel_of(sample));
+        let at = pixel_of(sample);
+        let occluder = depth_at(at, mip_level(length(at - surface.center)));
         if occluder == NO_SURFACE {
             continue;
         }

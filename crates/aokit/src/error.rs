@@ -32,6 +32,13 @@ pub enum AoError {
     /// A texture handed in is unusable.
     #[error(transparent)]
     Input(#[from] InputError),
+    /// `depth_mips = fp16` on a device that cannot write R16Float storage textures: they need
+    /// `Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES` and an adapter whose R16Float format
+    /// features include storage. `fp32` works everywhere.
+    #[error(
+        "depth_mips = fp16 needs R16Float storage textures (Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES), which this device does not have; use depth_mips = fp32"
+    )]
+    Fp16DepthMipsUnsupported,
     /// The resolution exceeds the device's texture limit.
     #[error("resolution {}x{} exceeds this device's texture limit of {max}", size[0], size[1])]
     TooLarge {

@@ -146,8 +146,11 @@ impl GpuContext {
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("aokit"),
-                // Timestamps where the adapter has them: tools report per-pass GPU time.
-                required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
+                // Timestamps where the adapter has them: tools report per-pass GPU time. Adapter
+                // format features where they give R16Float storage, which the fp16 depth MIP
+                // chain writes (not a storage format of WebGPU's core).
+                required_features: adapter.features()
+                    & (wgpu::Features::TIMESTAMP_QUERY | fp16_storage_feature(&adapter)),
                 required_limits: adapter.limits(),
                 ..Default::default()
             })
@@ -196,6 +199,20 @@ impl GpuContext {
             .collect::<Vec<_>>()
             .join(" ");
         format!("{} ({:?}, {})", info.name, info.backend, driver)
+    }
+}
+
+/// `Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES` where the adapter can write `R16Float`
+/// storage textures with it, else none.
+fn fp16_storage_feature(adapter: &wgpu::Adapter) -> wgpu::Features {
+    let writable = adapter
+        .get_texture_format_features(wgpu::TextureFormat::R16Float)
+        .flags
+        .contains(wgpu::TextureFormatFeatureFlags::STORAGE_WRITE_ONLY);
+    if writable {
+        wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES
+    } else {
+        wgpu::Features::empty()
     }
 }
 
@@ -491,7 +508,8 @@ pub fn read_texture(
     Ok(out)
 }
 
-/// Reads back a single-channel `f32` texture (`R32Float` or `Depth32Float`).
+/// Reads back a single-channel float texture (`R32Float`, `R16Float` or `Depth32Float`) as
+/// `f32` texels.
 ///
 /// ```no_run
 /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, outputs: &aokit::AoOutputs<'_>)
@@ -508,9 +526,14 @@ pub fn read_texture_f32(
 ) -> Result<Vec<f32>, GpuError> {
     match texture.format() {
         wgpu::TextureFormat::R32Float | wgpu::TextureFormat::Depth32Float => {}
+        wgpu::TextureFormat::R16Float => {
+            let texels: Vec<[f32; 1]> =
+                read_half_texels(device, queue, texture, wgpu::TextureFormat::R16Float)?;
+            return Ok(texels.into_iter().map(|[x]| x).collect());
+        }
         other => {
             return Err(GpuError::Readback(format!(
-                "expected an R32Float or Depth32Float texture, got {other:?}"
+                "expected an R32Float, R16Float or Depth32Float texture, got {other:?}"
             )));
         }
     }

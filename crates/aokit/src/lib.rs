@@ -35,10 +35,10 @@ pub use inputs::{AoInputs, AoMask, InputError};
 pub use pipeline::{AoOutputs, AoPipeline};
 pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
-    AoSettings, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings, HbaoVariant,
-    MSVO_MAX_LEVELS, Method, MsvoSettings, NoiseKind, NoiseSettings, NormalEncoding, NormalSource,
-    NormalSpace, NormalsSettings, Preset, Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX, SettingsError,
-    SpatialKind, SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings, Ue4SsaoSettings,
-    Upsample, VbaoSettings,
+    AoSettings, DepthMips, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings,
+    HbaoVariant, MSVO_MAX_LEVELS, Method, MsvoSettings, NoiseKind, NoiseSettings, NormalEncoding,
+    NormalSource, NormalSpace, NormalsSettings, Preset, Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX,
+    SettingsError, SpatialKind, SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings,
+    Ue4SsaoSettings, Upsample, VbaoSettings,
 };
 pub use timing::PassTime;

@@ -7,7 +7,7 @@ use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
 use crate::passes::decode_normals::DecodeNormalsPass;
-use crate::passes::depth_mips::{DepthMipsPass, DepthReduction};
+use crate::passes::depth_mips::{DepthMipsPass, DepthReduction, atlas_format};
 use crate::passes::guided_filter::GuidedFilterPass;
 use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::mask::MaskPass;
@@ -44,6 +44,8 @@ struct Layout {
     mask: bool,
     /// Whether the method reads a depth MIP chain.
     depth_mips: bool,
+    /// The format of the [`AoSettings::depth_mips`] atlas, when the kernel reads one.
+    depth_mip_atlas: Option<wgpu::TextureFormat>,
 }
 
 /// The intermediate textures.
@@ -65,6 +67,8 @@ struct Targets {
     masked_ao: Option<Target>,
     /// The working depth's MIP chain, for a method that reads one; its view shows every level.
     depth_mips: Option<Target>,
+    /// The [`AoSettings::depth_mips`] chain, for a kernel that reads far samples from it.
+    depth_mip_atlas: Option<Target>,
 }
 
 /// The downsample's and the upsample's textures.
@@ -125,8 +129,26 @@ impl Targets {
                 let view = texture.create_view(&Default::default());
                 (texture, view)
             }),
+            depth_mip_atlas: layout.depth_mip_atlas.map(|format| {
+                let texture = DepthMipsPass::create_atlas(device, working, format);
+                let view = texture.create_view(&Default::default());
+                (texture, view)
+            }),
         }
     }
+}
+
+/// Validates `settings` and checks that `device` can run them: `depth_mips = fp16` writes
+/// R16Float storage textures.
+fn check_settings(device: &wgpu::Device, settings: &AoSettings) -> Result<(), AoError> {
+    settings.validate()?;
+    let fp16_storage = wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES;
+    if atlas_format(settings) == Some(wgpu::TextureFormat::R16Float)
+        && !device.features().contains(fp16_storage)
+    {
+        return Err(AoError::Fp16DepthMipsUnsupported);
+    }
+    Ok(())
 }
 
 /// What the filters read, at the resolution they run at: `ao` may be what they return.
@@ -300,6 +322,14 @@ pub struct AoOutputs<'a> {
     /// `ue4-ssao` the largest, so that each texel of level `k` holds the furthest depth of its
     /// `2^k x 2^k` block of level 0.
     pub depth_mips: Option<&'a wgpu::Texture>,
+    /// With [`AoSettings::depth_mips`] on for a kernel that reads it: the chain its far samples
+    /// read, `R32Float` (`fp32`) or `R16Float` (`fp16`). Levels 1 to 4 of
+    /// [`AoOutputs::working_linear_depth`] (fewer at small sizes: each has at least 2 texels a
+    /// side), stacked in one texture, level 1 at the top and each level's rows below the one
+    /// before; level `k` is as large as a MIP level `k` would be, and its texel holds the mean
+    /// of the 2x2 texels below it where they lie on one surface (within 10% in depth; of 1 /
+    /// depth, or of depth when orthographic), else their furthest depth.
+    pub depth_mip_atlas: Option<&'a wgpu::Texture>,
 }
 
 /// The AO pipeline for one view.
@@ -366,7 +396,7 @@ impl AoPipeline {
         queue: &wgpu::Queue,
         settings: &AoSettings,
     ) -> Result<Self, AoError> {
-        settings.validate()?;
+        check_settings(device, settings)?;
         Ok(Self {
             settings: *settings,
             view_uniforms: create_uniform_buffer::<ViewUniforms>(device, "aokit view"),
@@ -481,7 +511,7 @@ impl AoPipeline {
         queue: &wgpu::Queue,
         settings: &AoSettings,
     ) -> Result<(), AoError> {
-        settings.validate()?;
+        check_settings(device, settings)?;
         self.settings = *settings;
         self.method.set_settings(device, queue, settings);
         self.denoiser
@@ -558,6 +588,7 @@ impl AoPipeline {
                 && inputs.motion_vectors.is_some(),
             mask: inputs.mask.is_some(),
             depth_mips: settings.method.reads_depth_mips(),
+            depth_mip_atlas: atlas_format(&settings),
         };
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
             self.targets = Some(Targets::new(device, layout));
@@ -663,14 +694,14 @@ impl AoPipeline {
             }
             None => (&targets.linear_depth.1, normals_view),
         };
+        let working_texture = match &targets.working {
+            Some(working) => &working.linear_depth.0,
+            None => &targets.linear_depth.0,
+        };
         // A method that reads a depth MIP chain binds it where the others bind the working
         // depth, which is its level 0.
         let kernel_depth = match (&targets.depth_mips, DepthReduction::of(settings.method)) {
             (Some((chain, view)), Some(reduction)) => {
-                let working_texture = match &targets.working {
-                    Some(working) => &working.linear_depth.0,
-                    None => &targets.linear_depth.0,
-                };
                 self.depth_mips
                     .get_or_insert_with(DepthMipsPass::default)
                     .encode(&mut ctx, reduction, working_texture, chain);
@@ -678,6 +709,16 @@ impl AoPipeline {
             }
             _ => working_depth,
         };
+        if let Some((atlas, _)) = &targets.depth_mip_atlas {
+            self.depth_mips
+                .get_or_insert_with(DepthMipsPass::default)
+                .encode_atlas(
+                    &mut ctx,
+                    working_texture,
+                    atlas,
+                    projection.is_orthographic(),
+                );
+        }
         if settings.method == Method::Msvo {
             let (chain, _) = targets
                 .depth_mips
@@ -711,6 +752,7 @@ impl AoPipeline {
                 working_normals,
                 &targets.ao.1,
                 targets.bent_normals.as_ref().map(|(_, view)| view),
+                targets.depth_mip_atlas.as_ref().map(|(_, view)| view),
             );
         }
 
@@ -800,6 +842,7 @@ impl AoPipeline {
             bent_normals_view: bent_normals.map(|(_, view)| view),
             history_rejected,
             depth_mips: targets.depth_mips.as_ref().map(|(texture, _)| texture),
+            depth_mip_atlas: targets.depth_mip_atlas.as_ref().map(|(texture, _)| texture),
         })
     }
 }

@@ -681,6 +681,42 @@ named_enum! {
     }
 }
 
+named_enum! {
+    /// The depth MIP chain that the marching and point kernels (`gtao`, `vbao`, `hbao`,
+    /// `hbao-plus`, `ssao`, `ssao-crytek`) read their far samples from (docs/depth-mips.md):
+    /// levels 1 to 4 of the working depth, so that a sample many pixels away reads a coarser
+    /// level and stays in the texture cache. Samples closer than
+    /// [`AoSettings::depth_mip_offset`] allows, and the kernels' own depth and normal, read
+    /// full resolution. `sao`, `ue4-ssao` and `msvo` are built on a chain of their own, which
+    /// they read at every setting of this one; the separable `hbao` reads none.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, DepthMips, Method, Preset};
+    /// // Far samples from half-precision levels, from 16 pixels out (2^(3 + 1)).
+    /// let settings = AoSettings {
+    ///     depth_mips: DepthMips::Fp16,
+    ///     depth_mip_offset: 3.0,
+    ///     ..AoSettings::preset(Method::Gtao, Preset::High)
+    /// };
+    /// settings.validate()?;
+    /// # Ok::<(), aokit::SettingsError>(())
+    /// ```
+    pub enum DepthMips ("depth mips") {
+        /// Every sample reads the full-resolution depth. The default, so that every error
+        /// table measured without the chain stands.
+        #[default]
+        Off = "off",
+        /// Levels 1 to 4 stored as 32-bit floats.
+        Fp32 = "fp32",
+        /// Levels 1 to 4 stored as 16-bit floats: half the bytes per texel. R16Float storage
+        /// is not in WebGPU's core; it needs a device with
+        /// `Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES` on an adapter that can write
+        /// it (`GpuContext` asks for it where it can), and elsewhere the pipeline returns
+        /// [`AoError::Fp16DepthMipsUnsupported`](crate::AoError::Fp16DepthMipsUnsupported).
+        Fp16 = "fp16",
+    }
+}
+
 /// Largest [`SpatialSettings::radius`]: the filter's workgroup tile holds the row or column
 /// segment of its 64 threads plus this many pixels on each side, and the guided filter's tile
 /// the 8x8 block of its threads plus as many on each side (24x24 texels, 9 KiB of the 16 KiB
@@ -1207,6 +1243,14 @@ pub struct AoSettings {
     pub upsample_threshold: f32,
     /// Where the filters run below full resolution.
     pub filter_resolution: FilterResolution,
+    /// Whether the marching and point kernels read far samples from a depth MIP chain, and
+    /// its precision.
+    pub depth_mips: DepthMips,
+    /// With [`AoSettings::depth_mips`] on, in log2 pixels: a sample `d` pixels from the shaded
+    /// pixel reads level `floor(log2(d) - depth_mip_offset)`, clamped to the levels there are
+    /// (XeGTAO's `depthMIPSamplingOffset`, which rounds where this floors). Larger keeps more
+    /// samples at full resolution; 16 keeps all of them.
+    pub depth_mip_offset: f32,
 }
 
 impl Default for AoSettings {
@@ -1312,6 +1356,10 @@ impl AoSettings {
             // unless seen near grazing, narrower than most gaps between objects.
             upsample_threshold: 0.05,
             filter_resolution: FilterResolution::default(),
+            depth_mips: DepthMips::Off,
+            // The lowest offset at which no measured configuration's error rises by more than
+            // 0.001 (docs/depth-mips.md).
+            depth_mip_offset: 3.0,
         }
     }
 
@@ -1520,6 +1568,15 @@ impl AoSettings {
         }
         positive("spatial.guided_epsilon", self.spatial.guided_epsilon)?;
         positive("upsample_threshold", self.upsample_threshold)?;
+        // Below 0 a sample one pixel away would read a coarser texel than its distance; from
+        // 16 on, no sample within any radius a texture can hold reads a coarser level.
+        if !(0.0..=16.0).contains(&self.depth_mip_offset) {
+            return Err(SettingsError {
+                field: "depth_mip_offset",
+                value: self.depth_mip_offset.to_string(),
+                expected: "a number in [0, 16] (log2 pixels)",
+            });
+        }
         Ok(())
     }
 }
@@ -1642,6 +1699,15 @@ mod tests {
             }),
             "intensity"
         );
+        for depth_mip_offset in [-0.5, 16.5, f32::NAN] {
+            assert_eq!(
+                field(AoSettings {
+                    depth_mip_offset,
+                    ..base
+                }),
+                "depth_mip_offset"
+            );
+        }
     }
 
     #[test]
@@ -1745,6 +1811,9 @@ mod tests {
         }
         for f in FilterResolution::ALL {
             assert_eq!(f.name().parse::<FilterResolution>().unwrap(), f);
+        }
+        for m in DepthMips::ALL {
+            assert_eq!(m.name().parse::<DepthMips>().unwrap(), m);
         }
         assert!("hbao9".parse::<Method>().unwrap_err().contains("gtao"));
     }

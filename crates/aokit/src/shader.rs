@@ -412,11 +412,24 @@ pub const MSVO_OBSCURANCE: ShaderSource = ao_program!("msvo_obscurance", MSVO);
 /// level below it, shaped at the working level into the method's AO.
 pub const MSVO_MERGE: ShaderSource = ao_program!("msvo_merge", MSVO);
 
-/// One level of a depth MIP chain from the level below, by the reduction its `REDUCTION`
-/// override names: SAO's subsample or `ue4-ssao`'s furthest depth.
+/// Levels 1 to 4 of a depth MIP chain from its level 0, by the reduction its `REDUCTION`
+/// override names (SAO's subsample, `ue4-ssao`'s furthest depth, or the mean on one surface
+/// that `depth_mips` reads), stored as `R32Float`.
 pub const DEPTH_MIPS: ShaderSource = ShaderSource {
     name: "depth_mips",
-    parts: &[include_str!("../shaders/depth_mips.wgsl")],
+    parts: &[
+        "alias LevelTexture = texture_storage_2d<r32float, write>;\n",
+        include_str!("../shaders/depth_mips.wgsl"),
+    ],
+};
+
+/// [`DEPTH_MIPS`] stored as `R16Float`, for `depth_mips = fp16`.
+pub const DEPTH_MIPS_FP16: ShaderSource = ShaderSource {
+    name: "depth_mips",
+    parts: &[
+        "alias LevelTexture = texture_storage_2d<r16float, write>;\n",
+        include_str!("../shaders/depth_mips.wgsl"),
+    ],
 };
 
 /// The kernel of `method`.
@@ -503,6 +516,7 @@ pub const ALL: &[ShaderSource] = &[
     MSVO_OBSCURANCE,
     MSVO_MERGE,
     DEPTH_MIPS,
+    DEPTH_MIPS_FP16,
     HBAO_ROWS,
     HBAO_COLUMNS,
     SPATIAL_FILTER_HORIZONTAL,

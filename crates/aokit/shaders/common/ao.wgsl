@@ -34,6 +34,8 @@ struct AoUniforms {
     // NOISE_* and TEMPORAL_* codes of common/noise.wgsl.
     noise_kind: u32,
     noise_temporal: u32,
+    // With DEPTH_MIPS, the offset of the depth MIP level selection in log2 pixels (mip_level).
+    mip_offset: f32,
 }
 
 const FLAG_NORMALIZE_SLICES: u32 = 1u;
@@ -50,6 +52,13 @@ const FLAG_BENT_NORMALS: u32 = 2u;
 // The noise tile of `blue` and `white` noise, two values per texel, repeated over the image (a
 // 1x1 stand-in for the kinds computed here).
 @group(0) @binding(7) var noise_tile: texture_2d<f32>;
+// With DEPTH_MIPS, levels 1 to 4 of the working depth's MIP chain, stacked in one texture
+// (passes/depth_mips.rs, `DepthMipsPass::create_atlas`): level L's texel t, covering pixels
+// t * 2^L to (t + 1) * 2^L, at (t.x, atlas_row(L) + t.y). A 1x1 stand-in otherwise, never read.
+@group(0) @binding(8) var depth_mips: texture_2d<f32>;
+// Whether far samples read the chain (AoSettings::depth_mips); when off, the pipeline
+// compiles the kernels without any of its code.
+override DEPTH_MIPS: bool = false;
 
 const PI: f32 = 3.14159265;
 const HALF_PI: f32 = 1.57079633;
@@ -112,22 +121,66 @@ struct SeenSurface {
     exact: bool,
 }
 
-// The surface seen at continuous pixel position `q`. Inside one surface, 1 / depth (perspective)
-// or depth (orthographic) is affine in screen space across a plane, so interpolating it
-// bilinearly gives the depth exactly at `q`, on a plane seen at any angle; reading the nearest
-// texel instead makes planes seen at grazing angles occlude themselves. Across a depth edge
+// Coarser levels the depth MIP chain has: up to 4, each at least 2 texels on a side so that a
+// gather's 2x2 footprint fits in it (`coarser_levels` in passes/depth_mips.rs).
+fn mip_levels() -> u32 {
+    let shorter = u32(min(view.size.x, view.size.y));
+    return min(4u, max(firstLeadingBit(shorter), 1u) - 1u);
+}
+
+// The depth MIP level a sample `distance_px` pixels from the shaded pixel reads: the farther,
+// the coarser, so that far samples stay in the cache (XeGTAO's depthMIPSamplingOffset, floored
+// here). Always 0 without DEPTH_MIPS.
+fn mip_level(distance_px: f32) -> u32 {
+    if !DEPTH_MIPS {
+        return 0u;
+    }
+    let level = floor(log2(max(distance_px, 1.0)) - ao.mip_offset);
+    return u32(clamp(level, 0.0, f32(mip_levels())));
+}
+
+// First row of level `level` (1 to 4) in the depth_mips atlas: the levels above it stacked.
+fn atlas_row(level: u32) -> f32 {
+    var row = 0.0;
+    for (var k = 1u; k < level; k++) {
+        row += max(floor(view.size.y / f32(1u << k)), 1.0);
+    }
+    return row;
+}
+
+// The surface seen at continuous pixel position `q`, read at depth MIP level `level` (0: the
+// working depth; see mip_level). Inside one surface, 1 / depth (perspective) or depth
+// (orthographic) is affine in screen space across a plane, so interpolating it bilinearly
+// gives the depth exactly at `q`, on a plane seen at any angle; reading the nearest texel
+// instead makes planes seen at grazing angles occlude themselves. Across a depth edge
 // interpolation would invent a surface between foreground and background, so there the nearest
-// texel is returned with its centre.
-fn surface_at(q: vec2<f32>) -> SeenSurface {
+// texel is returned with its centre. A coarser level does the same on its own grid, whose
+// texels are 2^level pixels wide.
+fn surface_at(q: vec2<f32>, level: u32) -> SeenSurface {
     // The 2x2 texels around `q`, gathered at their shared corner: a coordinate there cannot
     // round into a neighbouring footprint the way `q` itself can near texel centres, so `f`
     // weights exactly the texels read. In the outermost half texel the footprint stays inside
     // the image and `f` extrapolates, which is exact on a plane where clamping is not. Gather
     // order: x = (left, bottom), y = (right, bottom), z = (right, top), w = (left, top), with
     // "top" the smaller row index.
-    let corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
-    let depths = textureGather(0, linear_depth, point_clamp, corner * view.inv_size);
-    let f = q - 0.5 - (corner - 1.0);
+    var scale = 1.0;
+    var corner: vec2<f32>;
+    var depths: vec4<f32>;
+    var f: vec2<f32>;
+    if DEPTH_MIPS && level > 0u {
+        // The same footprint on the level's grid, inside its rectangle of the atlas.
+        scale = f32(1u << level);
+        let ql = q / scale;
+        let size = max(floor(view.size / scale), vec2<f32>(1.0));
+        corner = clamp(floor(ql - 0.5) + 1.0, vec2<f32>(1.0), size - 1.0);
+        let at = vec2<f32>(corner.x, corner.y + atlas_row(level));
+        depths = textureGather(0, depth_mips, point_clamp, at / vec2<f32>(textureDimensions(depth_mips)));
+        f = ql - 0.5 - (corner - 1.0);
+    } else {
+        corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
+        depths = textureGather(0, linear_depth, point_clamp, corner * view.inv_size);
+        f = q - 0.5 - (corner - 1.0);
+    }
     let lowest = min(min(depths.x, depths.y), min(depths.z, depths.w));
     let highest = max(max(depths.x, depths.y), max(depths.z, depths.w));
     if lowest > 0.0 && highest <= lowest * (1.0 + DEPTH_EDGE) {
@@ -140,16 +193,16 @@ fn surface_at(q: vec2<f32>) -> SeenSurface {
     let bottom = f.y >= 0.5;
     let depth = select(select(depths.w, depths.z, right), select(depths.x, depths.y, right), bottom);
     let texel = corner + select(vec2<f32>(-0.5), vec2<f32>(0.5), vec2<bool>(right, bottom));
-    return SeenSurface(depth, texel, false);
+    return SeenSurface(depth, texel * scale, false);
 }
 
-// Linear depth of the surface seen at continuous pixel position `q` (see surface_at),
-// NO_SURFACE off screen.
-fn depth_at(q: vec2<f32>) -> f32 {
+// Linear depth of the surface seen at continuous pixel position `q`, read at MIP level `level`
+// (see surface_at); NO_SURFACE off screen.
+fn depth_at(q: vec2<f32>, level: u32) -> f32 {
     if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
         return NO_SURFACE;
     }
-    return surface_at(q).depth;
+    return surface_at(q, level).depth;
 }
 
 // A sample's weight by its distance from the shaded point: 1 inside, fading to 0 at the

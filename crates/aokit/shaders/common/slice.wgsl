@@ -17,7 +17,8 @@ fn arc_integral(h: f32, n: f32) -> f32 {
     return 0.25 * (-cos(2.0 * h - n) + cos(n) + 2.0 * h * sin(n));
 }
 
-// Offset from `p` to the surface seen at continuous pixel position `q`, placed in the slice
+// Offset from `p` to the surface seen at continuous pixel position `q` (read at MIP level
+// `level`, see surface_at), placed in the slice
 // plane; w = 0 when there is no surface there.
 //
 // A sample must lie in the slice: texel centres sit up to half a texel off it, and on surfaces
@@ -26,8 +27,8 @@ fn arc_integral(h: f32, n: f32) -> f32 {
 // sample exactly on the slice. Across a depth edge it returns the nearest texel instead, which is
 // slid within the pixel's tangent plane into the slice: that keeps its height above the plane,
 // the part that occludes.
-fn slice_sample(q: vec2<f32>, p: vec3<f32>, axis: vec3<f32>, slide: vec3<f32>) -> vec4<f32> {
-    let seen = surface_at(q);
+fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, axis: vec3<f32>, slide: vec3<f32>) -> vec4<f32> {
+    let seen = surface_at(q, level);
     if seen.depth == NO_SURFACE {
         return vec4<f32>(0.0);
     }
@@ -93,7 +94,7 @@ fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f3
     if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
         return vec4<f32>(0.0);
     }
-    let sample = slice_sample(q, s.p, slice.axis, slice.slide);
+    let sample = slice_sample(q, mip_level(distance_px), s.p, slice.axis, slice.slide);
     if sample.w == 0.0 || side * dot(sample.xyz, slice.tangent) <= 0.0 {
         return vec4<f32>(0.0);
     }

@@ -1,15 +1,17 @@
-//! The depth MIP chain of the methods that read one: the working linear depth at level 0 and, at
-//! each coarser level, a reduction of every 2x2 depths of the level below, so that far taps read
-//! nearby texels of a coarse level instead of scattered pixels. `sao` keeps one of the four
-//! (McGuire, Mara and Luebke 2012, section 2.2), `ue4-ssao` the furthest (a hierarchical Z
-//! buffer, as Unreal's SSAO reads: seed 002).
+//! Depth MIP chains: the working linear depth at level 0 and, at each coarser level, a reduction
+//! of every 2x2 depths of the level below, so that far taps read nearby texels of a coarse level
+//! instead of scattered pixels. The methods built on a chain read their own, as a texture's MIP
+//! levels: `sao` keeps one of the four (McGuire, Mara and Luebke 2012, section 2.2), `ue4-ssao`
+//! the furthest (a hierarchical Z buffer, as Unreal's SSAO reads: seed 002). The marching and
+//! point kernels read far samples from the levels of [`AoSettings::depth_mips`], stacked in one
+//! texture so that they can gather any level.
 
 use std::collections::HashMap;
 
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_texture_2d_mips, mip_view};
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
-use crate::settings::Method;
+use crate::settings::{AoSettings, DepthMips, Method};
 use crate::shader;
 
 /// How a level of the chain reduces each 2x2 block of the level below (the `REDUCTION_*` codes
@@ -20,6 +22,9 @@ pub(crate) enum DepthReduction {
     Subsample = 0,
     /// The largest linear depth of the four: the surface furthest from the eye.
     Furthest = 1,
+    /// The mean of the four where they lie on one surface (of 1 / depth, or of depth with an
+    /// orthographic projection), else the furthest.
+    MeanOrFurthest = 2,
 }
 
 impl DepthReduction {
@@ -34,24 +39,54 @@ impl DepthReduction {
     }
 }
 
-/// Levels of the chain: the working depth and four coarser ones, as far as the kernels' taps
-/// reach (`MAX_MIP_LEVEL` in `sao.wgsl` and `ue4_ssao.wgsl`), and as many as one workgroup of
-/// `depth_mips.wgsl` reduces from a 16x16 block of level 0.
+/// Levels of a method's own chain: the working depth and four coarser ones, as far as the
+/// kernels' taps reach (`MAX_MIP_LEVEL` in `sao.wgsl` and `ue4_ssao.wgsl`), and as many as one
+/// workgroup of `depth_mips.wgsl` reduces from a 16x16 block of level 0.
 const LEVELS: u32 = 5;
 
-/// Builds the chain's coarser levels from its level 0, a copy of the working depth, in one
-/// dispatch (`depth_mips.wgsl`).
+/// The coarser levels of the [`AoSettings::depth_mips`] chain for a working depth of `size`: up
+/// to 4, each at least 2 texels on a side, so that a 2x2 gather fits inside it (`mip_levels`
+/// in `common/ao.wgsl`).
+pub(crate) fn atlas_levels(size: [u32; 2]) -> u32 {
+    let shorter = size[0].min(size[1]).max(1);
+    (31 - shorter.leading_zeros())
+        .saturating_sub(1)
+        .min(LEVELS - 1)
+}
+
+/// The format of the [`AoSettings::depth_mips`] chain the settings ask the kernel to read,
+/// `None` when it reads none: the setting is off, or the method reads a chain of its own or
+/// (the separable `hbao`) none.
+pub(crate) fn atlas_format(settings: &AoSettings) -> Option<wgpu::TextureFormat> {
+    let reads = !settings.method.reads_depth_mips() && !settings.separable_hbao();
+    match settings.depth_mips {
+        DepthMips::Off => None,
+        DepthMips::Fp32 => reads.then_some(LINEAR_DEPTH_FORMAT),
+        DepthMips::Fp16 => reads.then_some(wgpu::TextureFormat::R16Float),
+    }
+}
+
+/// What a compiled `depth_mips.wgsl` is specialised for.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+struct KernelKey {
+    reduction: DepthReduction,
+    coarser_levels: u32,
+    atlas: bool,
+    orthographic: bool,
+    format: wgpu::TextureFormat,
+}
+
+/// Builds a chain's coarser levels from its level 0 in one dispatch (`depth_mips.wgsl`).
 #[derive(Default)]
 pub struct DepthMipsPass {
-    /// One kernel per reduction and number of coarser levels, compiled the first time it is
-    /// used.
-    kernels: HashMap<(DepthReduction, u32), ComputeKernel>,
-    /// Bound in place of the levels a small chain lacks; never written.
-    stand_in: Option<wgpu::TextureView>,
+    /// One kernel per specialisation, compiled the first time it is used.
+    kernels: HashMap<KernelKey, ComputeKernel>,
+    /// Bound in place of the levels a chain lacks, by format; never written.
+    stand_ins: HashMap<wgpu::TextureFormat, wgpu::TextureView>,
 }
 
 impl DepthMipsPass {
-    /// The chain's texture for a depth of `size`: [`LINEAR_DEPTH_FORMAT`], up to five levels
+    /// A method's own chain for a depth of `size`: [`LINEAR_DEPTH_FORMAT`], up to five levels
     /// (fewer where a side runs out of texels first).
     pub fn create_texture(device: &wgpu::Device, size: [u32; 2]) -> wgpu::Texture {
         let full_chain = 32 - size[0].max(size[1]).leading_zeros();
@@ -63,6 +98,29 @@ impl DepthMipsPass {
             LINEAR_DEPTH_FORMAT,
             wgpu::TextureUsages::COPY_DST
                 | wgpu::TextureUsages::COPY_SRC
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::STORAGE_BINDING,
+        )
+    }
+
+    /// The [`AoSettings::depth_mips`] chain for a working depth of `size`, in `format`: its
+    /// [`atlas_levels`] levels past 0 stacked in one texture, level 1 at the top, each as wide
+    /// and high as a MIP level would be (at least 1x1 when there are none).
+    pub fn create_atlas(
+        device: &wgpu::Device,
+        size: [u32; 2],
+        format: wgpu::TextureFormat,
+    ) -> wgpu::Texture {
+        let height = (1..=atlas_levels(size))
+            .map(|level| (size[1] >> level).max(1))
+            .sum::<u32>();
+        create_texture_2d_mips(
+            device,
+            "aokit depth mip atlas",
+            [(size[0] >> 1).max(1), height.max(1)],
+            1,
+            format,
+            wgpu::TextureUsages::COPY_SRC
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::STORAGE_BINDING,
         )
@@ -83,66 +141,109 @@ impl DepthMipsPass {
             chain.as_image_copy(),
             depth.size(),
         );
-        let coarser_levels = chain.mip_level_count() - 1;
-        if coarser_levels == 0 {
+        let key = KernelKey {
+            reduction,
+            coarser_levels: chain.mip_level_count() - 1,
+            atlas: false,
+            orthographic: false,
+            format: LINEAR_DEPTH_FORMAT,
+        };
+        let levels: Vec<Option<wgpu::TextureView>> = (1..LEVELS)
+            .map(|level| (level < chain.mip_level_count()).then(|| mip_view(chain, level)))
+            .collect();
+        self.dispatch(ctx, key, depth, &levels);
+    }
+
+    /// Records the building of `atlas` (made by [`DepthMipsPass::create_atlas`] for `depth`'s
+    /// size) from `depth`, the working linear depth, seen through a projection that is
+    /// `orthographic` or not.
+    pub fn encode_atlas(
+        &mut self,
+        ctx: &mut PassContext<'_>,
+        depth: &wgpu::Texture,
+        atlas: &wgpu::Texture,
+        orthographic: bool,
+    ) {
+        let key = KernelKey {
+            reduction: DepthReduction::MeanOrFurthest,
+            coarser_levels: atlas_levels([depth.width(), depth.height()]),
+            atlas: true,
+            orthographic,
+            format: atlas.format(),
+        };
+        self.dispatch(
+            ctx,
+            key,
+            depth,
+            &[Some(atlas.create_view(&Default::default()))],
+        );
+    }
+
+    /// Dispatches the kernel of `key` over `level_0`, writing `levels` (1 to 4 in order; a
+    /// missing one, or the whole atlas first, is bound with stand-ins after it).
+    fn dispatch(
+        &mut self,
+        ctx: &mut PassContext<'_>,
+        key: KernelKey,
+        level_0: &wgpu::Texture,
+        levels: &[Option<wgpu::TextureView>],
+    ) {
+        if key.coarser_levels == 0 {
             return;
         }
-        let kernel = self
-            .kernels
-            .entry((reduction, coarser_levels))
-            .or_insert_with(|| {
-                ComputeKernel::with_constants(
-                    ctx.device,
-                    &shader::DEPTH_MIPS,
-                    &[
-                        bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
-                        bind::storage_texture(1, LINEAR_DEPTH_FORMAT),
-                        bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
-                        bind::storage_texture(3, LINEAR_DEPTH_FORMAT),
-                        bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
-                    ],
-                    &[
-                        ("REDUCTION", f64::from(reduction as u32)),
-                        ("COARSER_LEVELS", f64::from(coarser_levels)),
-                    ],
-                )
-            });
-        let stand_in = self.stand_in.get_or_insert_with(|| {
+        let kernel = self.kernels.entry(key).or_insert_with(|| {
+            let source = if key.format == LINEAR_DEPTH_FORMAT {
+                &shader::DEPTH_MIPS
+            } else {
+                &shader::DEPTH_MIPS_FP16
+            };
+            ComputeKernel::with_constants(
+                ctx.device,
+                source,
+                &[
+                    bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+                    bind::storage_texture(1, key.format),
+                    bind::storage_texture(2, key.format),
+                    bind::storage_texture(3, key.format),
+                    bind::storage_texture(4, key.format),
+                ],
+                &[
+                    ("REDUCTION", f64::from(key.reduction as u32)),
+                    ("COARSER_LEVELS", f64::from(key.coarser_levels)),
+                    ("ATLAS", f64::from(u8::from(key.atlas))),
+                    ("ORTHOGRAPHIC", f64::from(u8::from(key.orthographic))),
+                ],
+            )
+        });
+        let stand_in = self.stand_ins.entry(key.format).or_insert_with(|| {
             create_texture_2d_mips(
                 ctx.device,
                 "aokit depth mips stand-in",
                 [1, 1],
                 1,
-                LINEAR_DEPTH_FORMAT,
+                key.format,
                 wgpu::TextureUsages::STORAGE_BINDING,
             )
             .create_view(&Default::default())
         });
-        let levels: Vec<wgpu::TextureView> = (0..LEVELS)
-            .map(|level| {
-                if level < chain.mip_level_count() {
-                    mip_view(chain, level)
-                } else {
-                    stand_in.clone()
-                }
-            })
-            .collect();
-        let resources: Vec<wgpu::BindingResource<'_>> = levels
-            .iter()
+        // One thread per texel of level 1.
+        let threads = [
+            (level_0.width() >> 1).max(1),
+            (level_0.height() >> 1).max(1),
+        ];
+        let level_0 = level_0.create_view(&Default::default());
+        let resources: Vec<wgpu::BindingResource<'_>> = std::iter::once(&level_0)
+            .chain(
+                (0..LEVELS as usize - 1)
+                    .map(|i| levels.get(i).and_then(Option::as_ref).unwrap_or(&*stand_in)),
+            )
             .map(wgpu::BindingResource::TextureView)
             .collect();
-        let level_1 = chain.size().mip_level_size(1, wgpu::TextureDimension::D2);
         let timestamps = ctx
             .timer
             .as_mut()
             .and_then(|timer| timer.pass(kernel.name()));
-        kernel.dispatch(
-            ctx.device,
-            ctx.encoder,
-            &resources,
-            [level_1.width, level_1.height],
-            timestamps,
-        );
+        kernel.dispatch(ctx.device, ctx.encoder, &resources, threads, timestamps);
     }
 }
 
@@ -156,6 +257,7 @@ mod tests {
         for (name, reduction) in [
             ("REDUCTION_SUBSAMPLE", DepthReduction::Subsample),
             ("REDUCTION_FURTHEST", DepthReduction::Furthest),
+            ("REDUCTION_MEAN_OR_FURTHEST", DepthReduction::MeanOrFurthest),
         ] {
             assert_eq!(
                 shader::u32_constant(&module, name),
@@ -170,5 +272,40 @@ mod tests {
                 "{method:?}"
             );
         }
+    }
+
+    #[test]
+    fn atlas_levels_keep_two_texels_a_side_and_stop_at_four() {
+        for (size, levels) in [
+            ([1, 1], 0),
+            ([3, 100], 0),
+            ([4, 4], 1),
+            ([37, 23], 3),
+            ([64, 64], 4),
+            ([1920, 1080], 4),
+        ] {
+            assert_eq!(atlas_levels(size), levels, "{size:?}");
+            if levels > 0 {
+                assert!(size.iter().all(|side| side >> levels >= 2), "{size:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn only_the_kernels_without_a_chain_of_their_own_read_the_atlas() {
+        let mut settings = AoSettings::default();
+        for method in Method::ALL {
+            settings.method = method;
+            settings.depth_mips = DepthMips::Off;
+            assert_eq!(atlas_format(&settings), None);
+            settings.depth_mips = DepthMips::Fp16;
+            let format = atlas_format(&settings);
+            assert_eq!(format.is_none(), method.reads_depth_mips(), "{method:?}");
+        }
+        settings.method = Method::Hbao;
+        settings.depth_mips = DepthMips::Fp32;
+        assert_eq!(atlas_format(&settings), Some(LINEAR_DEPTH_FORMAT));
+        settings.hbao.variant = crate::HbaoVariant::Separable;
+        assert_eq!(atlas_format(&settings), None);
     }
 }

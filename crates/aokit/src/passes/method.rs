@@ -6,9 +6,11 @@
 
 use std::collections::HashMap;
 
+use super::depth_mips::atlas_format;
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::noise;
+use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::settings::{AoSettings, Method, NoiseKind};
 use crate::shader;
 use crate::uniforms::AoUniforms;
@@ -20,7 +22,9 @@ pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 pub const BENT_NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 /// Runs the kernel of the current method.
 pub struct MethodPass {
-    kernels: HashMap<Method, ComputeKernel>,
+    /// By method and whether it reads far samples from the depth MIP atlas (the `DEPTH_MIPS`
+    /// override of `common/ao.wgsl`).
+    kernels: HashMap<(Method, bool), ComputeKernel>,
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
     /// Bound in place of the bent normals when they are off: the kernels never write it.
@@ -31,10 +35,12 @@ pub struct MethodPass {
     noise_tile: Option<(NoiseKind, u32)>,
     /// Bound in place of a noise tile for the kinds computed in the shader.
     noise_placeholder: wgpu::TextureView,
+    /// Bound in place of the depth MIP atlas when the kernel reads none.
+    depth_mips_placeholder: wgpu::TextureView,
 }
 
-/// The bindings every AO kernel declares (`common/ao.wgsl`), 0 to 7.
-pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
+/// The bindings every AO kernel declares (`common/ao.wgsl`), 0 to 8.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 9] {
     [
         bind::uniform(0),
         bind::uniform(1),
@@ -44,6 +50,7 @@ pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
         bind::sampler(5, wgpu::SamplerBindingType::NonFiltering),
         bind::storage_texture(6, BENT_NORMALS_FORMAT),
         bind::texture(7, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::texture(8, wgpu::TextureSampleType::Float { filterable: false }),
     ]
 }
 
@@ -76,6 +83,11 @@ impl MethodPass {
                 noise::TILE_FORMAT,
                 wgpu::TextureUsages::TEXTURE_BINDING,
             ),
+            depth_mips_placeholder: placeholder(
+                "aokit depth mips placeholder",
+                LINEAR_DEPTH_FORMAT,
+                wgpu::TextureUsages::TEXTURE_BINDING,
+            ),
         };
         pass.set_settings(device, queue, settings);
         pass
@@ -92,9 +104,17 @@ impl MethodPass {
         // The separable HBAO passes and MSVO's passes run instead of the method's kernel
         // (`SeparableHbaoPass`, `MsvoPass`).
         if !settings.separable_hbao() && settings.method != Method::Msvo {
-            self.kernels.entry(settings.method).or_insert_with(|| {
-                ComputeKernel::new(device, &shader::method(settings.method), &layout())
-            });
+            let depth_mips = atlas_format(settings).is_some();
+            self.kernels
+                .entry((settings.method, depth_mips))
+                .or_insert_with(|| {
+                    ComputeKernel::with_constants(
+                        device,
+                        &shader::method(settings.method),
+                        &layout(),
+                        &[("DEPTH_MIPS", f64::from(u8::from(depth_mips)))],
+                    )
+                });
         }
         self.noise_tile = noise::tile(&settings.noise).map(|tile| {
             let key = (settings.noise.kind, tile.size);
@@ -113,11 +133,14 @@ impl MethodPass {
     /// Records `method`'s kernel, which `set_settings` compiled, from `linear_depth`
     /// (`R32Float`) and oct32 `normals` into `ao` ([`AO_FORMAT`]) and, when the settings turn
     /// [`AoSettings::bent_normals`] on for a method that has them, into `bent_normals`
-    /// ([`BENT_NORMALS_FORMAT`]), which must then be given.
+    /// ([`BENT_NORMALS_FORMAT`]), which must then be given. With
+    /// [`AoSettings::depth_mips`] on, far samples read `depth_mips`, the chain's atlas
+    /// (`DepthMipsPass::create_atlas`), which must then be given.
     ///
     /// # Panics
     /// When no settings with `method` were given to [`MethodPass::new`] or
     /// [`MethodPass::set_settings`].
+    #[allow(clippy::too_many_arguments)]
     pub fn encode(
         &self,
         ctx: &mut PassContext<'_>,
@@ -126,23 +149,26 @@ impl MethodPass {
         normals: &wgpu::TextureView,
         ao: &wgpu::TextureView,
         bent_normals: Option<&wgpu::TextureView>,
+        depth_mips: Option<&wgpu::TextureView>,
     ) {
-        let kernel = &self.kernels[&method];
+        let kernel = &self.kernels[&(method, depth_mips.is_some())];
         ctx.dispatch(
             kernel,
-            &self.bindings(linear_depth, normals, ao, bent_normals),
+            &self.bindings(linear_depth, normals, ao, bent_normals, depth_mips),
         );
     }
 
-    /// Bindings 1 to 7 of [`layout`] for the current settings, with `ao` and `bent_normals` as
-    /// [`MethodPass::encode`] takes them: what every AO kernel reads and writes.
+    /// Bindings 1 to 8 of [`layout`] for the current settings, with `ao`, `bent_normals` and
+    /// `depth_mips` as [`MethodPass::encode`] takes them: what every AO kernel reads and
+    /// writes.
     pub(crate) fn bindings<'a>(
         &'a self,
         linear_depth: &'a wgpu::TextureView,
         normals: &'a wgpu::TextureView,
         ao: &'a wgpu::TextureView,
         bent_normals: Option<&'a wgpu::TextureView>,
-    ) -> [wgpu::BindingResource<'a>; 7] {
+        depth_mips: Option<&'a wgpu::TextureView>,
+    ) -> [wgpu::BindingResource<'a>; 8] {
         [
             self.uniforms.as_entire_binding(),
             wgpu::BindingResource::TextureView(linear_depth),
@@ -154,6 +180,7 @@ impl MethodPass {
                 self.noise_tile
                     .map_or(&self.noise_placeholder, |key| &self.noise_tiles[&key]),
             ),
+            wgpu::BindingResource::TextureView(depth_mips.unwrap_or(&self.depth_mips_placeholder)),
         ]
     }
 }

@@ -43,7 +43,7 @@ pub struct MsvoPass {
 
 impl MsvoPass {
     /// Compiles both kernels: the bindings of every AO kernel, and for the merge the level's
-    /// obscurance (binding 8) and the coarser level's merged obscurance (binding 9).
+    /// obscurance (binding 9) and the coarser level's merged obscurance (binding 10).
     pub fn new(device: &wgpu::Device) -> Self {
         let level_input = |binding| {
             bind::texture(
@@ -56,7 +56,7 @@ impl MsvoPass {
             merge: ComputeKernel::new(
                 device,
                 &shader::MSVO_MERGE,
-                &[&layout()[..], &[level_input(8), level_input(9)]].concat(),
+                &[&layout()[..], &[level_input(9), level_input(10)]].concat(),
             ),
             targets: None,
         }
@@ -167,7 +167,7 @@ impl MsvoPass {
         name: &'static str,
     ) {
         // MSVO has no bent normals: the settings refuse them, and the placeholder is bound.
-        let shared = method.bindings(chain, normals, target, None);
+        let shared = method.bindings(chain, normals, target, None, None);
         let mut resources = vec![ctx.view_uniforms.as_entire_binding()];
         resources.extend_from_slice(&shared);
         resources.extend_from_slice(extra);

@@ -21,20 +21,20 @@ pub struct SeparableHbaoPass {
 
 impl SeparableHbaoPass {
     /// Compiles both kernels: the bindings of every AO kernel, and the rows pass's output at
-    /// binding 8, written by the first and read by the second.
+    /// binding 9, written by the first and read by the second.
     pub fn new(device: &wgpu::Device) -> Self {
         let with_row_occlusion = |entry| [&layout()[..], &[entry]].concat();
         Self {
             rows: ComputeKernel::new(
                 device,
                 &shader::HBAO_ROWS,
-                &with_row_occlusion(bind::storage_texture(8, ROW_OCCLUSION_FORMAT)),
+                &with_row_occlusion(bind::storage_texture(9, ROW_OCCLUSION_FORMAT)),
             ),
             columns: ComputeKernel::new(
                 device,
                 &shader::HBAO_COLUMNS,
                 &with_row_occlusion(bind::texture(
-                    8,
+                    9,
                     wgpu::TextureSampleType::Float { filterable: false },
                 )),
             ),
@@ -71,7 +71,7 @@ impl SeparableHbaoPass {
         }
         let (_, row_occlusion) = self.row_occlusion.as_ref().expect("made just above");
         // HBAO has no bent normals: the settings refuse them, and the placeholder is bound.
-        let shared = method.bindings(linear_depth, normals, ao, None);
+        let shared = method.bindings(linear_depth, normals, ao, None, None);
         let resources = [
             &shared[..],
             &[wgpu::BindingResource::TextureView(row_occlusion)],
