@@ -78,19 +78,26 @@ fn with_chain(method: Method, precision: DepthMips, offset: f32) -> AoSettings {
     }
 }
 
-#[test]
-fn the_atlas_stacks_the_mean_of_one_surface_and_the_furthest_depth_at_edges() {
-    let gpu = gpu();
+/// The precisions this device can build: fp16 where it can write R16Float storage.
+fn precisions(gpu: &aokit::GpuContext) -> Vec<DepthMips> {
     let fp16 = gpu
         .device
         .features()
         .contains(wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES);
     eprintln!("fp16 storage on {}: {fp16}", gpu.describe());
-    let precisions: &[DepthMips] = if fp16 {
-        &[DepthMips::Fp32, DepthMips::Fp16]
-    } else {
-        &[DepthMips::Fp32]
-    };
+    let mut precisions = vec![DepthMips::Fp32];
+    if fp16 {
+        precisions.push(DepthMips::Fp16);
+    }
+    precisions
+}
+
+#[test]
+fn the_atlas_stacks_the_mean_of_one_surface_and_the_furthest_depth_at_edges() {
+    // fp32: level 0, an exact copy of the working depth, at the origin and the coarser levels
+    // stacked in a column right of it, within its height; fp16: the coarser levels alone.
+    let gpu = gpu();
+    let precisions = precisions(&gpu);
     // Odd sides, so that the clamp at a level's last texel matters; sizes that hold 3, 2 and
     // 4 levels of at least 2 texels a side.
     for (size, orthographic, levels) in [
@@ -107,7 +114,7 @@ fn the_atlas_stacks_the_mean_of_one_surface_and_the_furthest_depth_at_edges() {
             Projection::perspective(1.0, aspect, 0.1, None)
         };
         let inputs = AoInputs::new(&texture, projection);
-        for &precision in precisions {
+        for &precision in &precisions {
             let settings = with_chain(Method::Gtao, precision, 3.0);
             let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
             let (working, atlas, atlas_size) = encode_frame(&gpu, &mut pipeline, &inputs, |o| {
@@ -119,14 +126,32 @@ fn the_atlas_stacks_the_mean_of_one_surface_and_the_furthest_depth_at_edges() {
                     [atlas.width(), atlas.height()],
                 )
             });
+            let level_0 = precision == DepthMips::Fp32;
+            if level_0 {
+                for y in 0..size[1] {
+                    let start = (y * atlas_size[0]) as usize;
+                    assert_eq!(
+                        atlas[start..start + size[0] as usize],
+                        working[(y * size[0]) as usize..((y + 1) * size[0]) as usize],
+                        "{size:?}: level 0, row {y}"
+                    );
+                }
+            }
+            let column = if level_0 { size[0] } else { 0 };
             let mut finer = (working, size);
-            let mut row = 0;
+            let mut bottom = 0;
             for level in 1..=levels {
+                // Level k starts at row H - (H >> (k - 1)), below the level before it.
+                let row = size[1] - (size[1] >> (level - 1));
+                assert!(
+                    row >= bottom,
+                    "{size:?}: level {level} overlaps the one above"
+                );
                 let (expected, level_size) = coarser_level(&finer.0, finer.1, orthographic);
                 for y in 0..level_size[1] {
                     for x in 0..level_size[0] {
                         let want = expected[(y * level_size[0] + x) as usize];
-                        let got = atlas[((row + y) * atlas_size[0] + x) as usize];
+                        let got = atlas[((row + y) * atlas_size[0] + column + x) as usize];
                         // fp16 keeps 11 bits of mantissa.
                         let tolerance = if precision == DepthMips::Fp16 {
                             1e-3
@@ -140,10 +165,15 @@ fn the_atlas_stacks_the_mean_of_one_surface_and_the_furthest_depth_at_edges() {
                         );
                     }
                 }
-                row += level_size[1];
+                bottom = row + level_size[1];
                 finer = (expected, level_size);
             }
-            assert_eq!(atlas_size, [size[0] / 2, row], "{size:?}: {levels} levels");
+            let height = if level_0 { size[1] } else { bottom };
+            assert_eq!(
+                atlas_size,
+                [column + size[0] / 2, height],
+                "{size:?} {precision:?}: {levels} levels"
+            );
         }
     }
 }
@@ -154,29 +184,36 @@ fn kernels_whose_samples_stay_near_read_full_resolution_exactly_as_with_the_chai
     let scene = Builtin::Room.build();
     let camera = &scene.cameras[0];
     let size = [96, 54];
+    let precisions = precisions(&gpu);
     for method in READERS {
         let off = scene_settings(&scene, method, Preset::High);
         let render =
             |settings: &AoSettings| common::render_frame(&gpu, &scene, camera, settings, size).ao;
         let base = render(&off);
-        // From 2^17 pixels out: no sample of a 256-pixel radius reads a coarser level.
-        let near = AoSettings {
-            depth_mips: DepthMips::Fp32,
-            depth_mip_offset: 16.0,
-            ..off
-        };
-        assert_eq!(render(&near), base, "{method:?}");
-        // From 2 pixels out: far samples read coarser levels, and the AO moves, within range.
-        let far = AoSettings {
-            depth_mip_offset: 0.0,
-            ..near
-        };
-        let ao = render(&far);
-        assert_ne!(ao, base, "{method:?}: no sample read the chain");
-        assert!(
-            ao.iter().all(|a| (0.0..=1.0).contains(a)),
-            "{method:?}: AO out of [0, 1] or NaN"
-        );
+        for &depth_mips in &precisions {
+            // From 2^17 pixels out: no sample of a 256-pixel radius reads a coarser level
+            // (fp32 reads level 0 from the atlas's copy, fp16 from the working depth).
+            let near = AoSettings {
+                depth_mips,
+                depth_mip_offset: 16.0,
+                ..off
+            };
+            assert_eq!(render(&near), base, "{method:?} {depth_mips:?}");
+            // From 2 pixels out: far samples read coarser levels, and the AO moves, in range.
+            let far = AoSettings {
+                depth_mip_offset: 0.0,
+                ..near
+            };
+            let ao = render(&far);
+            assert_ne!(
+                ao, base,
+                "{method:?} {depth_mips:?}: no sample read the chain"
+            );
+            assert!(
+                ao.iter().all(|a| (0.0..=1.0).contains(a)),
+                "{method:?} {depth_mips:?}: AO out of [0, 1] or NaN"
+            );
+        }
     }
 }
 

@@ -21,8 +21,10 @@
 //   surface between the two (docs/depth-mips.md measured the four candidate reductions).
 //
 // The levels go either to a texture's MIP levels 1 to 4 (`level_1` to `level_4`) or, with
-// ATLAS, all to `level_1`, stacked: level L at rows atlas_row(L) on, which lets a kernel
-// gather 2x2 texels of any level (WGSL gathers level 0 only).
+// ATLAS, all to `level_1`, stacked one below the other, which lets a kernel gather 2x2 texels
+// of any level (WGSL gathers level 0 only). With ATLAS_LEVEL_0 the atlas holds level 0 too,
+// at its origin, and the coarser levels in a column to its right (see atlas_origin), so that
+// a kernel reads every level from one texture without a branch.
 //
 // A workgroup reduces one 16x16 block of level 0: each of its 8x8 threads makes a texel of level
 // 1, then a quarter of them those of level 2 from level 1's in workgroup memory, and so on to
@@ -38,8 +40,10 @@ override REDUCTION: u32;
 // MEAN_OR_FURTHEST: whether depth (orthographic) or 1 / depth (perspective) is affine on a
 // plane.
 override ORTHOGRAPHIC: bool = false;
-// Whether every level goes to `level_1`, stacked (see above).
+// Whether every level goes to `level_1`, stacked, and whether level 0 goes there too (see
+// above).
 override ATLAS: bool = false;
+override ATLAS_LEVEL_0: bool = false;
 // common/ao.wgsl's DEPTH_EDGE: the relative spread of one surface.
 const ONE_SURFACE: f32 = 0.1;
 // Levels past 0 the chain holds, 1 to 4: a small image runs out of texels sooner, and the
@@ -85,13 +89,14 @@ fn level_size(level: u32) -> vec2<u32> {
     return max(textureDimensions(level_0) >> vec2<u32>(level), vec2<u32>(1u));
 }
 
-// With ATLAS, the first row of `level` in `level_1`: the heights of the levels above it.
-fn atlas_row(level: u32) -> u32 {
-    var row = 0u;
-    for (var k = 1u; k < level; k++) {
-        row += level_size(k).y;
-    }
-    return row;
+// With ATLAS, where texel (0, 0) of `level` (1 to 4) lies in `level_1`: right of level 0 with
+// ATLAS_LEVEL_0, at row H - (H >> (level - 1)) for a level 0 H texels high. Level k >= 1 is
+// H >> k high (at least 2 texels in an atlas), and the rows of consecutive levels differ by
+// (H >> (k - 1)) - (H >> k) >= H >> k, so each starts below the one before and a kernel
+// finds its row without a loop; the last ends by row H.
+fn atlas_origin(level: u32) -> vec2<u32> {
+    let size_0 = level_size(0u);
+    return vec2<u32>(select(0u, size_0.x, ATLAS_LEVEL_0), size_0.y - (size_0.y >> (level - 1u)));
 }
 
 // Stores texel `texel` of `level` (1 to 4) and keeps it in the workgroup's block, where the
@@ -104,7 +109,7 @@ fn keep(level: u32, texel: vec2<u32>, local: vec2<u32>, depth: f32) {
     }
     let value = vec4<f32>(depth, 0.0, 0.0, 0.0);
     if ATLAS {
-        textureStore(level_1, texel + vec2<u32>(0u, atlas_row(level)), value);
+        textureStore(level_1, atlas_origin(level) + texel, value);
         return;
     }
     switch level {
@@ -134,8 +139,18 @@ fn main(@builtin(workgroup_id) group: vec3<u32>, @builtin(local_invocation_id) l
     // Level 1: every thread, from level 0.
     let texel_1 = group.xy * 8u + local.xy;
     var children: vec4<f32>;
+    let size_0 = level_size(0u);
     for (var k = 0u; k < 4u; k++) {
-        children[k] = textureLoad(level_0, child(texel_1, k, level_size(0u) - 1u), 0).r;
+        children[k] = textureLoad(level_0, child(texel_1, k, size_0 - 1u), 0).r;
+        // The pass runs one thread per 2x2 block of level 0, rounded up, so that an odd last
+        // row or column of level 0 is copied too.
+        let texel_0 = 2u * texel_1 + vec2<u32>(k & 1u, k >> 1u);
+        if ATLAS_LEVEL_0 && all(texel_0 < size_0) {
+            textureStore(level_1, texel_0, vec4<f32>(children[k], 0.0, 0.0, 0.0));
+        }
+    }
+    if COARSER_LEVELS == 0u {
+        return;
     }
     keep(1u, texel_1, local.xy, reduce(texel_1, children));
     // Levels 2 to 4: 4x4 threads, then 2x2, then one, each from the level below.

@@ -52,13 +52,21 @@ const FLAG_BENT_NORMALS: u32 = 2u;
 // The noise tile of `blue` and `white` noise, two values per texel, repeated over the image (a
 // 1x1 stand-in for the kinds computed here).
 @group(0) @binding(7) var noise_tile: texture_2d<f32>;
-// With DEPTH_MIPS, levels 1 to 4 of the working depth's MIP chain, stacked in one texture
-// (passes/depth_mips.rs, `DepthMipsPass::create_atlas`): level L's texel t, covering pixels
-// t * 2^L to (t + 1) * 2^L, at (t.x, atlas_row(L) + t.y). A 1x1 stand-in otherwise, never read.
+// With DEPTH_MIPS on, the working depth's MIP chain in one texture (passes/depth_mips.rs,
+// `DepthMipsPass::create_atlas`): level L's texel t, covering pixels t * 2^L to (t + 1) * 2^L,
+// at atlas_origin(L) + t. A 1x1 stand-in otherwise, never read.
 @group(0) @binding(8) var depth_mips: texture_2d<f32>;
-// Whether far samples read the chain (AoSettings::depth_mips); when off, the pipeline
-// compiles the kernels without any of its code.
-override DEPTH_MIPS: bool = false;
+// How far samples read the chain (AoSettings::depth_mips), one of the DEPTH_MIPS_* codes
+// (`DepthMipsRead` in passes/method.rs). The pipeline compiles each kernel for one of them,
+// so that the code of the others, and of the chain when it is off, is not in it.
+override DEPTH_MIPS: u32 = 0u;
+// Every sample reads the working depth.
+const DEPTH_MIPS_OFF: u32 = 0u;
+// fp32: every level, 0 included, in the atlas; samples read it without a branch.
+const DEPTH_MIPS_ATLAS: u32 = 1u;
+// fp16: levels 1 to 4 in the atlas, level 0 from the working depth (fp16 would round the
+// nearest samples' depths by more than their distance from the shaded point can take).
+const DEPTH_MIPS_COARSE: u32 = 2u;
 
 const PI: f32 = 3.14159265;
 const HALF_PI: f32 = 1.57079633;
@@ -132,20 +140,42 @@ fn mip_levels() -> u32 {
 // the coarser, so that far samples stay in the cache (XeGTAO's depthMIPSamplingOffset, floored
 // here). Always 0 without DEPTH_MIPS.
 fn mip_level(distance_px: f32) -> u32 {
-    if !DEPTH_MIPS {
+    if DEPTH_MIPS == DEPTH_MIPS_OFF {
         return 0u;
     }
     let level = floor(log2(max(distance_px, 1.0)) - ao.mip_offset);
     return u32(clamp(level, 0.0, f32(mip_levels())));
 }
 
-// First row of level `level` (1 to 4) in the depth_mips atlas: the levels above it stacked.
-fn atlas_row(level: u32) -> f32 {
-    var row = 0.0;
-    for (var k = 1u; k < level; k++) {
-        row += max(floor(view.size.y / f32(1u << k)), 1.0);
+// Where texel (0, 0) of level `level` (1 to 4) lies in the depth_mips atlas: right of level 0
+// where the atlas holds it, at row H - (H >> (level - 1)) (`atlas_origin` in
+// depth_mips.wgsl), below the levels before it.
+fn atlas_origin(level: u32) -> vec2<f32> {
+    let row = view.size.y - floor(view.size.y / f32(1u << (level - 1u)));
+    return vec2<f32>(select(0.0, view.size.x, DEPTH_MIPS == DEPTH_MIPS_ATLAS), row);
+}
+
+// The 2x2 texels of `level` around continuous pixel position `q`, gathered at their shared
+// corner (see surface_at), from the atlas, or at level 0 from the working depth where the
+// atlas lacks it: the depths, the corner in the level's texels and the level's texel width
+// in pixels.
+struct Footprint {
+    depths: vec4<f32>,
+    corner: vec2<f32>,
+    scale: f32,
+}
+
+fn footprint(q: vec2<f32>, level: u32) -> Footprint {
+    if DEPTH_MIPS == DEPTH_MIPS_ATLAS || (DEPTH_MIPS == DEPTH_MIPS_COARSE && level > 0u) {
+        let scale = f32(1u << level);
+        let size = max(floor(view.size / scale), vec2<f32>(1.0));
+        let corner = clamp(floor(q / scale - 0.5) + 1.0, vec2<f32>(1.0), size - 1.0);
+        let origin = select(vec2<f32>(0.0), atlas_origin(level), level > 0u);
+        let uv = (origin + corner) / vec2<f32>(textureDimensions(depth_mips));
+        return Footprint(textureGather(0, depth_mips, point_clamp, uv), corner, scale);
     }
-    return row;
+    let corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
+    return Footprint(textureGather(0, linear_depth, point_clamp, corner * view.inv_size), corner, 1.0);
 }
 
 // The surface seen at continuous pixel position `q`, read at depth MIP level `level` (0: the
@@ -163,24 +193,10 @@ fn surface_at(q: vec2<f32>, level: u32) -> SeenSurface {
     // the image and `f` extrapolates, which is exact on a plane where clamping is not. Gather
     // order: x = (left, bottom), y = (right, bottom), z = (right, top), w = (left, top), with
     // "top" the smaller row index.
-    var scale = 1.0;
-    var corner: vec2<f32>;
-    var depths: vec4<f32>;
-    var f: vec2<f32>;
-    if DEPTH_MIPS && level > 0u {
-        // The same footprint on the level's grid, inside its rectangle of the atlas.
-        scale = f32(1u << level);
-        let ql = q / scale;
-        let size = max(floor(view.size / scale), vec2<f32>(1.0));
-        corner = clamp(floor(ql - 0.5) + 1.0, vec2<f32>(1.0), size - 1.0);
-        let at = vec2<f32>(corner.x, corner.y + atlas_row(level));
-        depths = textureGather(0, depth_mips, point_clamp, at / vec2<f32>(textureDimensions(depth_mips)));
-        f = ql - 0.5 - (corner - 1.0);
-    } else {
-        corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
-        depths = textureGather(0, linear_depth, point_clamp, corner * view.inv_size);
-        f = q - 0.5 - (corner - 1.0);
-    }
+    let read = footprint(q, level);
+    let depths = read.depths;
+    let corner = read.corner;
+    let f = q / read.scale - 0.5 - (corner - 1.0);
     let lowest = min(min(depths.x, depths.y), min(depths.z, depths.w));
     let highest = max(max(depths.x, depths.y), max(depths.z, depths.w));
     if lowest > 0.0 && highest <= lowest * (1.0 + DEPTH_EDGE) {
@@ -193,7 +209,7 @@ fn surface_at(q: vec2<f32>, level: u32) -> SeenSurface {
     let bottom = f.y >= 0.5;
     let depth = select(select(depths.w, depths.z, right), select(depths.x, depths.y, right), bottom);
     let texel = corner + select(vec2<f32>(-0.5), vec2<f32>(0.5), vec2<bool>(right, bottom));
-    return SeenSurface(depth, texel * scale, false);
+    return SeenSurface(depth, texel * read.scale, false);
 }
 
 // Linear depth of the surface seen at continuous pixel position `q`, read at MIP level `level`

@@ -66,12 +66,22 @@ pub(crate) fn atlas_format(settings: &AoSettings) -> Option<wgpu::TextureFormat>
     }
 }
 
+/// Whether the [`AoSettings::depth_mips`] atlas of `format` holds level 0 too: in `fp32` it is
+/// an exact copy of the working depth, and the kernels read every level from the atlas without
+/// a branch; `fp16` would round the nearest samples' depths far more than their distance to
+/// the shaded point can take, so those read the working depth (`DEPTH_MIPS_*` in
+/// `common/ao.wgsl`).
+pub(crate) fn atlas_holds_level_0(format: wgpu::TextureFormat) -> bool {
+    format == LINEAR_DEPTH_FORMAT
+}
+
 /// What a compiled `depth_mips.wgsl` is specialised for.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 struct KernelKey {
     reduction: DepthReduction,
     coarser_levels: u32,
     atlas: bool,
+    atlas_level_0: bool,
     orthographic: bool,
     format: wgpu::TextureFormat,
 }
@@ -104,20 +114,32 @@ impl DepthMipsPass {
     }
 
     /// The [`AoSettings::depth_mips`] chain for a working depth of `size`, in `format`: its
-    /// [`atlas_levels`] levels past 0 stacked in one texture, level 1 at the top, each as wide
-    /// and high as a MIP level would be (at least 1x1 when there are none).
+    /// [`atlas_levels`] levels past 0 stacked in one texture, level `k` at row
+    /// `H - (H >> (k - 1))` (level 1 at the top), each as wide and high as a MIP level would
+    /// be; with [`atlas_holds_level_0`], level 0 at the origin and the coarser levels in a
+    /// column to its right. At least 1x1.
     pub fn create_atlas(
         device: &wgpu::Device,
         size: [u32; 2],
         format: wgpu::TextureFormat,
     ) -> wgpu::Texture {
-        let height = (1..=atlas_levels(size))
-            .map(|level| (size[1] >> level).max(1))
-            .sum::<u32>();
+        let levels = atlas_levels(size);
+        let column = if levels > 0 { size[0] >> 1 } else { 0 };
+        // The last level's row (`atlas_origin` in depth_mips.wgsl) and height.
+        let stacked = if levels > 0 {
+            size[1] - (size[1] >> (levels - 1)) + (size[1] >> levels)
+        } else {
+            0
+        };
+        let [width, height] = if atlas_holds_level_0(format) {
+            [size[0] + column, size[1].max(stacked)]
+        } else {
+            [column, stacked]
+        };
         create_texture_2d_mips(
             device,
             "aokit depth mip atlas",
-            [(size[0] >> 1).max(1), height.max(1)],
+            [width.max(1), height.max(1)],
             1,
             format,
             wgpu::TextureUsages::COPY_SRC
@@ -145,6 +167,7 @@ impl DepthMipsPass {
             reduction,
             coarser_levels: chain.mip_level_count() - 1,
             atlas: false,
+            atlas_level_0: false,
             orthographic: false,
             format: LINEAR_DEPTH_FORMAT,
         };
@@ -168,6 +191,7 @@ impl DepthMipsPass {
             reduction: DepthReduction::MeanOrFurthest,
             coarser_levels: atlas_levels([depth.width(), depth.height()]),
             atlas: true,
+            atlas_level_0: atlas_holds_level_0(atlas.format()),
             orthographic,
             format: atlas.format(),
         };
@@ -188,7 +212,7 @@ impl DepthMipsPass {
         level_0: &wgpu::Texture,
         levels: &[Option<wgpu::TextureView>],
     ) {
-        if key.coarser_levels == 0 {
+        if key.coarser_levels == 0 && !key.atlas_level_0 {
             return;
         }
         let kernel = self.kernels.entry(key).or_insert_with(|| {
@@ -211,6 +235,7 @@ impl DepthMipsPass {
                     ("REDUCTION", f64::from(key.reduction as u32)),
                     ("COARSER_LEVELS", f64::from(key.coarser_levels)),
                     ("ATLAS", f64::from(u8::from(key.atlas))),
+                    ("ATLAS_LEVEL_0", f64::from(u8::from(key.atlas_level_0))),
                     ("ORTHOGRAPHIC", f64::from(u8::from(key.orthographic))),
                 ],
             )
@@ -226,11 +251,8 @@ impl DepthMipsPass {
             )
             .create_view(&Default::default())
         });
-        // One thread per texel of level 1.
-        let threads = [
-            (level_0.width() >> 1).max(1),
-            (level_0.height() >> 1).max(1),
-        ];
+        // One thread per 2x2 block of level 0, a last odd row or column included.
+        let threads = [level_0.width().div_ceil(2), level_0.height().div_ceil(2)];
         let level_0 = level_0.create_view(&Default::default());
         let resources: Vec<wgpu::BindingResource<'_>> = std::iter::once(&level_0)
             .chain(

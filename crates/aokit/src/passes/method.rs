@@ -6,7 +6,7 @@
 
 use std::collections::HashMap;
 
-use super::depth_mips::atlas_format;
+use super::depth_mips::{atlas_format, atlas_holds_level_0};
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::noise;
@@ -20,11 +20,34 @@ pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 /// Format of the bent normals: view-space xyz, AO in w. Half floats hold a unit vector to
 /// about 0.05 degrees, finer than any AO estimate.
 pub const BENT_NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+/// How a kernel reads the depth MIP atlas: the `DEPTH_MIPS_*` codes of `common/ao.wgsl`, set
+/// as its `DEPTH_MIPS` override.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum DepthMipsRead {
+    /// It reads none.
+    Off = 0,
+    /// Every level from the atlas, which holds level 0 too.
+    Atlas = 1,
+    /// Levels past 0 from the atlas, level 0 from the working depth.
+    Coarse = 2,
+}
+
+impl DepthMipsRead {
+    fn of(settings: &AoSettings) -> Self {
+        match atlas_format(settings) {
+            None => Self::Off,
+            Some(format) if atlas_holds_level_0(format) => Self::Atlas,
+            Some(_) => Self::Coarse,
+        }
+    }
+}
+
 /// Runs the kernel of the current method.
 pub struct MethodPass {
-    /// By method and whether it reads far samples from the depth MIP atlas (the `DEPTH_MIPS`
-    /// override of `common/ao.wgsl`).
-    kernels: HashMap<(Method, bool), ComputeKernel>,
+    /// By method and how it reads the depth MIP atlas.
+    kernels: HashMap<(Method, DepthMipsRead), ComputeKernel>,
+    /// How the kernel of the current settings reads the atlas.
+    depth_mips_read: DepthMipsRead,
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
     /// Bound in place of the bent normals when they are off: the kernels never write it.
@@ -69,6 +92,7 @@ impl MethodPass {
         };
         let mut pass = Self {
             kernels: HashMap::new(),
+            depth_mips_read: DepthMipsRead::Off,
             uniforms: create_uniform_buffer::<AoUniforms>(device, "aokit method settings"),
             point_clamp,
             bent_placeholder: placeholder(
@@ -104,15 +128,16 @@ impl MethodPass {
         // The separable HBAO passes and MSVO's passes run instead of the method's kernel
         // (`SeparableHbaoPass`, `MsvoPass`).
         if !settings.separable_hbao() && settings.method != Method::Msvo {
-            let depth_mips = atlas_format(settings).is_some();
+            let read = DepthMipsRead::of(settings);
+            self.depth_mips_read = read;
             self.kernels
-                .entry((settings.method, depth_mips))
+                .entry((settings.method, read))
                 .or_insert_with(|| {
                     ComputeKernel::with_constants(
                         device,
                         &shader::method(settings.method),
                         &layout(),
-                        &[("DEPTH_MIPS", f64::from(u8::from(depth_mips)))],
+                        &[("DEPTH_MIPS", f64::from(read as u32))],
                     )
                 });
         }
@@ -151,7 +176,11 @@ impl MethodPass {
         bent_normals: Option<&wgpu::TextureView>,
         depth_mips: Option<&wgpu::TextureView>,
     ) {
-        let kernel = &self.kernels[&(method, depth_mips.is_some())];
+        let read = match depth_mips {
+            Some(_) => self.depth_mips_read,
+            None => DepthMipsRead::Off,
+        };
+        let kernel = &self.kernels[&(method, read)];
         ctx.dispatch(
             kernel,
             &self.bindings(linear_depth, normals, ao, bent_normals, depth_mips),
@@ -182,5 +211,32 @@ impl MethodPass {
             ),
             wgpu::BindingResource::TextureView(depth_mips.unwrap_or(&self.depth_mips_placeholder)),
         ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn depth_mips_read_codes_match_wgsl() {
+        let module = shader::method(Method::Gtao).validate().unwrap();
+        for (name, read) in [
+            ("DEPTH_MIPS_OFF", DepthMipsRead::Off),
+            ("DEPTH_MIPS_ATLAS", DepthMipsRead::Atlas),
+            ("DEPTH_MIPS_COARSE", DepthMipsRead::Coarse),
+        ] {
+            assert_eq!(
+                shader::u32_constant(&module, name),
+                Some(read as u32),
+                "{name}"
+            );
+        }
+        let mut settings = AoSettings::default();
+        assert_eq!(DepthMipsRead::of(&settings), DepthMipsRead::Off);
+        settings.depth_mips = crate::DepthMips::Fp32;
+        assert_eq!(DepthMipsRead::of(&settings), DepthMipsRead::Atlas);
+        settings.depth_mips = crate::DepthMips::Fp16;
+        assert_eq!(DepthMipsRead::of(&settings), DepthMipsRead::Coarse);
     }
 }
