@@ -323,12 +323,14 @@ pub struct AoOutputs<'a> {
     /// `2^k x 2^k` block of level 0.
     pub depth_mips: Option<&'a wgpu::Texture>,
     /// With [`AoSettings::depth_mips`] on for a kernel that reads it: the chain its far samples
-    /// read, `R32Float` (`fp32`) or `R16Float` (`fp16`). Levels 1 to 4 of
-    /// [`AoOutputs::working_linear_depth`] (fewer at small sizes: each has at least 2 texels a
-    /// side), stacked in one texture, level 1 at the top and each level's rows below the one
-    /// before; level `k` is as large as a MIP level `k` would be, and its texel holds the mean
-    /// of the 2x2 texels below it where they lie on one surface (within 10% in depth; of 1 /
-    /// depth, or of depth when orthographic), else their furthest depth.
+    /// read, `R32Float` (`fp32`) or `R16Float` (`fp16`), in one texture. Levels 1 to 4 of
+    /// [`AoOutputs::working_linear_depth`] (fewer at small sizes: each keeps at least 2 texels
+    /// a side), level `k` as large as a MIP level `k` would be and starting at row
+    /// `H - (H >> (k - 1))` for a working depth `H` texels high; its texel holds the mean of
+    /// the 2x2 texels below it where they lie on one surface (within 10% in depth; of 1 /
+    /// depth, or of depth when orthographic), else their furthest depth. In `fp32` level 0, a
+    /// copy of the working depth, sits at the origin and the coarser levels start at column
+    /// `W`; in `fp16` they start at column 0 and level 0 is not in it.
     pub depth_mip_atlas: Option<&'a wgpu::Texture>,
 }
 
@@ -378,7 +380,8 @@ pub struct AoPipeline {
 
 impl AoPipeline {
     /// Compiles the passes the settings need. Fails, naming the field, when the settings are
-    /// out of range.
+    /// out of range, and with [`AoError::Fp16DepthMipsUnsupported`] when they ask for an fp16
+    /// depth MIP chain the device cannot write.
     ///
     /// ```no_run
     /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::AoError> {

@@ -130,7 +130,7 @@ struct SeenSurface {
 }
 
 // Coarser levels the depth MIP chain has: up to 4, each at least 2 texels on a side so that a
-// gather's 2x2 footprint fits in it (`coarser_levels` in passes/depth_mips.rs).
+// gather's 2x2 footprint fits in it (`atlas_levels` in passes/depth_mips.rs).
 fn mip_levels() -> u32 {
     let shorter = u32(min(view.size.x, view.size.y));
     return min(4u, max(firstLeadingBit(shorter), 1u) - 1u);

@@ -18,8 +18,7 @@ fn arc_integral(h: f32, n: f32) -> f32 {
 }
 
 // Offset from `p` to the surface seen at continuous pixel position `q` (read at MIP level
-// `level`, see surface_at), placed in the slice
-// plane; w = 0 when there is no surface there.
+// `level`, see surface_at), placed in the slice plane; w = 0 when there is no surface there.
 //
 // A sample must lie in the slice: texel centres sit up to half a texel off it, and on surfaces
 // seen at grazing angles that sideways step is long in view space and runs towards the eye, so an
