@@ -210,6 +210,7 @@ impl Camera {
             near,
             far,
             reverse_z: self.reverse_z,
+            ndc_offset: glam::Vec2::ZERO,
         }
     }
 }
@@ -252,8 +253,16 @@ pub struct CameraFile {
     pub far: Option<f32>,
     /// Whether depth is reverse-Z.
     pub reverse_z: bool,
+    /// Where the view axis met the image, in NDC ([`Projection::ndc_offset`]): the frame's
+    /// jitter or an off-centre frustum. Written only when not zero; absent reads as zero.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub ndc_offset: [f32; 2],
     /// World-to-view matrix, row-major (`view_from_world[row][column]`).
     pub view_from_world: [[f32; 4]; 4],
+}
+
+fn is_zero(offset: &[f32; 2]) -> bool {
+    *offset == [0.0; 2]
 }
 
 impl CameraFile {
@@ -284,6 +293,7 @@ impl CameraFile {
             near: projection.near,
             far: projection.far,
             reverse_z: projection.reverse_z,
+            ndc_offset: projection.ndc_offset.to_array(),
             view_from_world: view_from_world.transpose().to_cols_array_2d(),
         }
     }
@@ -329,6 +339,7 @@ impl CameraFile {
             near: self.near,
             far: self.far,
             reverse_z: self.reverse_z,
+            ndc_offset: glam::Vec2::from(self.ndc_offset),
         };
         projection.validate().map_err(|e| e.to_string())?;
         Ok(projection)
@@ -372,6 +383,13 @@ mod tests {
         // Row-major: the translation sits in the last column of each row.
         assert_eq!(file.view_from_world[0][3], view.w_axis.x);
         assert!((view.transform_point3(camera.eye)).length() < 1e-5);
+        // Centred: no offset key, as files written before it existed. A jittered one keeps it.
+        assert!(!json.contains("ndc_offset"));
+        let jittered = projection.with_jitter(glam::Vec2::new(0.5, 0.25), [300, 200]);
+        let file = CameraFile::new(&jittered, camera.view_from_world(), [300, 200]);
+        let back: CameraFile =
+            serde_json::from_str(&serde_json::to_string(&file).unwrap()).unwrap();
+        assert_eq!(back.projection().unwrap(), jittered);
     }
 
     #[test]

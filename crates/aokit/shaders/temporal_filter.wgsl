@@ -15,8 +15,10 @@
 struct TemporalUniforms {
     // Current view position to the previous frame's view position (identity for a still camera).
     prev_view_from_view: mat4x4<f32>,
-    // The previous projection's NDC-to-view scale and orthographic flag, for its pixel grid.
+    // The previous projection's NDC-to-view scale, NDC offset (its jitter) and orthographic
+    // flag, for its pixel grid.
     prev_ndc_to_view: vec2<f32>,
+    prev_ndc_offset: vec2<f32>,
     prev_orthographic: f32,
     // Weight of the history.
     blend: f32,
@@ -120,7 +122,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         q = center + textureLoad(motion_vectors, pixel, 0).xy;
     } else {
         let scale = mix(expected, 1.0, temporal.prev_orthographic);
-        let ndc = previous.xy / (temporal.prev_ndc_to_view * scale);
+        let ndc = previous.xy / (temporal.prev_ndc_to_view * scale) + temporal.prev_ndc_offset;
         q = uv_to_pixel(vec2<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5));
     }
     let on_screen = all(q >= vec2<f32>(0.0)) && all(q < view.size) && expected > 0.0;

@@ -59,6 +59,13 @@ pub struct Projection {
     pub far: Option<f32>,
     /// `true` when the near plane maps to depth 1 and the far plane to depth 0.
     pub reverse_z: bool,
+    /// Where the view axis (-Z) meets the image, in NDC: zero for a centred view volume. A
+    /// rasteriser that jitters its projection for temporal anti-aliasing, or draws a headset's
+    /// eye through an off-centre frustum, offsets it; aokit must know, or every view position it
+    /// reconstructs from depth is off by as much. Absent from older settings and camera files,
+    /// where it reads as zero.
+    #[serde(default)]
+    pub ndc_offset: Vec2,
 }
 
 /// Why a [`Projection`] cannot be used.
@@ -94,6 +101,9 @@ pub enum ProjectionError {
     /// Orthographic depth is linear in distance, so it needs a finite far plane.
     #[error("an orthographic projection needs a finite far plane")]
     InfiniteOrthographic,
+    /// The NDC offset of the view axis is not finite.
+    #[error("projection NDC offset must be finite, got {0}")]
+    NdcOffset(Vec2),
 }
 
 impl Projection {
@@ -115,6 +125,7 @@ impl Projection {
             near,
             far,
             reverse_z: true,
+            ndc_offset: Vec2::ZERO,
         }
     }
 
@@ -134,6 +145,7 @@ impl Projection {
             near,
             far: Some(far),
             reverse_z: true,
+            ndc_offset: Vec2::ZERO,
         }
     }
 
@@ -147,6 +159,40 @@ impl Projection {
     /// ```
     pub fn with_reverse_z(self, reverse_z: bool) -> Self {
         Self { reverse_z, ..self }
+    }
+
+    /// The same projection with the view axis meeting the image at `ndc_offset` (see
+    /// [`Projection::ndc_offset`]).
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use glam::{Vec2, Vec3};
+    /// // The right half of a 90-degree, 2:1 view, drawn on its own as a 1:1 image: its left
+    /// // edge (NDC x = -1) is where the full view's axis was.
+    /// let right_half = Projection::perspective(90f32.to_radians(), 1.0, 0.1, None)
+    ///     .with_ndc_offset(Vec2::new(-1.0, 0.0));
+    /// let point = right_half.view_position_from_linear(Vec2::new(-1.0, 0.0), 3.0);
+    /// assert!((point - Vec3::new(0.0, 0.0, -3.0)).length() < 1e-6);
+    /// ```
+    pub fn with_ndc_offset(self, ndc_offset: Vec2) -> Self {
+        Self { ndc_offset, ..self }
+    }
+
+    /// The same projection jittered by `pixels` (x right, y down) on an image of `size`
+    /// pixels, as temporal anti-aliasing moves it each frame: the offset in NDC is
+    /// `(2 x / width, -2 y / height)`, added to any offset it had.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use glam::Vec2;
+    /// let p = Projection::perspective(1.0, 16.0 / 9.0, 0.1, None);
+    /// // This frame's sub-pixel jitter, as the renderer's TAA applied it to its matrix.
+    /// let jittered = p.with_jitter(Vec2::new(0.25, -0.5), [1920, 1080]);
+    /// assert_eq!(jittered.ndc_offset, Vec2::new(0.5 / 1920.0, 1.0 / 1080.0));
+    /// ```
+    pub fn with_jitter(self, pixels: Vec2, size: [u32; 2]) -> Self {
+        let per_pixel = Vec2::new(2.0 / size[0] as f32, -2.0 / size[1] as f32);
+        self.with_ndc_offset(self.ndc_offset + pixels * per_pixel)
     }
 
     /// Checks every parameter, naming the first one that is unusable.
@@ -163,6 +209,9 @@ impl Projection {
         }
         if !(self.aspect.is_finite() && self.aspect > 0.0) {
             return Err(ProjectionError::Aspect(self.aspect));
+        }
+        if !self.ndc_offset.is_finite() {
+            return Err(ProjectionError::NdcOffset(self.ndc_offset));
         }
         if let Some(far) = self.far
             && !(far.is_finite() && far > self.near)
@@ -246,18 +295,21 @@ impl Projection {
     pub fn clip_from_view(&self) -> Mat4 {
         let e = self.half_extent();
         let (a, b) = self.depth_terms();
+        // NDC xy gain the offset: clip xy gain it times clip w, which is 1 (orthographic) or
+        // -z (perspective).
+        let o = self.ndc_offset;
         if self.is_orthographic() {
             Mat4::from_cols(
                 Vec4::new(1.0 / e.x, 0.0, 0.0, 0.0),
                 Vec4::new(0.0, 1.0 / e.y, 0.0, 0.0),
                 Vec4::new(0.0, 0.0, a, 0.0),
-                Vec4::new(0.0, 0.0, b, 1.0),
+                Vec4::new(o.x, o.y, b, 1.0),
             )
         } else {
             Mat4::from_cols(
                 Vec4::new(1.0 / e.x, 0.0, 0.0, 0.0),
                 Vec4::new(0.0, 1.0 / e.y, 0.0, 0.0),
-                Vec4::new(0.0, 0.0, a, -1.0),
+                Vec4::new(-o.x, -o.y, a, -1.0),
                 Vec4::new(0.0, 0.0, b, 0.0),
             )
         }
@@ -346,7 +398,7 @@ impl Projection {
         } else {
             linear_depth
         };
-        (ndc_xy * e * scale).extend(-linear_depth)
+        ((ndc_xy - self.ndc_offset) * e * scale).extend(-linear_depth)
     }
 
     /// View-space position of a point with NDC `xy` and NDC depth.
@@ -422,6 +474,18 @@ mod tests {
             }
             out.push(Projection::orthographic(20.0, 1.5, 0.05, 500.0).with_reverse_z(reverse_z));
         }
+        // Off-centre: a headset's eye, and a TAA jitter.
+        let centred = out.clone();
+        out.extend(
+            centred
+                .iter()
+                .map(|p| p.with_ndc_offset(Vec2::new(-0.3, 0.1))),
+        );
+        out.extend(
+            centred
+                .iter()
+                .map(|p| p.with_jitter(Vec2::new(0.5, -0.25), [1920, 1080])),
+        );
         out
     }
 
@@ -498,5 +562,17 @@ mod tests {
         assert!(p.validate().unwrap_err().to_string().contains("near"));
         let p = Projection::perspective(1.0, 1.0, 1.0, Some(0.5));
         assert!(p.validate().unwrap_err().to_string().contains("far"));
+        let p = Projection::perspective(1.0, 1.0, 0.1, None).with_ndc_offset(Vec2::NAN);
+        assert!(p.validate().unwrap_err().to_string().contains("NDC offset"));
+    }
+
+    #[test]
+    fn an_offset_shifts_where_the_view_axis_meets_the_image() {
+        let p = Projection::perspective(1.0, 1.5, 0.1, None).with_ndc_offset(Vec2::new(0.2, -0.4));
+        // The axis projects to the offset, and the offset's NDC back onto the axis.
+        let clip = p.clip_from_view() * Vec4::new(0.0, 0.0, -7.0, 1.0);
+        assert!((clip.truncate().truncate() / clip.w - p.ndc_offset).length() < 1e-6);
+        let back = p.view_position_from_linear(p.ndc_offset, 7.0);
+        assert!((back - Vec3::new(0.0, 0.0, -7.0)).length() < 1e-6);
     }
 }

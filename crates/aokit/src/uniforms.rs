@@ -21,6 +21,9 @@ pub(crate) struct ViewUniforms {
     pub far_ndc_depth: f32,
     pub frame_index: u32,
     pub uv_per_pixel: [f32; 2],
+    pub ndc_offset: [f32; 2],
+    /// WGSL rounds the struct up to its 16-byte alignment (`linearize`).
+    pub _pad: [u32; 2],
 }
 
 impl ViewUniforms {
@@ -58,6 +61,8 @@ impl ViewUniforms {
             far_ndc_depth: projection.far_ndc_depth(),
             frame_index,
             uv_per_pixel: extent.recip().to_array(),
+            ndc_offset: projection.ndc_offset.to_array(),
+            _pad: [0; 2],
         }
     }
 }
@@ -271,12 +276,13 @@ impl GuidedUniforms {
 pub(crate) struct TemporalUniforms {
     pub prev_view_from_view: [[f32; 4]; 4],
     pub prev_ndc_to_view: [f32; 2],
+    pub prev_ndc_offset: [f32; 2],
     pub prev_orthographic: f32,
     pub blend: f32,
     pub variance_gamma: f32,
     pub depth_threshold: f32,
     pub flags: u32,
-    pub _pad: u32,
+    pub _pad: [u32; 3],
 }
 
 /// `TemporalUniforms::flags` bits, mirrored as constants in `temporal_filter.wgsl`.
@@ -311,12 +317,13 @@ impl TemporalUniforms {
         Self {
             prev_view_from_view: transform.unwrap_or(glam::Mat4::IDENTITY).to_cols_array_2d(),
             prev_ndc_to_view: projection.map_or([1.0; 2], |p| p.ndc_to_view_scale().to_array()),
+            prev_ndc_offset: projection.map_or([0.0; 2], |p| p.ndc_offset.to_array()),
             prev_orthographic: projection.map_or(0.0, |p| f32::from(u8::from(p.is_orthographic()))),
             blend: settings.blend,
             variance_gamma: settings.variance_gamma,
             depth_threshold: settings.depth_threshold,
             flags,
-            _pad: 0,
+            _pad: [0; 3],
         }
     }
 }
@@ -380,6 +387,7 @@ mod tests {
             far_ndc_depth,
             frame_index,
             uv_per_pixel,
+            ndc_offset,
         });
         shader::check_layout(
             &shader::LINEAR_DEPTH,
@@ -519,6 +527,7 @@ mod tests {
         let fields = crate::field_offsets!(TemporalUniforms {
             prev_view_from_view,
             prev_ndc_to_view,
+            prev_ndc_offset,
             prev_orthographic,
             blend,
             variance_gamma,
@@ -540,6 +549,19 @@ mod tests {
         ] {
             assert_eq!(shader::u32_constant(&module, name), Some(bit), "{name}");
         }
+        // A jittered previous frame is reprojected through its own offset, as the current one
+        // through its (ViewUniforms::ndc_offset).
+        let projection = Projection::perspective(1.0, 1.5, 0.1, None);
+        let previous = projection.with_jitter(Vec2::new(0.5, -0.5), [300, 200]);
+        let settings = crate::settings::TemporalSettings::default();
+        let uniforms =
+            TemporalUniforms::new(&settings, Some((glam::Mat4::IDENTITY, previous)), false);
+        assert_eq!(uniforms.prev_ndc_offset, previous.ndc_offset.to_array());
+        let current = projection.with_jitter(Vec2::new(-0.5, 0.5), [300, 200]);
+        assert_eq!(
+            ViewUniforms::new(&current, [300, 200], 1).ndc_offset,
+            current.ndc_offset.to_array()
+        );
     }
 
     #[test]

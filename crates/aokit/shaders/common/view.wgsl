@@ -20,6 +20,9 @@ struct ViewUniforms {
     // Image uv per texel of the grid: inv_size, except below full resolution when a side of the
     // input is not a multiple of the scale and the grid's last texel reaches past the image.
     uv_per_pixel: vec2<f32>,
+    // Where the view axis meets the image in NDC (Projection::ndc_offset): 0, or the frame's
+    // jitter, or an off-centre frustum's shift.
+    ndc_offset: vec2<f32>,
 }
 
 @group(0) @binding(0) var<uniform> view: ViewUniforms;
@@ -38,7 +41,7 @@ fn linearize_depth(ndc_depth: f32) -> f32 {
 // View-space position of the point at `pixel` (in pixels, centres at +0.5) and linear depth.
 fn view_position(pixel: vec2<f32>, linear_depth: f32) -> vec3<f32> {
     let uv = pixel * view.uv_per_pixel;
-    let ndc = vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0);
+    let ndc = vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0) - view.ndc_offset;
     let scale = mix(linear_depth, 1.0, view.orthographic);
     return vec3<f32>(ndc * view.ndc_to_view * scale, -linear_depth);
 }
@@ -57,7 +60,7 @@ fn pixels_at_depth(world_length: f32, linear_depth: f32) -> f32 {
 // view_position. Perspective points must lie in front of the eye (position.z < 0).
 fn pixel_of(position: vec3<f32>) -> vec2<f32> {
     let scale = mix(-position.z, 1.0, view.orthographic);
-    let ndc = position.xy / (view.ndc_to_view * scale);
+    let ndc = position.xy / (view.ndc_to_view * scale) + view.ndc_offset;
     return uv_to_pixel(vec2<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5));
 }
 
