@@ -90,7 +90,7 @@ pub(crate) struct AoUniforms {
     pub step_power: f32,
     pub noise_kind: u32,
     pub noise_temporal: u32,
-    pub mip_offset: f32,
+    pub mip_scale: f32,
 }
 
 /// `AoUniforms::flags` bits, mirrored as constants in `common/ao.wgsl`.
@@ -193,7 +193,7 @@ impl AoUniforms {
             step_power: settings.step_power,
             noise_kind: noise::kind_code(settings.noise.kind),
             noise_temporal: noise::temporal_code(settings.noise.temporal),
-            mip_offset: settings.depth_mip_offset,
+            mip_scale: (-settings.depth_mip_offset).exp2(),
         }
     }
 }
@@ -420,7 +420,7 @@ mod tests {
             step_power,
             noise_kind,
             noise_temporal,
-            mip_offset,
+            mip_scale,
         });
         let separable_hbao = [shader::HBAO_ROWS, shader::HBAO_COLUMNS];
         for program in crate::Method::ALL
