@@ -323,6 +323,26 @@ pub fn create_texture_2d_mips(
     })
 }
 
+/// A view of a 1x1 texture of `format` and `usage`: bound where a pass's layout has a texture
+/// the current settings do not use (bent normals off, no motion vectors, no depth MIP chain),
+/// never read or written.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device) {
+/// // The layout takes motion vectors; this frame has none.
+/// let none = aokit::gpu::stand_in_view(device, "no motion", wgpu::TextureFormat::Rg16Float,
+///     wgpu::TextureUsages::TEXTURE_BINDING);
+/// # }
+/// ```
+pub fn stand_in_view(
+    device: &wgpu::Device,
+    label: &str,
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> wgpu::TextureView {
+    create_texture_2d(device, label, [1, 1], format, usage).create_view(&Default::default())
+}
+
 /// A view of mip level `level` of `texture` alone: what a storage binding needs, and what a
 /// pass reading one level as its level 0 binds.
 ///

@@ -9,7 +9,7 @@
 use std::collections::HashMap;
 
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d_mips, mip_view};
+use crate::gpu::{create_texture_2d, create_texture_2d_mips, mip_view, stand_in_view};
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::settings::{AoSettings, DepthMips, Method};
 use crate::shader;
@@ -136,11 +136,10 @@ impl DepthMipsPass {
         } else {
             [column, stacked]
         };
-        create_texture_2d_mips(
+        create_texture_2d(
             device,
             "aokit depth mip atlas",
             [width.max(1), height.max(1)],
-            1,
             format,
             wgpu::TextureUsages::COPY_SRC
                 | wgpu::TextureUsages::TEXTURE_BINDING
@@ -241,15 +240,12 @@ impl DepthMipsPass {
             )
         });
         let stand_in = self.stand_ins.entry(key.format).or_insert_with(|| {
-            create_texture_2d_mips(
+            stand_in_view(
                 ctx.device,
                 "aokit depth mips stand-in",
-                [1, 1],
-                1,
                 key.format,
                 wgpu::TextureUsages::STORAGE_BINDING,
             )
-            .create_view(&Default::default())
         });
         // One thread per 2x2 block of level 0, a last odd row or column included.
         let threads = [level_0.width().div_ceil(2), level_0.height().div_ceil(2)];

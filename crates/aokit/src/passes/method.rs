@@ -8,7 +8,7 @@ use std::collections::HashMap;
 
 use super::depth_mips::{atlas_format, atlas_holds_level_0};
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d, create_uniform_buffer};
+use crate::gpu::{create_uniform_buffer, stand_in_view};
 use crate::noise;
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::settings::{AoSettings, Method, NoiseKind};
@@ -87,9 +87,7 @@ impl MethodPass {
             label: Some("aokit point clamp"),
             ..Default::default()
         });
-        let placeholder = |label, format, usage| {
-            create_texture_2d(device, label, [1, 1], format, usage).create_view(&Default::default())
-        };
+        let placeholder = |label, format, usage| stand_in_view(device, label, format, usage);
         let mut pass = Self {
             kernels: HashMap::new(),
             depth_mips_read: DepthMipsRead::Off,

@@ -6,7 +6,7 @@
 use super::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
 use super::temporal_filter::MOTION_VECTOR_FORMATS;
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d, create_uniform_buffer};
+use crate::gpu::{create_uniform_buffer, stand_in_view};
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::passes::normals_from_depth::NORMALS_FORMAT;
 use crate::settings::AoSettings;
@@ -79,9 +79,7 @@ impl ResamplePass {
                 bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
             ],
         );
-        let placeholder = |label, format, usage| {
-            create_texture_2d(device, label, [1, 1], format, usage).create_view(&Default::default())
-        };
+        let placeholder = |label, format, usage| stand_in_view(device, label, format, usage);
         let read = wgpu::TextureUsages::TEXTURE_BINDING;
         let write = wgpu::TextureUsages::STORAGE_BINDING;
         Self {
@@ -205,7 +203,9 @@ impl ResamplePass {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gpu::{f32_to_f16, read_texture, read_texture_rgba16f, upload_texture_2d};
+    use crate::gpu::{
+        create_texture_2d, f32_to_f16, read_texture, read_texture_rgba16f, upload_texture_2d,
+    };
     use crate::normals::pack_oct32;
     use crate::settings::{Downsample, Resolution, Upsample};
     use crate::uniforms::ViewUniforms;

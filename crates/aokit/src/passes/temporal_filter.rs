@@ -4,7 +4,7 @@
 use glam::Mat4;
 
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d, create_uniform_buffer};
+use crate::gpu::{create_texture_2d, create_uniform_buffer, stand_in_view};
 use crate::passes::method::AO_FORMAT;
 use crate::projection::Projection;
 use crate::settings::TemporalSettings;
@@ -122,14 +122,12 @@ impl TemporalFilterPass {
                 label: Some("aokit temporal point clamp"),
                 ..Default::default()
             }),
-            motion_placeholder: create_texture_2d(
+            motion_placeholder: stand_in_view(
                 device,
                 "aokit motion placeholder",
-                [1, 1],
                 MOTION_VECTOR_FORMATS[0],
                 wgpu::TextureUsages::TEXTURE_BINDING,
-            )
-            .create_view(&Default::default()),
+            ),
         }
     }
 
