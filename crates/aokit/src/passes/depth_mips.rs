@@ -81,7 +81,6 @@ struct KernelKey {
     reduction: DepthReduction,
     coarser_levels: u32,
     atlas: bool,
-    atlas_level_0: bool,
     orthographic: bool,
     format: wgpu::TextureFormat,
 }
@@ -166,7 +165,6 @@ impl DepthMipsPass {
             reduction,
             coarser_levels: chain.mip_level_count() - 1,
             atlas: false,
-            atlas_level_0: false,
             orthographic: false,
             format: LINEAR_DEPTH_FORMAT,
         };
@@ -190,7 +188,6 @@ impl DepthMipsPass {
             reduction: DepthReduction::MeanOrFurthest,
             coarser_levels: atlas_levels([depth.width(), depth.height()]),
             atlas: true,
-            atlas_level_0: atlas_holds_level_0(atlas.format()),
             orthographic,
             format: atlas.format(),
         };
@@ -211,7 +208,8 @@ impl DepthMipsPass {
         level_0: &wgpu::Texture,
         levels: &[Option<wgpu::TextureView>],
     ) {
-        if key.coarser_levels == 0 && !key.atlas_level_0 {
+        let level_0_too = key.atlas && atlas_holds_level_0(key.format);
+        if key.coarser_levels == 0 && !level_0_too {
             return;
         }
         let kernel = self.kernels.entry(key).or_insert_with(|| {
@@ -234,7 +232,7 @@ impl DepthMipsPass {
                     ("REDUCTION", f64::from(key.reduction as u32)),
                     ("COARSER_LEVELS", f64::from(key.coarser_levels)),
                     ("ATLAS", f64::from(u8::from(key.atlas))),
-                    ("ATLAS_LEVEL_0", f64::from(u8::from(key.atlas_level_0))),
+                    ("ATLAS_LEVEL_0", f64::from(u8::from(level_0_too))),
                     ("ORTHOGRAPHIC", f64::from(u8::from(key.orthographic))),
                 ],
             )
