@@ -7,7 +7,9 @@ mod common;
 
 use aokit::{AoError, AoInputs, AoPipeline, AoSettings, DepthMips, Method, Preset, Projection};
 use aokit_scene::Builtin;
-use common::{encode_frame, gpu, linear_depth_texture, reference_errors, scene_settings};
+use common::{
+    encode_frame, gpu, linear_depth_texture, reduce_level, reference_errors, scene_settings,
+};
 
 /// The methods whose kernels read the chain.
 const READERS: [Method; 6] = [
@@ -23,32 +25,19 @@ const READERS: [Method; 6] = [
 /// level), their mean of 1 / depth (of depth when `orthographic`) where all lie within 10% of
 /// each other, else the furthest.
 fn coarser_level(finer: &[f32], size: [u32; 2], orthographic: bool) -> (Vec<f32>, [u32; 2]) {
-    let coarse = size.map(|side| (side / 2).max(1));
-    let mut out = Vec::with_capacity((coarse[0] * coarse[1]) as usize);
-    for y in 0..coarse[1] {
-        for x in 0..coarse[0] {
-            let children: Vec<f32> = [(0, 0), (1, 0), (0, 1), (1, 1)]
-                .iter()
-                .map(|(dx, dy)| {
-                    let cx = (2 * x + dx).min(size[0] - 1);
-                    let cy = (2 * y + dy).min(size[1] - 1);
-                    finer[(cy * size[0] + cx) as usize]
-                })
-                .collect();
-            let nearest = children.iter().copied().fold(f32::INFINITY, f32::min);
-            let furthest = children.iter().copied().fold(0.0, f32::max);
-            out.push(if nearest > 0.0 && furthest <= nearest * 1.1 {
-                if orthographic {
-                    children.iter().sum::<f32>() / 4.0
-                } else {
-                    4.0 / children.iter().map(|d| 1.0 / d).sum::<f32>()
-                }
+    reduce_level(finer, size, |_, children| {
+        let nearest = children.into_iter().fold(f32::INFINITY, f32::min);
+        let furthest = children.into_iter().fold(0.0, f32::max);
+        if nearest > 0.0 && furthest <= nearest * 1.1 {
+            if orthographic {
+                children.iter().sum::<f32>() / 4.0
             } else {
-                furthest
-            });
+                4.0 / children.iter().map(|d| 1.0 / d).sum::<f32>()
+            }
+        } else {
+            furthest
         }
-    }
-    (out, coarse)
+    })
 }
 
 /// A tilted plane with a step a third of its depth (edges at which blocks keep the furthest

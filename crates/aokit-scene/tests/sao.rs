@@ -7,22 +7,16 @@ mod common;
 use aokit::{AoInputs, AoPipeline, AoSettings, Method, Preset, Projection};
 use aokit_scene::Builtin;
 use common::{
-    encode_frame, gpu, linear_depth_texture, read_level, reference_errors, scene_settings,
+    encode_frame, gpu, linear_depth_texture, read_level, reduce_level, reference_errors,
+    scene_settings,
 };
 
 /// The level above `finer` (of `size`) as the paper's rotated-grid subsample builds it: texel
 /// `(x, y)` keeps child `(2x + (y & 1), 2y + (x & 1))`, clamped to the finer level.
 fn coarser_level(finer: &[f32], size: [u32; 2]) -> (Vec<f32>, [u32; 2]) {
-    let coarse = size.map(|side| (side / 2).max(1));
-    let mut out = Vec::with_capacity((coarse[0] * coarse[1]) as usize);
-    for y in 0..coarse[1] {
-        for x in 0..coarse[0] {
-            let cx = (2 * x + (y & 1)).min(size[0] - 1);
-            let cy = (2 * y + (x & 1)).min(size[1] - 1);
-            out.push(finer[(cy * size[0] + cx) as usize]);
-        }
-    }
-    (out, coarse)
+    reduce_level(finer, size, |[x, y], children| {
+        children[((y & 1) + 2 * (x & 1)) as usize]
+    })
 }
 
 #[test]

@@ -385,3 +385,26 @@ pub fn read_level(gpu: &GpuContext, texture: &wgpu::Texture, level: u32) -> (Vec
     let texels = aokit::gpu::read_texture_f32(&gpu.device, &gpu.queue, &copy).unwrap();
     (texels, [size.width, size.height])
 }
+
+/// The level above `finer` (of `size`) as `depth_mips.wgsl` builds it: texel `(x, y)` is
+/// `reduce((x, y), children)` of its 2x2 children of the finer level in the order (0, 0),
+/// (1, 0), (0, 1), (1, 1), each clamped to the finer level's last texel.
+pub fn reduce_level(
+    finer: &[f32],
+    size: [u32; 2],
+    reduce: impl Fn([u32; 2], [f32; 4]) -> f32,
+) -> (Vec<f32>, [u32; 2]) {
+    let coarse = size.map(|side| (side / 2).max(1));
+    let mut out = Vec::with_capacity((coarse[0] * coarse[1]) as usize);
+    for y in 0..coarse[1] {
+        for x in 0..coarse[0] {
+            let children = [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| {
+                let cx = (2 * x + dx).min(size[0] - 1);
+                let cy = (2 * y + dy).min(size[1] - 1);
+                finer[(cy * size[0] + cx) as usize]
+            });
+            out.push(reduce([x, y], children));
+        }
+    }
+    (out, coarse)
+}
