@@ -1,5 +1,5 @@
 // Downsample (resample.wgsl): each working texel takes the linear depth of one input pixel of
-// its `scale` x `scale` block, and that pixel's normal and motion, so that depth, normal and
+// its SCALE x SCALE block, and that pixel's normal and motion, so that depth, normal and
 // motion describe one surface point. Which pixel:
 //
 //     point:         a fixed one, the top-left of the block's central 2x2 (seed 001's choice)
@@ -10,13 +10,18 @@
 // background at every edge. Blocks past the image's last row or column repeat it.
 
 // Full-resolution linear depth, oct32 normals and motion vectors (1x1 when unused).
-@group(0) @binding(2) var depth_in: texture_2d<f32>;
-@group(0) @binding(3) var normals_in: texture_2d<u32>;
-@group(0) @binding(4) var motion_in: texture_2d<f32>;
-@group(0) @binding(5) var depth_out: texture_storage_2d<r32float, write>;
-@group(0) @binding(6) var normals_out: texture_storage_2d<r32uint, write>;
+@group(0) @binding(1) var depth_in: texture_2d<f32>;
+@group(0) @binding(2) var normals_in: texture_2d<u32>;
+@group(0) @binding(3) var motion_in: texture_2d<f32>;
+@group(0) @binding(4) var depth_out: texture_storage_2d<r32float, write>;
+@group(0) @binding(5) var normals_out: texture_storage_2d<r32uint, write>;
 // In working texels (1x1 when unused).
-@group(0) @binding(7) var motion_out: texture_storage_2d<rg32float, write>;
+@group(0) @binding(6) var motion_out: texture_storage_2d<rg32float, write>;
+
+// A DOWNSAMPLE_* code: which pixel of each block the working texel takes.
+override MODE: u32;
+// Downsample the motion vectors too (the temporal filter runs at working resolution).
+override MOTION_VECTORS: bool;
 
 // Depth ordered with "no surface" (sky) beyond every surface, so that `min` keeps a surface
 // whenever the block has one.
@@ -29,19 +34,18 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if any(id.xy >= vec2<u32>(view.size)) {
         return;
     }
-    let scale = resample.scale;
     let last = textureDimensions(depth_in) - 1u;
-    let first = id.xy * scale;
-    var mode = resample.downsample;
+    let first = id.xy * SCALE;
+    var mode = MODE;
     if mode == DOWNSAMPLE_CHECKERBOARD {
         mode = select(DOWNSAMPLE_MIN, DOWNSAMPLE_MAX, ((id.x + id.y) & 1u) == 1u);
     }
-    var chosen = min(first + scale / 2u - 1u, last);
+    var chosen = min(first + SCALE / 2u - 1u, last);
     if mode != DOWNSAMPLE_POINT {
         var best = distance_key(textureLoad(depth_in, first, 0).r);
         chosen = first;
-        for (var i = 1u; i < scale * scale; i++) {
-            let pixel = min(first + vec2<u32>(i % scale, i / scale), last);
+        for (var i = 1u; i < SCALE * SCALE; i++) {
+            let pixel = min(first + vec2<u32>(i % SCALE, i / SCALE), last);
             let key = distance_key(textureLoad(depth_in, pixel, 0).r);
             // Strict comparisons: ties keep the first pixel in row order.
             if select(key > best, key < best, mode == DOWNSAMPLE_MIN) {
@@ -52,8 +56,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     textureStore(depth_out, id.xy, vec4<f32>(textureLoad(depth_in, chosen, 0).r, 0.0, 0.0, 0.0));
     textureStore(normals_out, id.xy, vec4<u32>(textureLoad(normals_in, chosen, 0).r, 0u, 0u, 0u));
-    if (resample.flags & FLAG_MOTION_VECTORS) != 0u {
-        let motion = textureLoad(motion_in, chosen, 0).xy / f32(scale);
+    if MOTION_VECTORS {
+        let motion = textureLoad(motion_in, chosen, 0).xy / f32(SCALE);
         textureStore(motion_out, id.xy, vec4<f32>(motion, 0.0, 0.0));
     }
 }

@@ -1,20 +1,12 @@
 // Between the input's resolution and the working resolution (docs/denoise.md, "Resolution"): the
-// settings both directions share. A program is this file plus downsample.wgsl or upsample.wgsl.
-// Mirrors `ResampleUniforms` in uniforms.rs.
-
-struct ResampleUniforms {
-    // Input pixels per working texel along each axis: 2 or 4.
-    scale: u32,
-    // A DOWNSAMPLE_* code: which texel of each block the working texel takes.
-    downsample: u32,
-    // An UPSAMPLE_* code: how a pixel combines the working texels around it.
-    upsample: u32,
-    // Relative depth difference below which a working texel shows the pixel's surface.
-    threshold: f32,
-    flags: u32,
-}
-
-@group(0) @binding(1) var<uniform> resample: ResampleUniforms;
+// codes both directions share. A program is this file plus downsample.wgsl or upsample.wgsl.
+//
+// Every choice of code path (mode, scale, optional outputs) is an `override`, fixed per
+// pipeline, and only values stay in a buffer. Besides leaving the unused paths out of the
+// code, that spares lavapipe (Mesa 22.3) its per-dispatch folding of uniforms that steer
+// control flow: where the folded shader comes out much smaller it compiles it afresh at every
+// dispatch, which the downsample at a scale of 4 did (one compile per frame, 5 of quarter
+// resolution's 8 ms a frame at 320x180).
 
 // `Downsample as u32` and `Upsample as u32` in Rust (a test compares them).
 const DOWNSAMPLE_POINT: u32 = 0u;
@@ -25,7 +17,5 @@ const UPSAMPLE_BILATERAL: u32 = 0u;
 const UPSAMPLE_BILATERAL_BILINEAR: u32 = 1u;
 const UPSAMPLE_NEAREST_DEPTH: u32 = 2u;
 
-// Downsample the motion vectors too (the temporal filter runs at working resolution).
-const FLAG_MOTION_VECTORS: u32 = 1u;
-// Upsample the bent normals too.
-const FLAG_BENT_NORMALS: u32 = 2u;
+// Input pixels per working texel along each axis: 2 or 4.
+override SCALE: u32;

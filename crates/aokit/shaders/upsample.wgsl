@@ -14,6 +14,12 @@
 // (nothing was sampled there), with their own normal as bent normal, as the kernels treat a
 // pixel with nothing to sample.
 
+struct UpsampleUniforms {
+    // Relative depth difference below which a working texel shows the pixel's surface.
+    threshold: f32,
+}
+
+@group(0) @binding(1) var<uniform> upsample: UpsampleUniforms;
 @group(0) @binding(2) var depth_full: texture_2d<f32>;
 // Full-resolution oct32 normals, read only for bent normals.
 @group(0) @binding(3) var normals_full: texture_2d<u32>;
@@ -26,9 +32,14 @@
 // Gathers the working texels; clamping repeats the edge texels, as clamped loads would.
 @group(0) @binding(9) var point_clamp: sampler;
 
+// An UPSAMPLE_* code: how a pixel combines the working texels around it.
+override MODE: u32;
+// Upsample the bent normals too.
+override BENT_NORMALS: bool;
+
 fn store(pixel: vec2<u32>, ao: f32, bent: vec4<f32>) {
     textureStore(ao_out, pixel, vec4<f32>(ao, 0.0, 0.0, 0.0));
-    if (resample.flags & FLAG_BENT_NORMALS) != 0u {
+    if BENT_NORMALS {
         textureStore(bent_out, pixel, bent);
     }
 }
@@ -44,7 +55,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     // The pixel's centre on the working grid, whose texel centres lie at integers + 0.5.
-    let q = (vec2<f32>(id.xy) + 0.5) / f32(resample.scale);
+    let q = (vec2<f32>(id.xy) + 0.5) / f32(SCALE);
     let corner = floor(q - 0.5);
     let f = q - 0.5 - corner;
     // The 2x2 texels, gathered at their shared corner: two fetches where loads took eight (on
@@ -64,9 +75,9 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         store(id.xy, 1.0, vec4<f32>(normal, 1.0));
         return;
     }
-    let same = distance < vec4<f32>(resample.threshold);
+    let same = distance < vec4<f32>(upsample.threshold);
     var weights: vec4<f32>;
-    switch resample.upsample {
+    switch MODE {
         case UPSAMPLE_BILATERAL: {
             weights = select(vec4<f32>(0.0), vec4<f32>(1.0), same);
         }
@@ -98,7 +109,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     let ao = base + dot(weights, aos - base) / total;
     var bent = vec4<f32>(0.0);
-    if (resample.flags & FLAG_BENT_NORMALS) != 0u {
+    if BENT_NORMALS {
         let last = vec2<i32>(textureDimensions(depth_working)) - 1;
         for (var k = 0; k < 4; k++) {
             let texel = clamp(vec2<i32>(corner) + vec2<i32>(k & 1, k >> 1u), vec2<i32>(0), last);

@@ -671,6 +671,7 @@ impl AoPipeline {
                 .resample
                 .get_or_insert_with(|| ResamplePass::new(device));
             pass.prepare(
+                device,
                 queue,
                 &settings,
                 layout.working_motion,

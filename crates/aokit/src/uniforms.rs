@@ -328,43 +328,18 @@ impl TemporalUniforms {
     }
 }
 
-/// Mirrors `ResampleUniforms` in `shaders/resample.wgsl`: the downsample's and the upsample's
-/// settings, one buffer for both passes of a frame.
+/// Mirrors `UpsampleUniforms` in `shaders/upsample.wgsl`: the one resampling setting that is
+/// a value rather than a choice of code path (those are the shaders' `override`s).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub(crate) struct ResampleUniforms {
-    pub scale: u32,
-    pub downsample: u32,
-    pub upsample: u32,
+pub(crate) struct UpsampleUniforms {
     pub threshold: f32,
-    pub flags: u32,
 }
 
-/// `ResampleUniforms::flags` bits, mirrored as constants in `resample.wgsl`.
-pub(crate) mod resample_flags {
-    /// Downsample the motion vectors too.
-    pub const MOTION_VECTORS: u32 = 1;
-    /// Upsample the bent normals too.
-    pub const BENT_NORMALS: u32 = 2;
-}
-
-impl ResampleUniforms {
-    /// The resampling `settings` ask for, with motion vectors downsampled and bent normals
-    /// upsampled when `motion_vectors` and `bent_normals`.
-    pub fn new(settings: &AoSettings, motion_vectors: bool, bent_normals: bool) -> Self {
-        let mut flags = 0;
-        if motion_vectors {
-            flags |= resample_flags::MOTION_VECTORS;
-        }
-        if bent_normals {
-            flags |= resample_flags::BENT_NORMALS;
-        }
+impl UpsampleUniforms {
+    pub fn new(settings: &AoSettings) -> Self {
         Self {
-            scale: settings.resolution.scale(),
-            downsample: settings.downsample as u32,
-            upsample: settings.upsample as u32,
             threshold: settings.upsample_threshold,
-            flags,
         }
     }
 }
@@ -566,21 +541,15 @@ mod tests {
 
     #[test]
     fn resample_uniforms_and_codes_match_wgsl_in_both_passes() {
-        let fields = crate::field_offsets!(ResampleUniforms {
-            scale,
-            downsample,
-            upsample,
-            threshold,
-            flags,
-        });
+        let fields = crate::field_offsets!(UpsampleUniforms { threshold });
+        shader::check_layout(
+            &shader::UPSAMPLE,
+            "UpsampleUniforms",
+            fields,
+            size_of::<UpsampleUniforms>(),
+        )
+        .unwrap();
         for pass in [shader::DOWNSAMPLE, shader::UPSAMPLE] {
-            shader::check_layout(
-                &pass,
-                "ResampleUniforms",
-                fields,
-                size_of::<ResampleUniforms>(),
-            )
-            .unwrap();
             let module = pass.validate().unwrap();
             let constant = |name: &str| shader::u32_constant(&module, name);
             for mode in crate::Downsample::ALL {
@@ -591,14 +560,6 @@ mod tests {
                 let name = format!("UPSAMPLE_{}", mode.name().replace('-', "_").to_uppercase());
                 assert_eq!(constant(&name), Some(mode as u32), "{name}");
             }
-            assert_eq!(
-                constant("FLAG_MOTION_VECTORS"),
-                Some(resample_flags::MOTION_VECTORS)
-            );
-            assert_eq!(
-                constant("FLAG_BENT_NORMALS"),
-                Some(resample_flags::BENT_NORMALS)
-            );
         }
     }
 

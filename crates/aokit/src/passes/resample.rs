@@ -3,15 +3,17 @@
 //! and motion vectors down to the working resolution by choosing one pixel per block, and AO and
 //! bent normals back up guided by the full-resolution depth.
 
+use std::collections::HashMap;
+
 use super::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
 use super::temporal_filter::MOTION_VECTOR_FORMATS;
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_uniform_buffer, stand_in_view};
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::passes::normals_from_depth::NORMALS_FORMAT;
-use crate::settings::AoSettings;
+use crate::settings::{AoSettings, Downsample, Upsample};
 use crate::shader;
-use crate::uniforms::ResampleUniforms;
+use crate::uniforms::UpsampleUniforms;
 
 /// Format of the downsampled motion vectors: offsets in working texels, full precision as the
 /// temporal filter's history is.
@@ -28,17 +30,35 @@ pub struct DownsampleTargets<'a> {
     pub motion_vectors: Option<&'a wgpu::TextureView>,
 }
 
-/// The downsample and upsample kernels and their shared settings buffer.
+/// The kernels a frame's resampling uses: each choice of code path is compiled in (the
+/// shaders' `override`s), one kernel per combination, compiled the first time a frame asks for
+/// it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct Variant {
+    downsample: Downsample,
+    upsample: Upsample,
+    scale: u32,
+    /// The downsample writes motion vectors.
+    motion_vectors: bool,
+    /// The upsample reads and writes bent normals.
+    bent_normals: bool,
+}
+
+/// The downsample and upsample kernels and the upsample's settings buffer.
 ///
 /// A half-resolution frame: down, the AO kernel at the working size, and up again.
 pub struct ResamplePass {
-    downsample: ComputeKernel,
-    upsample: ComputeKernel,
+    /// Keyed by (mode, scale, motion vectors).
+    downsamples: HashMap<(Downsample, u32, bool), ComputeKernel>,
+    /// Keyed by (mode, scale, bent normals).
+    upsamples: HashMap<(Upsample, u32, bool), ComputeKernel>,
+    /// What the frame being recorded uses, set by [`ResamplePass::prepare`].
+    variant: Variant,
     uniforms: wgpu::Buffer,
     /// The upsample gathers the working texels through it.
     point_clamp: wgpu::Sampler,
     /// 1x1 textures bound in place of motion vectors and bent normals that a frame does not
-    /// have: the flags keep the kernels from touching them.
+    /// have: the kernels compiled for that frame do not touch them.
     motion_in_placeholder: wgpu::TextureView,
     motion_out_placeholder: wgpu::TextureView,
     bent_in_placeholder: wgpu::TextureView,
@@ -46,46 +66,22 @@ pub struct ResamplePass {
 }
 
 impl ResamplePass {
-    /// Compiles both kernels.
+    /// Creates the buffers; the kernels compile as frames ask for them.
     pub fn new(device: &wgpu::Device) -> Self {
-        let float = wgpu::TextureSampleType::Float { filterable: false };
-        let downsample = ComputeKernel::new(
-            device,
-            &shader::DOWNSAMPLE,
-            &[
-                bind::uniform(0),
-                bind::uniform(1),
-                bind::texture(2, float),
-                bind::texture(3, wgpu::TextureSampleType::Uint),
-                bind::texture(4, float),
-                bind::storage_texture(5, LINEAR_DEPTH_FORMAT),
-                bind::storage_texture(6, NORMALS_FORMAT),
-                bind::storage_texture(7, WORKING_MOTION_FORMAT),
-            ],
-        );
-        let upsample = ComputeKernel::new(
-            device,
-            &shader::UPSAMPLE,
-            &[
-                bind::uniform(0),
-                bind::uniform(1),
-                bind::texture(2, float),
-                bind::texture(3, wgpu::TextureSampleType::Uint),
-                bind::texture(4, float),
-                bind::texture(5, float),
-                bind::texture(6, float),
-                bind::storage_texture(7, AO_FORMAT),
-                bind::storage_texture(8, BENT_NORMALS_FORMAT),
-                bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
-            ],
-        );
         let placeholder = |label, format, usage| stand_in_view(device, label, format, usage);
         let read = wgpu::TextureUsages::TEXTURE_BINDING;
         let write = wgpu::TextureUsages::STORAGE_BINDING;
         Self {
-            downsample,
-            upsample,
-            uniforms: create_uniform_buffer::<ResampleUniforms>(device, "aokit resample settings"),
+            downsamples: HashMap::new(),
+            upsamples: HashMap::new(),
+            variant: Variant {
+                downsample: Downsample::default(),
+                upsample: Upsample::default(),
+                scale: 2,
+                motion_vectors: false,
+                bent_normals: false,
+            },
+            uniforms: create_uniform_buffer::<UpsampleUniforms>(device, "aokit upsample settings"),
             point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
                 label: Some("aokit upsample point clamp"),
                 ..Default::default()
@@ -113,25 +109,80 @@ impl ResamplePass {
         }
     }
 
-    /// Uploads the settings of the frame about to be recorded. Both passes of a frame read this
-    /// one buffer (a second write before the submit would replace it for both), so it says
-    /// whether the downsample writes `motion_vectors` and whether the upsample reads and writes
-    /// `bent_normals`; the views given to the passes must agree.
+    /// Compiles the kernels of the frame about to be recorded where they are new, and uploads
+    /// the upsample's settings. `motion_vectors` says whether the downsample writes motion
+    /// vectors and `bent_normals` whether the upsample reads and writes bent normals; the
+    /// views given to the passes must agree. Both passes of a frame use what the last call
+    /// set (a second upload before the submit would replace the first).
     pub fn prepare(
-        &self,
+        &mut self,
+        device: &wgpu::Device,
         queue: &wgpu::Queue,
         settings: &AoSettings,
         motion_vectors: bool,
         bent_normals: bool,
     ) {
+        let v = Variant {
+            downsample: settings.downsample,
+            upsample: settings.upsample,
+            scale: settings.resolution.scale(),
+            motion_vectors,
+            bent_normals,
+        };
+        let float = wgpu::TextureSampleType::Float { filterable: false };
+        let scale = ("SCALE", f64::from(v.scale));
+        self.downsamples
+            .entry((v.downsample, v.scale, v.motion_vectors))
+            .or_insert_with(|| {
+                ComputeKernel::with_constants(
+                    device,
+                    &shader::DOWNSAMPLE,
+                    &[
+                        bind::uniform(0),
+                        bind::texture(1, float),
+                        bind::texture(2, wgpu::TextureSampleType::Uint),
+                        bind::texture(3, float),
+                        bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
+                        bind::storage_texture(5, NORMALS_FORMAT),
+                        bind::storage_texture(6, WORKING_MOTION_FORMAT),
+                    ],
+                    &[
+                        ("MODE", f64::from(v.downsample as u32)),
+                        scale,
+                        ("MOTION_VECTORS", f64::from(u8::from(v.motion_vectors))),
+                    ],
+                )
+            });
+        self.upsamples
+            .entry((v.upsample, v.scale, v.bent_normals))
+            .or_insert_with(|| {
+                ComputeKernel::with_constants(
+                    device,
+                    &shader::UPSAMPLE,
+                    &[
+                        bind::uniform(0),
+                        bind::uniform(1),
+                        bind::texture(2, float),
+                        bind::texture(3, wgpu::TextureSampleType::Uint),
+                        bind::texture(4, float),
+                        bind::texture(5, float),
+                        bind::texture(6, float),
+                        bind::storage_texture(7, AO_FORMAT),
+                        bind::storage_texture(8, BENT_NORMALS_FORMAT),
+                        bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
+                    ],
+                    &[
+                        ("MODE", f64::from(v.upsample as u32)),
+                        scale,
+                        ("BENT_NORMALS", f64::from(u8::from(v.bent_normals))),
+                    ],
+                )
+            });
+        self.variant = v;
         queue.write_buffer(
             &self.uniforms,
             0,
-            bytemuck::bytes_of(&ResampleUniforms::new(
-                settings,
-                motion_vectors,
-                bent_normals,
-            )),
+            bytemuck::bytes_of(&UpsampleUniforms::new(settings)),
         );
     }
 
@@ -146,11 +197,11 @@ impl ResamplePass {
         motion_vectors: Option<&wgpu::TextureView>,
         targets: &DownsampleTargets<'_>,
     ) {
+        let v = self.variant;
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
-            &self.downsample,
+            &self.downsamples[&(v.downsample, v.scale, v.motion_vectors)],
             &[
-                self.uniforms.as_entire_binding(),
                 view(linear_depth),
                 view(normals),
                 view(motion_vectors.unwrap_or(&self.motion_in_placeholder)),
@@ -183,8 +234,9 @@ impl ResamplePass {
         let (bent_in, bent_out) =
             bent_normals.unwrap_or((&self.bent_in_placeholder, &self.bent_out_placeholder));
         let view = wgpu::BindingResource::TextureView;
+        let v = self.variant;
         ctx.dispatch(
-            &self.upsample,
+            &self.upsamples[&(v.upsample, v.scale, v.bent_normals)],
             &[
                 self.uniforms.as_entire_binding(),
                 view(linear_depth),
@@ -274,7 +326,7 @@ mod tests {
     /// each pixel's index as its normal bits and its coordinates as its motion.
     fn downsample(
         gpu: &GpuContext,
-        pass: &ResamplePass,
+        pass: &mut ResamplePass,
         settings: &AoSettings,
         depth: &[f32],
     ) -> (Vec<f32>, Vec<u32>, Vec<[f32; 2]>) {
@@ -306,7 +358,7 @@ mod tests {
         ];
         let views = outputs.each_ref().map(view);
         let uniforms = view_uniforms(gpu, settings.resolution.scale());
-        pass.prepare(&gpu.queue, settings, true, false);
+        pass.prepare(&gpu.device, &gpu.queue, settings, true, false);
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         pass.downsample(
             &mut PassContext {
@@ -366,7 +418,7 @@ mod tests {
     #[test]
     fn each_downsample_takes_the_pixel_it_names_with_its_normal_and_motion() {
         let gpu = gpu();
-        let pass = ResamplePass::new(&gpu.device);
+        let mut pass = ResamplePass::new(&gpu.device);
         // Random depths, a few repeated (ties), and sky in a sprinkling of pixels and in whole
         // blocks of the top rows.
         let depth: Vec<f32> = (0..SIZE[0] * SIZE[1])
@@ -385,7 +437,7 @@ mod tests {
             let working = resolution.working_size(SIZE);
             for mode in Downsample::ALL {
                 let s = settings(resolution, mode, Upsample::default());
-                let (depths, pixels, motion) = downsample(&gpu, &pass, &s, &depth);
+                let (depths, pixels, motion) = downsample(&gpu, &mut pass, &s, &depth);
                 for y in 0..working[1] {
                     for x in 0..working[0] {
                         let i = (x + y * working[0]) as usize;
@@ -439,7 +491,7 @@ mod tests {
     /// normals.
     fn upsample(
         gpu: &GpuContext,
-        pass: &ResamplePass,
+        pass: &mut ResamplePass,
         settings: &AoSettings,
         ao: impl Fn(f32) -> f32,
     ) -> (Vec<f32>, Vec<[f32; 4]>) {
@@ -487,7 +539,7 @@ mod tests {
             target(gpu, SIZE, BENT_NORMALS_FORMAT),
         ];
         let uniforms = view_uniforms(gpu, 1);
-        pass.prepare(&gpu.queue, settings, false, true);
+        pass.prepare(&gpu.device, &gpu.queue, settings, false, true);
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         pass.upsample(
             &mut PassContext {
@@ -520,11 +572,16 @@ mod tests {
     #[test]
     fn upsampling_keeps_each_side_of_a_depth_step_and_sky_stays_one() {
         let gpu = gpu();
-        let pass = ResamplePass::new(&gpu.device);
+        let mut pass = ResamplePass::new(&gpu.device);
         let near_ao = 0.2;
         let far_ao = 0.8;
         for s in every_upsample() {
-            let (ao, _) = upsample(&gpu, &pass, &s, |d| if d < 4.0 { near_ao } else { far_ao });
+            let (ao, _) = upsample(
+                &gpu,
+                &mut pass,
+                &s,
+                |d| if d < 4.0 { near_ao } else { far_ao },
+            );
             for (i, &a) in ao.iter().enumerate() {
                 let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
                 // The lost pixel: nothing was sampled there, so nothing occludes it.
@@ -547,10 +604,10 @@ mod tests {
     #[test]
     fn constant_ao_and_bent_normals_upsample_to_themselves() {
         let gpu = gpu();
-        let pass = ResamplePass::new(&gpu.device);
+        let mut pass = ResamplePass::new(&gpu.device);
         let constant = 0.37;
         for s in every_upsample() {
-            let (ao, bent) = upsample(&gpu, &pass, &s, |_| constant);
+            let (ao, bent) = upsample(&gpu, &mut pass, &s, |_| constant);
             for (i, (&a, b)) in ao.iter().zip(&bent).enumerate() {
                 let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
                 let at = format!(
