@@ -29,8 +29,6 @@
 // can leave [0, 1] at the ends of its window's depth range, so the output is clamped.
 
 struct GuidedUniforms {
-    // Window radius in pixels, 1 to MAX_RADIUS.
-    radius: u32,
     // Regularisation, in squared log depth (> 0).
     epsilon: f32,
 }
@@ -39,6 +37,11 @@ struct GuidedUniforms {
 
 // `MAX_SPATIAL_RADIUS` in Rust (a test compares them).
 const MAX_RADIUS: u32 = 8u;
+
+// Window radius in pixels, 1 to MAX_RADIUS: fixed per pipeline, as the loops' bound (why:
+// resample.wgsl's header; here lavapipe compiled both passes afresh every frame while it was a
+// uniform).
+override RADIUS: u32;
 
 // Workgroups of GROUP x GROUP threads, one per pixel. Both passes read every texel of the
 // workgroup's block and `radius` more on each side: staged once in workgroup memory, each
@@ -50,7 +53,7 @@ const TILE: u32 = GROUP + 2u * MAX_RADIUS;
 
 // Side of the staged tile at the current radius.
 fn tile_side() -> u32 {
-    return GROUP + 2u * guided.radius;
+    return GROUP + 2u * RADIUS;
 }
 
 @group(0) @binding(3) var depth_in: texture_2d<f32>;
@@ -63,7 +66,7 @@ var<workgroup> tile: array<vec4<f32>, TILE * TILE>;
 // taking every 64th texel, and waits for the whole tile.
 fn stage_tile(group: vec2<u32>, index: u32) {
     let side = tile_side();
-    let origin = vec2<i32>(group * GROUP) - vec2<i32>(i32(guided.radius));
+    let origin = vec2<i32>(group * GROUP) - vec2<i32>(i32(RADIUS));
     for (var i = index; i < side * side; i += GROUP * GROUP) {
         let pixel = origin + vec2<i32>(i32(i % side), i32(i / side));
         var texel = vec4<f32>(0.0);

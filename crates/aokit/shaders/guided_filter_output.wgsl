@@ -20,7 +20,7 @@ fn main(
     if any(id.xy >= vec2<u32>(view.size)) {
         return;
     }
-    let radius = guided.radius;
+    let radius = RADIUS;
     let centre = tile[tile_index(local.xy, vec2<u32>(radius))];
     if centre.x == 0.0 {
         textureStore(ao_out, id.xy, vec4<f32>(1.0, 0.0, 0.0, 0.0));

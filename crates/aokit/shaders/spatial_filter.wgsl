@@ -4,7 +4,7 @@
 // `load_ao_depth` and `store_filtered` over its own textures.
 //
 // Each workgroup filters a segment of LINE pixels along the axis. Its threads first load the
-// segment and `radius` pixels on each side (the apron) into workgroup memory, LINE texels at a
+// segment and RADIUS pixels on each side (the apron) into workgroup memory, LINE texels at a
 // time, so that each texel is read once per workgroup instead of once per tap. Every tap then
 // weighs the neighbour `k` pixels away whose relative depth difference from the centre is `r`:
 //
@@ -16,15 +16,11 @@
 // contribute, and keep AO 1.
 
 struct SpatialUniforms {
-    // Kernel radius in pixels, 1 to MAX_RADIUS.
-    radius: u32,
     // 1 / sigma: pixel offsets times this are in units of the spatial standard deviation.
     spatial_scale: f32,
     // 1 / depth_sigma: relative depth differences times this are in units of depth_sigma.
     depth_scale: f32,
-    // DEPTH_GAUSSIAN or DEPTH_THRESHOLD.
-    depth_weight: u32,
-    // Exponent of the normal weight; 0: no normal weight, and no normal loads.
+    // Exponent of the normal weight (> 0 where NORMAL_WEIGHT).
     normal_power: f32,
 }
 
@@ -37,6 +33,15 @@ const DEPTH_THRESHOLD: u32 = 1u;
 
 // `MAX_SPATIAL_RADIUS` in Rust (a test compares them).
 const MAX_RADIUS: u32 = 8u;
+
+// The choices of code path, fixed per pipeline (why: resample.wgsl's header; here lavapipe
+// compiled both passes afresh every frame while they were uniforms).
+// Kernel radius in pixels, 1 to MAX_RADIUS.
+override RADIUS: u32;
+// DEPTH_GAUSSIAN or DEPTH_THRESHOLD.
+override DEPTH_WEIGHT: u32;
+// Whether normals weigh in (normal_power > 0); without it no normal is loaded.
+override NORMAL_WEIGHT: bool;
 
 // Threads per workgroup, one per pixel of the segment: two 32-wide or one 64-wide SIMD group,
 // and long enough that the apron of a radius-8 kernel adds only 25% more loads (an 8x8 tile
@@ -58,12 +63,12 @@ fn neighbour_weight(offset: f32, depth: f32, centre_depth: f32, n: vec3<f32>, n0
     let x = offset * spatial.spatial_scale;
     let r = abs(depth - centre_depth) / centre_depth * spatial.depth_scale;
     var w: f32;
-    if spatial.depth_weight == DEPTH_THRESHOLD {
+    if DEPTH_WEIGHT == DEPTH_THRESHOLD {
         w = select(0.0, exp(-0.5 * x * x), r < 1.0);
     } else {
         w = exp(-0.5 * (x * x + r * r));
     }
-    if spatial.normal_power > 0.0 {
+    if NORMAL_WEIGHT {
         let facing = max(dot(n, n0), 0.0);
         // pow(0, p) is left to the implementation; a neighbour facing away weighs nothing.
         w *= select(0.0, pow(facing, spatial.normal_power), facing > 0.0);
@@ -77,8 +82,7 @@ fn main(
     @builtin(workgroup_id) group: vec3<u32>,
     @builtin(local_invocation_index) local: u32,
 ) {
-    let radius = spatial.radius;
-    let normal_weight = spatial.normal_power > 0.0;
+    let radius = RADIUS;
     let first = vec2<i32>(group.xy * vec2<u32>(GROUP_WIDTH, GROUP_HEIGHT)) - AXIS * i32(radius);
     for (var i = local; i < LINE + 2u * radius; i += LINE) {
         let pixel = first + AXIS * i32(i);
@@ -86,7 +90,7 @@ fn main(
         var n = vec3<f32>(0.0);
         if all(pixel >= vec2<i32>(0)) && all(pixel < vec2<i32>(view.size)) {
             texel = load_ao_depth(vec2<u32>(pixel));
-            if normal_weight {
+            if NORMAL_WEIGHT {
                 n = unpack_oct32(textureLoad(normals, pixel, 0).r);
             }
         }

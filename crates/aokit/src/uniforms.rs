@@ -228,43 +228,38 @@ pub(crate) struct DebugUniforms {
     pub orthographic: u32,
 }
 
-/// Mirrors `SpatialUniforms` in `shaders/spatial_filter.wgsl`: the spatial filter's settings,
-/// the sigmas as reciprocals so that the shader multiplies.
+/// Mirrors `SpatialUniforms` in `shaders/spatial_filter.wgsl`: the spatial filter's weights,
+/// the sigmas as reciprocals so that the shader multiplies. The radius, the depth weight's kind
+/// and whether normals weigh in are the shader's `override`s.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub(crate) struct SpatialUniforms {
-    pub radius: u32,
     pub spatial_scale: f32,
     pub depth_scale: f32,
-    pub depth_weight: u32,
     pub normal_power: f32,
 }
 
 impl SpatialUniforms {
     pub fn new(settings: &SpatialSettings) -> Self {
         Self {
-            radius: settings.radius,
             spatial_scale: settings.sigma.recip(),
             depth_scale: settings.depth_sigma.recip(),
-            depth_weight: settings.depth_weight as u32,
             normal_power: settings.normal_power,
         }
     }
 }
 
-/// Mirrors `GuidedUniforms` in `shaders/guided_filter.wgsl`: the guided filter's window radius
-/// and regularisation.
+/// Mirrors `GuidedUniforms` in `shaders/guided_filter.wgsl`: the guided filter's
+/// regularisation. The window radius is the shader's `override`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub(crate) struct GuidedUniforms {
-    pub radius: u32,
     pub epsilon: f32,
 }
 
 impl GuidedUniforms {
     pub fn new(settings: &SpatialSettings) -> Self {
         Self {
-            radius: settings.guided_radius,
             epsilon: settings.guided_epsilon,
         }
     }
@@ -465,10 +460,8 @@ mod tests {
     #[test]
     fn spatial_uniforms_match_wgsl_in_both_passes() {
         let fields = crate::field_offsets!(SpatialUniforms {
-            radius,
             spatial_scale,
             depth_scale,
-            depth_weight,
             normal_power,
         });
         for pass in [
@@ -487,7 +480,7 @@ mod tests {
 
     #[test]
     fn guided_uniforms_match_wgsl_in_both_passes() {
-        let fields = crate::field_offsets!(GuidedUniforms { radius, epsilon });
+        let fields = crate::field_offsets!(GuidedUniforms { epsilon });
         for pass in [
             shader::GUIDED_FILTER_COEFFICIENTS,
             shader::GUIDED_FILTER_OUTPUT,

@@ -2,6 +2,8 @@
 //! linear depth as the guide, as two compute passes that stage their windows in workgroup
 //! memory (`shaders/guided_filter.wgsl`; formulas and measurements in docs/denoise.md).
 
+use std::collections::HashMap;
+
 use super::method::AO_FORMAT;
 use super::spatial_filter::PACKED_FORMAT;
 use super::{ComputeKernel, PassContext, bind};
@@ -17,8 +19,11 @@ pub const COEFFICIENTS_FORMAT: wgpu::TextureFormat = PACKED_FORMAT;
 
 /// The two kernels of the filter and its settings buffer.
 pub struct GuidedFilterPass {
-    /// Compiled the first time the settings enable the guided kind.
-    kernels: Option<[ComputeKernel; 2]>,
+    /// Per window radius (the shader's `RADIUS`), compiled the first time settings of the
+    /// guided kind ask for it.
+    kernels: HashMap<u32, [ComputeKernel; 2]>,
+    /// The radius of the settings last given, when they select the guided kind.
+    current: Option<u32>,
     uniforms: wgpu::Buffer,
 }
 
@@ -27,7 +32,8 @@ impl GuidedFilterPass {
     /// the guided kind.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
         let mut pass = Self {
-            kernels: None,
+            kernels: HashMap::new(),
+            current: None,
             uniforms: create_uniform_buffer::<GuidedUniforms>(device, "aokit guided settings"),
         };
         pass.set_settings(device, queue, settings);
@@ -35,14 +41,17 @@ impl GuidedFilterPass {
     }
 
     /// Uploads validated settings for later `encode`s, compiling the kernels the first time
-    /// they enable the guided kind.
+    /// settings of the guided kind ask for their radius.
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         settings: &SpatialSettings,
     ) {
-        if settings.enabled && settings.kind == SpatialKind::Guided && self.kernels.is_none() {
+        let enabled = settings.enabled && settings.kind == SpatialKind::Guided;
+        self.current = enabled.then_some(settings.guided_radius);
+        if let Some(radius) = self.current {
+            let constants = [("RADIUS", f64::from(radius))];
             // View, filter settings, each pass's first input (the AO, then the lines), the
             // linear depth, and its output.
             let float = wgpu::TextureSampleType::Float { filterable: false };
@@ -55,14 +64,22 @@ impl GuidedFilterPass {
                     bind::storage_texture(4, output),
                 ]
             };
-            self.kernels = Some([
-                ComputeKernel::new(
-                    device,
-                    &shader::GUIDED_FILTER_COEFFICIENTS,
-                    &entries(COEFFICIENTS_FORMAT),
-                ),
-                ComputeKernel::new(device, &shader::GUIDED_FILTER_OUTPUT, &entries(AO_FORMAT)),
-            ]);
+            self.kernels.entry(radius).or_insert_with(|| {
+                [
+                    ComputeKernel::with_constants(
+                        device,
+                        &shader::GUIDED_FILTER_COEFFICIENTS,
+                        &entries(COEFFICIENTS_FORMAT),
+                        &constants,
+                    ),
+                    ComputeKernel::with_constants(
+                        device,
+                        &shader::GUIDED_FILTER_OUTPUT,
+                        &entries(AO_FORMAT),
+                        &constants,
+                    ),
+                ]
+            });
         }
         queue.write_buffer(
             &self.uniforms,
@@ -76,8 +93,7 @@ impl GuidedFilterPass {
     /// windows that hold it into `output` (`R32Float`, as the AO kernels write).
     ///
     /// # Panics
-    /// When the settings given so far never enabled the guided kind, so its kernels never
-    /// compiled.
+    /// When the settings last given do not select the guided kind.
     pub fn encode(
         &self,
         ctx: &mut PassContext<'_>,
@@ -87,9 +103,9 @@ impl GuidedFilterPass {
         output: &wgpu::TextureView,
     ) {
         let [fit, average] = self
-            .kernels
-            .as_ref()
-            .expect("the guided filter runs only after settings enabled it");
+            .current
+            .map(|radius| &self.kernels[&radius])
+            .expect("the guided filter runs only with settings that select it");
         let view = wgpu::BindingResource::TextureView;
         let uniforms = self.uniforms.as_entire_binding();
         ctx.dispatch(

@@ -2,10 +2,12 @@
 //! pass a compute kernel that stages its row or column segment in workgroup memory
 //! (`shaders/spatial_filter.wgsl`; formulas and measurements in docs/denoise.md).
 
+use std::collections::HashMap;
+
 use super::method::AO_FORMAT;
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::create_uniform_buffer;
-use crate::settings::{SpatialKind, SpatialSettings};
+use crate::settings::{DepthWeight, SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::SpatialUniforms;
 
@@ -16,10 +18,16 @@ use crate::uniforms::SpatialUniforms;
 /// (docs/denoise.md).
 pub const PACKED_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
 
+/// What the kernels compile in (the shader's `override`s): the radius, the depth weight's kind
+/// and whether normals weigh in.
+type Variant = (u32, DepthWeight, bool);
+
 /// The two kernels of the filter and its settings buffer.
 pub struct SpatialFilterPass {
-    /// Compiled the first time the settings enable the filter.
-    kernels: Option<[ComputeKernel; 2]>,
+    /// Per variant, compiled the first time settings that enable the filter ask for it.
+    kernels: HashMap<Variant, [ComputeKernel; 2]>,
+    /// The variant of the settings last given, when they enable the filter.
+    current: Option<Variant>,
     uniforms: wgpu::Buffer,
 }
 
@@ -28,7 +36,8 @@ impl SpatialFilterPass {
     /// enable the bilateral kind.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
         let mut pass = Self {
-            kernels: None,
+            kernels: HashMap::new(),
+            current: None,
             uniforms: create_uniform_buffer::<SpatialUniforms>(device, "aokit spatial settings"),
         };
         pass.set_settings(device, queue, settings);
@@ -36,14 +45,26 @@ impl SpatialFilterPass {
     }
 
     /// Uploads validated settings for later `encode`s, compiling the kernels the first time
-    /// they enable the bilateral kind.
+    /// settings of the bilateral kind ask for their radius, depth weight and normal weight.
     pub fn set_settings(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         settings: &SpatialSettings,
     ) {
-        if settings.enabled && settings.kind == SpatialKind::Bilateral && self.kernels.is_none() {
+        let enabled = settings.enabled && settings.kind == SpatialKind::Bilateral;
+        self.current = enabled.then_some((
+            settings.radius,
+            settings.depth_weight,
+            settings.normal_power > 0.0,
+        ));
+        if let Some(variant) = self.current {
+            let (radius, depth_weight, normal_weight) = variant;
+            let constants = [
+                ("RADIUS", f64::from(radius)),
+                ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
+                ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
+            ];
             // View, filter settings, normals, and each pass's first input: the AO along rows,
             // the packed AO and depth along columns.
             let shared = [
@@ -57,18 +78,22 @@ impl SpatialFilterPass {
                 bind::storage_texture(5, PACKED_FORMAT),
             ];
             let vertical = [bind::storage_texture(4, AO_FORMAT)];
-            self.kernels = Some([
-                ComputeKernel::new(
-                    device,
-                    &shader::SPATIAL_FILTER_HORIZONTAL,
-                    &[&shared[..], &horizontal].concat(),
-                ),
-                ComputeKernel::new(
-                    device,
-                    &shader::SPATIAL_FILTER_VERTICAL,
-                    &[&shared[..], &vertical].concat(),
-                ),
-            ]);
+            self.kernels.entry(variant).or_insert_with(|| {
+                [
+                    ComputeKernel::with_constants(
+                        device,
+                        &shader::SPATIAL_FILTER_HORIZONTAL,
+                        &[&shared[..], &horizontal].concat(),
+                        &constants,
+                    ),
+                    ComputeKernel::with_constants(
+                        device,
+                        &shader::SPATIAL_FILTER_VERTICAL,
+                        &[&shared[..], &vertical].concat(),
+                        &constants,
+                    ),
+                ]
+            });
         }
         queue.write_buffer(
             &self.uniforms,
@@ -82,8 +107,7 @@ impl SpatialFilterPass {
     /// `output` (`R32Float`, as the AO kernels write).
     ///
     /// # Panics
-    /// When the settings given so far never enabled the bilateral kind, so its kernels never
-    /// compiled.
+    /// When the settings last given do not enable the bilateral kind.
     ///
     /// See [`SpatialFilterPass`] for an example.
     pub fn encode(
@@ -96,9 +120,9 @@ impl SpatialFilterPass {
         output: &wgpu::TextureView,
     ) {
         let [horizontal, vertical] = self
-            .kernels
-            .as_ref()
-            .expect("the spatial filter runs only after settings enabled it");
+            .current
+            .map(|variant| &self.kernels[&variant])
+            .expect("the spatial filter runs only with settings that enable it");
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
             horizontal,
