@@ -12,7 +12,7 @@ use aokit::{
     Resolution, Upsample,
 };
 use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene};
-use common::{encode_frame, gpu, linear_depth_texture, rmse, trace};
+use common::{DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, rmse, trace};
 use glam::{Vec2, Vec3};
 
 /// A frame's depth, normals and motion vectors as a renderer hands them to the pipeline.
@@ -362,3 +362,88 @@ fn half_resolution_with_both_filters_stays_close_to_full_resolution() {
 const BOUND_TO_FULL: f64 = 0.1;
 /// Frames the temporal filter gets to settle: its blend of 0.8 averages about 5.
 const SETTLE_FRAMES: u32 = 12;
+
+/// Below full resolution with a normal buffer no linear depth pass runs: the downsample and
+/// the upsample read the renderer's depth themselves, of every kind, and the upsample writes
+/// the full-resolution linear depth. That depth must be what the pass writes at full
+/// resolution, and the four kinds of one depth buffer must give the same AO.
+#[test]
+fn every_kind_of_depth_is_read_below_full_resolution_without_a_linear_depth_pass() {
+    const SIZE: [u32; 2] = [96, 54];
+    let gpu = gpu();
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let scene = Builtin::Stairs.build();
+    let settings = common::scene_settings(&scene, Method::Gtao, Preset::Low);
+    let mut renderer = Renderer::new(&gpu, &scene, &settings).unwrap();
+    let (gbuffer, projection) = renderer
+        .render_gbuffer(&gpu, &scene.cameras[0], SIZE, aokit::NormalEncoding::Oct32)
+        .unwrap();
+    let mut pipeline = AoPipeline::new(device, queue, &settings).unwrap();
+    let timed = pipeline.enable_timing(device, queue);
+    let mut frame = |depth: &wgpu::Texture, resolution| {
+        pipeline
+            .set_settings(
+                device,
+                queue,
+                &AoSettings {
+                    resolution,
+                    ..settings
+                },
+            )
+            .unwrap();
+        let inputs = AoInputs {
+            normals: Some(&gbuffer.normals),
+            ..AoInputs::new(depth, projection)
+        };
+        let (ao, linear_depth) = encode_frame(&gpu, &mut pipeline, &inputs, |o| {
+            let read = |t| read_texture_f32(device, queue, t).unwrap();
+            (read(o.ao), read(o.linear_depth))
+        });
+        let passes: Vec<&str> = pipeline
+            .last_pass_times(device)
+            .map(|times| times.unwrap().iter().map(|t| t.name).collect())
+            .unwrap_or_default();
+        (ao, linear_depth, passes)
+    };
+    let (_, linear_depth, passes) = frame(&gbuffer.depth, Resolution::Full);
+    assert!(!timed || passes.contains(&"linear_depth"), "{passes:?}");
+    assert!(linear_depth.iter().any(|&d| d > 0.0) && linear_depth.contains(&0.0));
+    let linear = linear_depth_texture(&gpu, SIZE, &linear_depth);
+    let copy = |source, format| {
+        let copy = DepthCopy {
+            format,
+            samples: 4,
+            stencil: None,
+        };
+        copy_depth(&gpu, source, &copy)
+    };
+    let depths = [
+        ("Depth32Float", gbuffer.depth.clone()),
+        (
+            "Depth32Float 4x MSAA",
+            copy(&gbuffer.depth, wgpu::TextureFormat::Depth32Float),
+        ),
+        ("R32Float linear", linear.clone()),
+        (
+            "R32Float linear 4x MSAA",
+            copy(&linear, wgpu::TextureFormat::R32Float),
+        ),
+    ];
+    for resolution in [Resolution::Half, Resolution::Quarter] {
+        let mut first_ao = None;
+        for (name, depth) in &depths {
+            let (ao, written, passes) = frame(depth, resolution);
+            let at = format!("{name} at {resolution:?}");
+            assert!(written == linear_depth, "{at}: the linear depth differs");
+            if timed {
+                assert!(!passes.contains(&"linear_depth"), "{at}: {passes:?}");
+                assert!(passes.contains(&"upsample"), "{at}: {passes:?}");
+            }
+            assert!(ao.iter().all(|a| (0.0..=1.0).contains(a)), "{at}");
+            match &first_ao {
+                None => first_ao = Some(ao),
+                Some(first) => assert!(&ao == first, "{at}: the AO differs from Depth32Float's"),
+            }
+        }
+    }
+}

@@ -9,8 +9,10 @@
 // Depths are loaded, never averaged: an average invents surfaces between foreground and
 // background at every edge. Blocks past the image's last row or column repeat it.
 
-// Full-resolution linear depth, oct32 normals and motion vectors (1x1 when unused).
-@group(0) @binding(1) var depth_in: texture_2d<f32>;
+// The program starts with the input's depth at binding 1 and `input_linear_depth` (one per
+// kind of depth input, `DepthInput` in passes/linear_depth.rs): the renderer's depth, or the
+// linear depth pass's output where that ran at full resolution anyway.
+// Full-resolution oct32 normals and motion vectors (1x1 when unused).
 @group(0) @binding(2) var normals_in: texture_2d<u32>;
 @group(0) @binding(3) var motion_in: texture_2d<f32>;
 @group(0) @binding(4) var depth_out: texture_storage_2d<r32float, write>;
@@ -34,7 +36,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if any(id.xy >= vec2<u32>(view.size)) {
         return;
     }
-    let last = textureDimensions(depth_in) - 1u;
+    let last = textureDimensions(normals_in) - 1u;
     let first = id.xy * SCALE;
     var mode = MODE;
     if mode == DOWNSAMPLE_CHECKERBOARD {
@@ -42,11 +44,11 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     var chosen = min(first + SCALE / 2u - 1u, last);
     if mode != DOWNSAMPLE_POINT {
-        var best = distance_key(textureLoad(depth_in, first, 0).r);
+        var best = distance_key(input_linear_depth(first));
         chosen = first;
         for (var i = 1u; i < SCALE * SCALE; i++) {
             let pixel = min(first + vec2<u32>(i % SCALE, i / SCALE), last);
-            let key = distance_key(textureLoad(depth_in, pixel, 0).r);
+            let key = distance_key(input_linear_depth(pixel));
             // Strict comparisons: ties keep the first pixel in row order.
             if select(key > best, key < best, mode == DOWNSAMPLE_MIN) {
                 best = key;
@@ -54,7 +56,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
             }
         }
     }
-    textureStore(depth_out, id.xy, vec4<f32>(textureLoad(depth_in, chosen, 0).r, 0.0, 0.0, 0.0));
+    textureStore(depth_out, id.xy, vec4<f32>(input_linear_depth(chosen), 0.0, 0.0, 0.0));
     textureStore(normals_out, id.xy, vec4<u32>(textureLoad(normals_in, chosen, 0).r, 0u, 0u, 0u));
     if MOTION_VECTORS {
         let motion = textureLoad(motion_in, chosen, 0).xy / f32(SCALE);

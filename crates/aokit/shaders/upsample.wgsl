@@ -19,8 +19,9 @@ struct UpsampleUniforms {
     threshold: f32,
 }
 
-@group(0) @binding(1) var<uniform> upsample: UpsampleUniforms;
-@group(0) @binding(2) var depth_full: texture_2d<f32>;
+// The program starts with the input's depth at binding 1 and `input_linear_depth` (one per
+// kind of depth input, `DepthInput` in passes/linear_depth.rs), as the downsample's.
+@group(0) @binding(2) var<uniform> upsample: UpsampleUniforms;
 // Full-resolution oct32 normals, read only for bent normals.
 @group(0) @binding(3) var normals_full: texture_2d<u32>;
 @group(0) @binding(4) var depth_working: texture_2d<f32>;
@@ -31,11 +32,15 @@ struct UpsampleUniforms {
 @group(0) @binding(8) var bent_out: texture_storage_2d<rgba16float, write>;
 // Gathers the working texels; clamping repeats the edge texels, as clamped loads would.
 @group(0) @binding(9) var point_clamp: sampler;
+// The linear depth at full resolution, written where no pass before wrote it (1x1 otherwise).
+@group(0) @binding(10) var linear_out: texture_storage_2d<r32float, write>;
 
 // An UPSAMPLE_* code: how a pixel combines the working texels around it.
 override MODE: u32;
 // Upsample the bent normals too.
 override BENT_NORMALS: bool;
+// Write the full-resolution linear depth to linear_out: the frame had no linear depth pass.
+override WRITE_LINEAR_DEPTH: bool;
 
 fn store(pixel: vec2<u32>, ao: f32, bent: vec4<f32>) {
     textureStore(ao_out, pixel, vec4<f32>(ao, 0.0, 0.0, 0.0));
@@ -49,7 +54,10 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if any(id.xy >= vec2<u32>(view.size)) {
         return;
     }
-    let depth = textureLoad(depth_full, id.xy, 0).r;
+    let depth = input_linear_depth(id.xy);
+    if WRITE_LINEAR_DEPTH {
+        textureStore(linear_out, id.xy, vec4<f32>(depth, 0.0, 0.0, 0.0));
+    }
     if depth == NO_SURFACE {
         store(id.xy, 1.0, vec4<f32>(0.0, 0.0, 0.0, 1.0));
         return;

@@ -9,12 +9,14 @@ use crate::passes::PassContext;
 use crate::passes::decode_normals::DecodeNormalsPass;
 use crate::passes::depth_mips::{DepthMipsPass, DepthReduction, atlas_format};
 use crate::passes::guided_filter::GuidedFilterPass;
-use crate::passes::linear_depth::{LINEAR_DEPTH_FORMAT, LinearDepthPass};
+use crate::passes::linear_depth::{DepthInput, LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::mask::MaskPass;
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::msvo::MsvoPass;
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
-use crate::passes::resample::{DownsampleTargets, ResamplePass, WORKING_MOTION_FORMAT};
+use crate::passes::resample::{
+    DownsampleTargets, ResampleFrame, ResamplePass, WORKING_MOTION_FORMAT,
+};
 use crate::passes::separable_hbao::SeparableHbaoPass;
 use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
 use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
@@ -407,7 +409,7 @@ impl AoPipeline {
                 device,
                 "aokit working view",
             ),
-            linear_depth: LinearDepthPass::new(device),
+            linear_depth: LinearDepthPass::default(),
             mask: MaskPass::default(),
             normals_from_depth: NormalsFromDepthPass::new(device),
             decode_normals: DecodeNormalsPass::new(device),
@@ -621,8 +623,6 @@ impl AoPipeline {
             size,
             timer: self.timer.as_mut(),
         };
-        self.linear_depth
-            .encode(&mut ctx, inputs.depth, &targets.linear_depth.1);
         // Input normals the settings use are read as they are when oct32, else decoded; without
         // them (or when the source is depth) the normals are reconstructed.
         let source = settings.normals.source;
@@ -630,6 +630,19 @@ impl AoPipeline {
             .normals
             .filter(|_| source == NormalSource::Buffer)
             .map(|n| n.create_view(&Default::default()));
+        // The linear depth pass runs at full resolution, and where normals are reconstructed
+        // from its output. Otherwise the downsample and the upsample read the renderer's depth
+        // themselves, and the upsample writes the full-resolution linear depth: one pass less.
+        let linear_pass = scale == 1 || self.input_normals_view.is_none();
+        let input_view;
+        let (resample_input, resample_depth) = if linear_pass {
+            self.linear_depth
+                .encode(&mut ctx, inputs.depth, &targets.linear_depth.1);
+            (DepthInput::Linear, &targets.linear_depth.1)
+        } else {
+            input_view = DepthInput::view(inputs.depth);
+            (DepthInput::of(inputs.depth), &input_view)
+        };
         let world = settings.normals.space == NormalSpace::World;
         let (normals, normals_view) = match (inputs.normals, &self.input_normals_view) {
             (Some(texture), Some(view)) if encoding == NormalEncoding::Oct32 && !world => {
@@ -674,8 +687,12 @@ impl AoPipeline {
                 device,
                 queue,
                 &settings,
-                layout.working_motion,
-                settings.bent_normals,
+                ResampleFrame {
+                    input: resample_input,
+                    motion_vectors: layout.working_motion,
+                    bent_normals: settings.bent_normals,
+                    write_linear_depth: !linear_pass,
+                },
             );
             (&*pass, working)
         });
@@ -685,7 +702,7 @@ impl AoPipeline {
             Some((pass, working)) => {
                 pass.downsample(
                     &mut ctx,
-                    &targets.linear_depth.1,
+                    resample_depth,
                     normals_view,
                     motion_vectors.as_ref().filter(|_| layout.working_motion),
                     &DownsampleTargets {
@@ -765,7 +782,7 @@ impl AoPipeline {
             resample.map(|(pass, working)| {
                 pass.upsample(
                     ctx,
-                    &targets.linear_depth.1,
+                    resample_depth,
                     normals_view,
                     working_depth,
                     ao,
@@ -775,6 +792,7 @@ impl AoPipeline {
                         .as_ref()
                         .zip(working.upsampled_bent_normals.as_ref())
                         .map(|((_, from), (_, to))| (from, to)),
+                    (!linear_pass).then_some(&targets.linear_depth.1),
                 );
                 working
             })

@@ -93,22 +93,22 @@ pub struct ShaderSource {
     pub parts: &'static [&'static str],
 }
 
-/// Binding 1 of `linear_depth`: a single-sampled depth texture.
+/// Binding 1 of a program reading hardware depth: a single-sampled depth texture.
 const DEPTH_NDC: &str = "
 @group(0) @binding(1) var depth_ndc: texture_depth_2d;
 fn load_ndc(pixel: vec2<u32>) -> f32 {
     return textureLoad(depth_ndc, pixel, 0);
 }";
 
-/// Binding 1 of `linear_depth`: a multisampled depth texture, of which sample 0 is read.
+/// As [`DEPTH_NDC`], multisampled: sample 0 is read.
 const DEPTH_NDC_MULTISAMPLED: &str = "
 @group(0) @binding(1) var depth_ndc: texture_depth_multisampled_2d;
 fn load_ndc(pixel: vec2<u32>) -> f32 {
     return textureLoad(depth_ndc, pixel, 0);
 }";
 
-/// Binding 1 of `import_depth` and of `apply_mask` with a mask texture: the first channel of a
-/// single-sampled float texture.
+/// Binding 1 of a program reading linear depth, and of `apply_mask` with a mask texture: the
+/// first channel of a single-sampled float texture.
 const FLOAT_INPUT: &str = "
 @group(0) @binding(1) var input_texture: texture_2d<f32>;
 fn load_input(pixel: vec2<u32>) -> f32 {
@@ -122,45 +122,44 @@ fn load_input(pixel: vec2<u32>) -> f32 {
     return textureLoad(input_texture, pixel, 0).r;
 }";
 
-/// Hardware depth to linear view depth.
-pub const LINEAR_DEPTH: ShaderSource = ShaderSource {
-    name: "linear_depth",
-    parts: &[
-        VIEW,
-        DEPTH_NDC,
-        include_str!("../shaders/linear_depth.wgsl"),
-    ],
-};
+/// `input_linear_depth` over [`DEPTH_NDC`] or [`DEPTH_NDC_MULTISAMPLED`].
+const DEPTH_FROM_NDC: &str = include_str!("../shaders/common/depth_from_ndc.wgsl");
+/// `input_linear_depth` over [`FLOAT_INPUT`] or [`FLOAT_INPUT_MULTISAMPLED`].
+const DEPTH_FROM_LINEAR: &str = include_str!("../shaders/common/depth_from_linear.wgsl");
 
-/// Sample 0 of multisampled hardware depth to linear view depth.
-pub const LINEAR_DEPTH_MULTISAMPLED: ShaderSource = ShaderSource {
-    name: "linear_depth",
-    parts: &[
-        VIEW,
-        DEPTH_NDC_MULTISAMPLED,
-        include_str!("../shaders/linear_depth.wgsl"),
-    ],
-};
+/// One program per kind of depth input, in the order hardware depth, multisampled hardware
+/// depth, linear `R32Float` depth, multisampled linear depth: the parts before, the input's
+/// binding 1 and `input_linear_depth`, the parts after.
+macro_rules! per_depth_input {
+    ($name:literal, [$($before:expr),*], [$($after:expr),*]) => {
+        [
+            ShaderSource {
+                name: $name,
+                parts: &[$($before,)* DEPTH_NDC, DEPTH_FROM_NDC, $($after),*],
+            },
+            ShaderSource {
+                name: $name,
+                parts: &[$($before,)* DEPTH_NDC_MULTISAMPLED, DEPTH_FROM_NDC, $($after),*],
+            },
+            ShaderSource {
+                name: $name,
+                parts: &[$($before,)* FLOAT_INPUT, DEPTH_FROM_LINEAR, $($after),*],
+            },
+            ShaderSource {
+                name: $name,
+                parts: &[$($before,)* FLOAT_INPUT_MULTISAMPLED, DEPTH_FROM_LINEAR, $($after),*],
+            },
+        ]
+    };
+}
 
-/// Linear depth handed in as `R32Float`, sanitised.
-pub const IMPORT_DEPTH: ShaderSource = ShaderSource {
-    name: "import_depth",
-    parts: &[
-        VIEW,
-        FLOAT_INPUT,
-        include_str!("../shaders/import_depth.wgsl"),
-    ],
-};
-
-/// Sample 0 of multisampled `R32Float` linear depth, sanitised.
-pub const IMPORT_DEPTH_MULTISAMPLED: ShaderSource = ShaderSource {
-    name: "import_depth",
-    parts: &[
-        VIEW,
-        FLOAT_INPUT_MULTISAMPLED,
-        include_str!("../shaders/import_depth.wgsl"),
-    ],
-};
+/// The renderer's depth to linear view depth: hardware depth, multisampled hardware depth,
+/// linear `R32Float` depth (sanitised), multisampled linear depth.
+pub const LINEAR_DEPTH: [ShaderSource; 4] = per_depth_input!(
+    "linear_depth",
+    [VIEW],
+    [include_str!("../shaders/linear_depth.wgsl")]
+);
 
 /// Normals reconstructed from linear depth.
 pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
@@ -341,22 +340,21 @@ pub const DEBUG_VIEW: ShaderSource = ShaderSource {
 /// entry point.
 const RESAMPLE: &str = include_str!("../shaders/resample.wgsl");
 
-/// Linear depth, normals and motion vectors from the input's resolution to the working one.
-pub const DOWNSAMPLE: ShaderSource = ShaderSource {
-    name: "downsample",
-    parts: &[VIEW, RESAMPLE, include_str!("../shaders/downsample.wgsl")],
-};
+/// Linear depth, normals and motion vectors from the input's resolution to the working one,
+/// per kind of depth input.
+pub const DOWNSAMPLE: [ShaderSource; 4] = per_depth_input!(
+    "downsample",
+    [VIEW, RESAMPLE],
+    [include_str!("../shaders/downsample.wgsl")]
+);
 
-/// AO and bent normals from the working resolution to the input's, guided by depth.
-pub const UPSAMPLE: ShaderSource = ShaderSource {
-    name: "upsample",
-    parts: &[
-        VIEW,
-        ENCODING,
-        RESAMPLE,
-        include_str!("../shaders/upsample.wgsl"),
-    ],
-};
+/// AO and bent normals from the working resolution to the input's, guided by depth, per kind
+/// of depth input.
+pub const UPSAMPLE: [ShaderSource; 4] = per_depth_input!(
+    "upsample",
+    [VIEW, ENCODING, RESAMPLE],
+    [include_str!("../shaders/upsample.wgsl")]
+);
 
 /// A program on the AO kernels' interface ([`AO`] and what it needs), then `snippets`, then
 /// its own file. The per-pixel method kernels take [`AO_ENTRY`] as their first snippet; the
@@ -498,10 +496,10 @@ pub const OCCLUSION_FUNCTIONS: ShaderSource = ShaderSource {
 
 /// Every program the library compiles or validates.
 pub const ALL: &[ShaderSource] = &[
-    LINEAR_DEPTH,
-    LINEAR_DEPTH_MULTISAMPLED,
-    IMPORT_DEPTH,
-    IMPORT_DEPTH_MULTISAMPLED,
+    LINEAR_DEPTH[0],
+    LINEAR_DEPTH[1],
+    LINEAR_DEPTH[2],
+    LINEAR_DEPTH[3],
     NORMALS_FROM_DEPTH,
     DECODE_NORMALS_UINT,
     DECODE_NORMALS_FLOAT,
@@ -524,8 +522,14 @@ pub const ALL: &[ShaderSource] = &[
     GUIDED_FILTER_COEFFICIENTS,
     GUIDED_FILTER_OUTPUT,
     TEMPORAL_FILTER,
-    DOWNSAMPLE,
-    UPSAMPLE,
+    DOWNSAMPLE[0],
+    DOWNSAMPLE[1],
+    DOWNSAMPLE[2],
+    DOWNSAMPLE[3],
+    UPSAMPLE[0],
+    UPSAMPLE[1],
+    UPSAMPLE[2],
+    UPSAMPLE[3],
     APPLY_MASK_TEXTURE,
     APPLY_MASK_TEXTURE_MULTISAMPLED,
     APPLY_MASK_STENCIL,
@@ -676,7 +680,7 @@ pub fn u32_constant(module: &naga::Module, name: &str) -> Option<u32> {
 /// #[repr(C)]
 /// struct ViewUniformsMirror { size: [f32; 2] }
 /// let err = aokit::shader::check_layout(
-///     &aokit::shader::LINEAR_DEPTH,
+///     &aokit::shader::LINEAR_DEPTH[0],
 ///     "ViewUniforms",
 ///     aokit::field_offsets!(ViewUniformsMirror { size }),
 ///     std::mem::size_of::<ViewUniformsMirror>(),
@@ -743,10 +747,19 @@ mod tests {
             );
         }
         for snippet in [
-            VIEW, ENCODING, NOISE, AO, AO_ENTRY, SLICE, HORIZON, OCCLUSION,
+            VIEW,
+            ENCODING,
+            NOISE,
+            AO,
+            AO_ENTRY,
+            SLICE,
+            HORIZON,
+            OCCLUSION,
+            DEPTH_FROM_NDC,
+            DEPTH_FROM_LINEAR,
         ] {
             assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
         }
-        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 8);
+        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 10);
     }
 }

@@ -1,54 +1,84 @@
-//! Prepare pass: the renderer's depth to linear view depth, 0 where there is no surface.
+//! Prepare pass: the renderer's depth to linear view depth, 0 where there is no surface; and
+//! the kinds of depth input every pass that reads the renderer's depth accepts.
+
+use std::collections::HashMap;
 
 use super::{ComputeKernel, PassContext, bind};
-use crate::shader::{self, ShaderSource};
+use crate::shader;
 
 /// Format of the linear depth the AO kernels read.
 pub const LINEAR_DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 
-/// Converts hardware depth (any depth format) or linear depth (`R32Float`) to the linear depth
-/// the kernels read. Multisampled depth contributes its sample 0: the depth of one surface, as
-/// a resolve that averages would not give at silhouettes.
-pub struct LinearDepthPass {
-    from_hardware: ComputeKernel,
-    from_linear: ComputeKernel,
-    /// The multisampled variants, compiled the first time such a depth comes in.
-    from_hardware_multisampled: Option<ComputeKernel>,
-    from_linear_multisampled: Option<ComputeKernel>,
+/// The kinds of depth texture [`AoInputs::depth`](crate::AoInputs::depth) may be. The passes
+/// that read it (the linear depth pass, and below full resolution the downsample and upsample)
+/// are compiled once per kind; multisampled depth contributes its sample 0, the depth of one
+/// surface, as a resolve that averages would not give at silhouettes. `as usize` indexes
+/// [`shader::LINEAR_DEPTH`] and the other programs with one variant per kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthInput {
+    /// Hardware depth (any depth format), single-sampled.
+    Ndc,
+    /// Hardware depth, multisampled.
+    NdcMultisampled,
+    /// Linear view depth in an `R32Float` texture, single-sampled.
+    Linear,
+    /// Linear view depth, multisampled.
+    LinearMultisampled,
 }
 
-/// The kernel of `source` reading its depth as `sample_type`.
-fn kernel(
-    device: &wgpu::Device,
-    source: &ShaderSource,
-    sample_type: wgpu::TextureSampleType,
-    multisampled: bool,
-) -> ComputeKernel {
-    ComputeKernel::new(
-        device,
-        source,
-        &[
-            bind::uniform(0),
-            bind::texture_with_samples(1, sample_type, multisampled),
-            bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
-        ],
-    )
-}
-
-const DEPTH: wgpu::TextureSampleType = wgpu::TextureSampleType::Depth;
-const LINEAR: wgpu::TextureSampleType = wgpu::TextureSampleType::Float { filterable: false };
-
-impl LinearDepthPass {
-    /// Compiles the single-sampled variants.
-    pub fn new(device: &wgpu::Device) -> Self {
-        Self {
-            from_hardware: kernel(device, &shader::LINEAR_DEPTH, DEPTH, false),
-            from_linear: kernel(device, &shader::IMPORT_DEPTH, LINEAR, false),
-            from_hardware_multisampled: None,
-            from_linear_multisampled: None,
+impl DepthInput {
+    /// The kind of `texture`: hardware depth when its format has a depth aspect, else linear.
+    pub fn of(texture: &wgpu::Texture) -> Self {
+        match (
+            texture.format().has_depth_aspect(),
+            texture.sample_count() > 1,
+        ) {
+            (true, false) => Self::Ndc,
+            (true, true) => Self::NdcMultisampled,
+            (false, false) => Self::Linear,
+            (false, true) => Self::LinearMultisampled,
         }
     }
 
+    /// Whether the texture has more than one sample per pixel.
+    pub fn is_multisampled(self) -> bool {
+        matches!(self, Self::NdcMultisampled | Self::LinearMultisampled)
+    }
+
+    /// The layout entry of a texture of this kind at `binding`.
+    pub fn layout_entry(self, binding: u32) -> wgpu::BindGroupLayoutEntry {
+        let sample_type = match self {
+            Self::Ndc | Self::NdcMultisampled => wgpu::TextureSampleType::Depth,
+            Self::Linear | Self::LinearMultisampled => {
+                wgpu::TextureSampleType::Float { filterable: false }
+            }
+        };
+        bind::texture_with_samples(binding, sample_type, self.is_multisampled())
+    }
+
+    /// A view of `texture` the passes can bind: the depth aspect alone of a depth-stencil
+    /// format.
+    pub fn view(texture: &wgpu::Texture) -> wgpu::TextureView {
+        texture.create_view(&wgpu::TextureViewDescriptor {
+            aspect: if texture.format().has_depth_aspect() {
+                wgpu::TextureAspect::DepthOnly
+            } else {
+                wgpu::TextureAspect::All
+            },
+            ..Default::default()
+        })
+    }
+}
+
+/// Converts hardware depth or linear depth (`R32Float`, sanitised: NaN, infinity and values
+/// <= 0 become 0), single-sampled or multisampled, to the linear depth the kernels read.
+#[derive(Default)]
+pub struct LinearDepthPass {
+    /// One kernel per [`DepthInput`], compiled the first time such a depth comes in.
+    kernels: HashMap<DepthInput, ComputeKernel>,
+}
+
+impl LinearDepthPass {
     /// Records the pass for `depth`, a depth texture or an `R32Float` linear-depth texture,
     /// single-sampled or multisampled.
     pub fn encode(
@@ -57,30 +87,23 @@ impl LinearDepthPass {
         depth: &wgpu::Texture,
         output: &wgpu::TextureView,
     ) {
-        let hardware = depth.format().has_depth_aspect();
+        let input = DepthInput::of(depth);
         let device = ctx.device;
-        let kernel = match (hardware, depth.sample_count() > 1) {
-            (true, false) => &self.from_hardware,
-            (false, false) => &self.from_linear,
-            (true, true) => self.from_hardware_multisampled.get_or_insert_with(|| {
-                kernel(device, &shader::LINEAR_DEPTH_MULTISAMPLED, DEPTH, true)
-            }),
-            (false, true) => self.from_linear_multisampled.get_or_insert_with(|| {
-                kernel(device, &shader::IMPORT_DEPTH_MULTISAMPLED, LINEAR, true)
-            }),
-        };
-        let input = depth.create_view(&wgpu::TextureViewDescriptor {
-            aspect: if hardware {
-                wgpu::TextureAspect::DepthOnly
-            } else {
-                wgpu::TextureAspect::All
-            },
-            ..Default::default()
+        let kernel = self.kernels.entry(input).or_insert_with(|| {
+            ComputeKernel::new(
+                device,
+                &shader::LINEAR_DEPTH[input as usize],
+                &[
+                    bind::uniform(0),
+                    input.layout_entry(1),
+                    bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
+                ],
+            )
         });
         ctx.dispatch(
             kernel,
             &[
-                wgpu::BindingResource::TextureView(&input),
+                wgpu::BindingResource::TextureView(&DepthInput::view(depth)),
                 wgpu::BindingResource::TextureView(output),
             ],
         );

@@ -9,7 +9,7 @@ use super::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
 use super::temporal_filter::MOTION_VECTOR_FORMATS;
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_uniform_buffer, stand_in_view};
-use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
+use crate::passes::linear_depth::{DepthInput, LINEAR_DEPTH_FORMAT};
 use crate::passes::normals_from_depth::NORMALS_FORMAT;
 use crate::settings::{AoSettings, Downsample, Upsample};
 use crate::shader;
@@ -30,39 +30,75 @@ pub struct DownsampleTargets<'a> {
     pub motion_vectors: Option<&'a wgpu::TextureView>,
 }
 
+/// What a frame's resampling reads and writes besides depth, normals and AO.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ResampleFrame {
+    /// The kind of the full-resolution depth both passes read: the renderer's own, or the
+    /// linear depth pass's output ([`DepthInput::Linear`]) where that pass ran.
+    pub input: DepthInput,
+    /// The downsample writes motion vectors.
+    pub motion_vectors: bool,
+    /// The upsample reads and writes bent normals.
+    pub bent_normals: bool,
+    /// The upsample writes the full-resolution linear depth, which no pass before it wrote.
+    pub write_linear_depth: bool,
+}
+
 /// The kernels a frame's resampling uses: each choice of code path is compiled in (the
 /// shaders' `override`s), one kernel per combination, compiled the first time a frame asks for
 /// it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug)]
 struct Variant {
     downsample: Downsample,
     upsample: Upsample,
     scale: u32,
-    /// The downsample writes motion vectors.
-    motion_vectors: bool,
-    /// The upsample reads and writes bent normals.
-    bent_normals: bool,
+    frame: ResampleFrame,
 }
+
+impl Variant {
+    fn downsample_key(self) -> DownsampleKey {
+        (
+            self.frame.input,
+            self.downsample,
+            self.scale,
+            self.frame.motion_vectors,
+        )
+    }
+
+    fn upsample_key(self) -> UpsampleKey {
+        (
+            self.frame.input,
+            self.upsample,
+            self.scale,
+            self.frame.bent_normals,
+            self.frame.write_linear_depth,
+        )
+    }
+}
+
+/// Input kind, mode, scale, motion vectors.
+type DownsampleKey = (DepthInput, Downsample, u32, bool);
+/// Input kind, mode, scale, bent normals, linear depth written.
+type UpsampleKey = (DepthInput, Upsample, u32, bool, bool);
 
 /// The downsample and upsample kernels and the upsample's settings buffer.
 ///
 /// A half-resolution frame: down, the AO kernel at the working size, and up again.
 pub struct ResamplePass {
-    /// Keyed by (mode, scale, motion vectors).
-    downsamples: HashMap<(Downsample, u32, bool), ComputeKernel>,
-    /// Keyed by (mode, scale, bent normals).
-    upsamples: HashMap<(Upsample, u32, bool), ComputeKernel>,
+    downsamples: HashMap<DownsampleKey, ComputeKernel>,
+    upsamples: HashMap<UpsampleKey, ComputeKernel>,
     /// What the frame being recorded uses, set by [`ResamplePass::prepare`].
     variant: Variant,
     uniforms: wgpu::Buffer,
     /// The upsample gathers the working texels through it.
     point_clamp: wgpu::Sampler,
-    /// 1x1 textures bound in place of motion vectors and bent normals that a frame does not
-    /// have: the kernels compiled for that frame do not touch them.
+    /// 1x1 textures bound in place of motion vectors, bent normals and linear depth that a
+    /// frame does not have: the kernels compiled for that frame do not touch them.
     motion_in_placeholder: wgpu::TextureView,
     motion_out_placeholder: wgpu::TextureView,
     bent_in_placeholder: wgpu::TextureView,
     bent_out_placeholder: wgpu::TextureView,
+    linear_out_placeholder: wgpu::TextureView,
 }
 
 impl ResamplePass {
@@ -78,8 +114,12 @@ impl ResamplePass {
                 downsample: Downsample::default(),
                 upsample: Upsample::default(),
                 scale: 2,
-                motion_vectors: false,
-                bent_normals: false,
+                frame: ResampleFrame {
+                    input: DepthInput::Linear,
+                    motion_vectors: false,
+                    bent_normals: false,
+                    write_linear_depth: false,
+                },
             },
             uniforms: create_uniform_buffer::<UpsampleUniforms>(device, "aokit upsample settings"),
             point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
@@ -106,40 +146,43 @@ impl ResamplePass {
                 BENT_NORMALS_FORMAT,
                 write,
             ),
+            linear_out_placeholder: placeholder(
+                "aokit full-resolution linear depth placeholder",
+                LINEAR_DEPTH_FORMAT,
+                write,
+            ),
         }
     }
 
     /// Compiles the kernels of the frame about to be recorded where they are new, and uploads
-    /// the upsample's settings. `motion_vectors` says whether the downsample writes motion
-    /// vectors and `bent_normals` whether the upsample reads and writes bent normals; the
-    /// views given to the passes must agree. Both passes of a frame use what the last call
-    /// set (a second upload before the submit would replace the first).
+    /// the upsample's settings. The views given to the passes must agree with `frame`. Both
+    /// passes of a frame use what the last call set (a second upload before the submit would
+    /// replace the first).
     pub fn prepare(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         settings: &AoSettings,
-        motion_vectors: bool,
-        bent_normals: bool,
+        frame: ResampleFrame,
     ) {
         let v = Variant {
             downsample: settings.downsample,
             upsample: settings.upsample,
             scale: settings.resolution.scale(),
-            motion_vectors,
-            bent_normals,
+            frame,
         };
         let float = wgpu::TextureSampleType::Float { filterable: false };
         let scale = ("SCALE", f64::from(v.scale));
+        let flag = |on: bool| f64::from(u8::from(on));
         self.downsamples
-            .entry((v.downsample, v.scale, v.motion_vectors))
+            .entry(v.downsample_key())
             .or_insert_with(|| {
                 ComputeKernel::with_constants(
                     device,
-                    &shader::DOWNSAMPLE,
+                    &shader::DOWNSAMPLE[frame.input as usize],
                     &[
                         bind::uniform(0),
-                        bind::texture(1, float),
+                        frame.input.layout_entry(1),
                         bind::texture(2, wgpu::TextureSampleType::Uint),
                         bind::texture(3, float),
                         bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
@@ -149,35 +192,35 @@ impl ResamplePass {
                     &[
                         ("MODE", f64::from(v.downsample as u32)),
                         scale,
-                        ("MOTION_VECTORS", f64::from(u8::from(v.motion_vectors))),
+                        ("MOTION_VECTORS", flag(frame.motion_vectors)),
                     ],
                 )
             });
-        self.upsamples
-            .entry((v.upsample, v.scale, v.bent_normals))
-            .or_insert_with(|| {
-                ComputeKernel::with_constants(
-                    device,
-                    &shader::UPSAMPLE,
-                    &[
-                        bind::uniform(0),
-                        bind::uniform(1),
-                        bind::texture(2, float),
-                        bind::texture(3, wgpu::TextureSampleType::Uint),
-                        bind::texture(4, float),
-                        bind::texture(5, float),
-                        bind::texture(6, float),
-                        bind::storage_texture(7, AO_FORMAT),
-                        bind::storage_texture(8, BENT_NORMALS_FORMAT),
-                        bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
-                    ],
-                    &[
-                        ("MODE", f64::from(v.upsample as u32)),
-                        scale,
-                        ("BENT_NORMALS", f64::from(u8::from(v.bent_normals))),
-                    ],
-                )
-            });
+        self.upsamples.entry(v.upsample_key()).or_insert_with(|| {
+            ComputeKernel::with_constants(
+                device,
+                &shader::UPSAMPLE[frame.input as usize],
+                &[
+                    bind::uniform(0),
+                    frame.input.layout_entry(1),
+                    bind::uniform(2),
+                    bind::texture(3, wgpu::TextureSampleType::Uint),
+                    bind::texture(4, float),
+                    bind::texture(5, float),
+                    bind::texture(6, float),
+                    bind::storage_texture(7, AO_FORMAT),
+                    bind::storage_texture(8, BENT_NORMALS_FORMAT),
+                    bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
+                    bind::storage_texture(10, LINEAR_DEPTH_FORMAT),
+                ],
+                &[
+                    ("MODE", f64::from(v.upsample as u32)),
+                    scale,
+                    ("BENT_NORMALS", flag(frame.bent_normals)),
+                    ("WRITE_LINEAR_DEPTH", flag(frame.write_linear_depth)),
+                ],
+            )
+        });
         self.variant = v;
         queue.write_buffer(
             &self.uniforms,
@@ -186,23 +229,23 @@ impl ResamplePass {
         );
     }
 
-    /// Records the downsample of full-resolution `linear_depth`, oct32 `normals` and
-    /// `motion_vectors` (pixels, as [`AoInputs::motion_vectors`](crate::AoInputs::motion_vectors))
-    /// into `targets`; `ctx` is at working resolution.
+    /// Records the downsample of the full-resolution `depth` (of the prepared frame's
+    /// [`ResampleFrame::input`] kind), oct32 `normals` and `motion_vectors` (pixels, as
+    /// [`AoInputs::motion_vectors`](crate::AoInputs::motion_vectors)) into `targets`; `ctx` is
+    /// at working resolution.
     pub fn downsample(
         &self,
         ctx: &mut PassContext<'_>,
-        linear_depth: &wgpu::TextureView,
+        depth: &wgpu::TextureView,
         normals: &wgpu::TextureView,
         motion_vectors: Option<&wgpu::TextureView>,
         targets: &DownsampleTargets<'_>,
     ) {
-        let v = self.variant;
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
-            &self.downsamples[&(v.downsample, v.scale, v.motion_vectors)],
+            &self.downsamples[&self.variant.downsample_key()],
             &[
-                view(linear_depth),
+                view(depth),
                 view(normals),
                 view(motion_vectors.unwrap_or(&self.motion_in_placeholder)),
                 view(targets.linear_depth),
@@ -217,29 +260,31 @@ impl ResamplePass {
     }
 
     /// Records the upsample of working-resolution `ao` into `output`, and of bent normals
-    /// (working, full) when given, comparing the full-resolution `linear_depth` with
-    /// `working_depth`, the downsample's; `ctx` is at full resolution. `normals`, oct32 at full
-    /// resolution, are the bent normals of pixels no working texel saw.
+    /// (working, full) when given, comparing the full-resolution `depth` (of the prepared
+    /// frame's [`ResampleFrame::input`] kind) with `working_depth`, the downsample's; `ctx` is
+    /// at full resolution. `normals`, oct32 at full resolution, are the bent normals of pixels
+    /// no working texel saw. `linear_depth` receives the full-resolution linear depth when the
+    /// frame was prepared with [`ResampleFrame::write_linear_depth`].
     #[allow(clippy::too_many_arguments)]
     pub fn upsample(
         &self,
         ctx: &mut PassContext<'_>,
-        linear_depth: &wgpu::TextureView,
+        depth: &wgpu::TextureView,
         normals: &wgpu::TextureView,
         working_depth: &wgpu::TextureView,
         ao: &wgpu::TextureView,
         output: &wgpu::TextureView,
         bent_normals: Option<(&wgpu::TextureView, &wgpu::TextureView)>,
+        linear_depth: Option<&wgpu::TextureView>,
     ) {
         let (bent_in, bent_out) =
             bent_normals.unwrap_or((&self.bent_in_placeholder, &self.bent_out_placeholder));
         let view = wgpu::BindingResource::TextureView;
-        let v = self.variant;
         ctx.dispatch(
-            &self.upsamples[&(v.upsample, v.scale, v.bent_normals)],
+            &self.upsamples[&self.variant.upsample_key()],
             &[
+                view(depth),
                 self.uniforms.as_entire_binding(),
-                view(linear_depth),
                 view(normals),
                 view(working_depth),
                 view(ao),
@@ -247,6 +292,7 @@ impl ResamplePass {
                 view(output),
                 view(bent_out),
                 wgpu::BindingResource::Sampler(&self.point_clamp),
+                view(linear_depth.unwrap_or(&self.linear_out_placeholder)),
             ],
         );
     }
@@ -358,7 +404,13 @@ mod tests {
         ];
         let views = outputs.each_ref().map(view);
         let uniforms = view_uniforms(gpu, settings.resolution.scale());
-        pass.prepare(&gpu.device, &gpu.queue, settings, true, false);
+        let frame = ResampleFrame {
+            input: DepthInput::Linear,
+            motion_vectors: true,
+            bent_normals: false,
+            write_linear_depth: false,
+        };
+        pass.prepare(&gpu.device, &gpu.queue, settings, frame);
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         pass.downsample(
             &mut PassContext {
@@ -537,9 +589,16 @@ mod tests {
         let outputs = [
             target(gpu, SIZE, AO_FORMAT),
             target(gpu, SIZE, BENT_NORMALS_FORMAT),
+            target(gpu, SIZE, LINEAR_DEPTH_FORMAT),
         ];
         let uniforms = view_uniforms(gpu, 1);
-        pass.prepare(&gpu.device, &gpu.queue, settings, false, true);
+        let frame = ResampleFrame {
+            input: DepthInput::Linear,
+            motion_vectors: false,
+            bent_normals: true,
+            write_linear_depth: true,
+        };
+        pass.prepare(&gpu.device, &gpu.queue, settings, frame);
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         pass.upsample(
             &mut PassContext {
@@ -555,8 +614,11 @@ mod tests {
             &inputs[3],
             &view(&outputs[0]),
             Some((&inputs[4], &view(&outputs[1]))),
+            Some(&view(&outputs[2])),
         );
         gpu.queue.submit([encoder.finish()]);
+        // Where no linear depth pass ran, the upsample hands on the depth it read.
+        assert_eq!(read::<f32>(gpu, &outputs[2]), full_depth);
         (
             read(gpu, &outputs[0]),
             read_texture_rgba16f(&gpu.device, &gpu.queue, &outputs[1]).unwrap(),
