@@ -44,51 +44,21 @@ pub struct ResampleFrame {
     pub write_linear_depth: bool,
 }
 
-/// The kernels a frame's resampling uses: each choice of code path is compiled in (the
-/// shaders' `override`s), one kernel per combination, compiled the first time a frame asks for
-/// it.
-#[derive(Clone, Copy, Debug)]
-struct Variant {
-    downsample: Downsample,
-    upsample: Upsample,
-    scale: u32,
-    frame: ResampleFrame,
-}
-
-impl Variant {
-    fn downsample_key(self) -> DownsampleKey {
-        (
-            self.frame.input,
-            self.downsample,
-            self.scale,
-            self.frame.motion_vectors,
-        )
-    }
-
-    fn upsample_key(self) -> UpsampleKey {
-        (
-            self.frame.input,
-            self.upsample,
-            self.scale,
-            self.frame.bent_normals,
-            self.frame.write_linear_depth,
-        )
-    }
-}
-
-/// Input kind, mode, scale, motion vectors.
+/// What the downsample compiles in (the shader's `override`s, one kernel per combination):
+/// input kind, mode, scale, motion vectors.
 type DownsampleKey = (DepthInput, Downsample, u32, bool);
-/// Input kind, mode, scale, bent normals, linear depth written.
+/// What the upsample compiles in: input kind, mode, scale, bent normals, linear depth written.
 type UpsampleKey = (DepthInput, Upsample, u32, bool, bool);
 
 /// The downsample and upsample kernels and the upsample's settings buffer.
 ///
 /// A half-resolution frame: down, the AO kernel at the working size, and up again.
 pub struct ResamplePass {
+    /// Each compiled the first time a frame asks for it.
     downsamples: HashMap<DownsampleKey, ComputeKernel>,
     upsamples: HashMap<UpsampleKey, ComputeKernel>,
-    /// What the frame being recorded uses, set by [`ResamplePass::prepare`].
-    variant: Variant,
+    /// The kernels of the frame being recorded, set by [`ResamplePass::prepare`].
+    current: Option<(DownsampleKey, UpsampleKey)>,
     uniforms: wgpu::Buffer,
     /// The upsample gathers the working texels through it.
     point_clamp: wgpu::Sampler,
@@ -110,17 +80,7 @@ impl ResamplePass {
         Self {
             downsamples: HashMap::new(),
             upsamples: HashMap::new(),
-            variant: Variant {
-                downsample: Downsample::default(),
-                upsample: Upsample::default(),
-                scale: 2,
-                frame: ResampleFrame {
-                    input: DepthInput::Linear,
-                    motion_vectors: false,
-                    bent_normals: false,
-                    write_linear_depth: false,
-                },
-            },
+            current: None,
             uniforms: create_uniform_buffer::<UpsampleUniforms>(device, "aokit upsample settings"),
             point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
                 label: Some("aokit upsample point clamp"),
@@ -165,38 +125,44 @@ impl ResamplePass {
         settings: &AoSettings,
         frame: ResampleFrame,
     ) {
-        let v = Variant {
-            downsample: settings.downsample,
-            upsample: settings.upsample,
-            scale: settings.resolution.scale(),
-            frame,
-        };
+        let scale = settings.resolution.scale();
+        let down = (
+            frame.input,
+            settings.downsample,
+            scale,
+            frame.motion_vectors,
+        );
+        let up = (
+            frame.input,
+            settings.upsample,
+            scale,
+            frame.bent_normals,
+            frame.write_linear_depth,
+        );
         let float = wgpu::TextureSampleType::Float { filterable: false };
-        let scale = ("SCALE", f64::from(v.scale));
+        let scale_constant = ("SCALE", f64::from(scale));
         let flag = |on: bool| f64::from(u8::from(on));
-        self.downsamples
-            .entry(v.downsample_key())
-            .or_insert_with(|| {
-                ComputeKernel::with_constants(
-                    device,
-                    &shader::DOWNSAMPLE[frame.input as usize],
-                    &[
-                        bind::uniform(0),
-                        frame.input.layout_entry(1),
-                        bind::texture(2, wgpu::TextureSampleType::Uint),
-                        bind::texture(3, float),
-                        bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
-                        bind::storage_texture(5, NORMALS_FORMAT),
-                        bind::storage_texture(6, WORKING_MOTION_FORMAT),
-                    ],
-                    &[
-                        ("MODE", f64::from(v.downsample as u32)),
-                        scale,
-                        ("MOTION_VECTORS", flag(frame.motion_vectors)),
-                    ],
-                )
-            });
-        self.upsamples.entry(v.upsample_key()).or_insert_with(|| {
+        self.downsamples.entry(down).or_insert_with(|| {
+            ComputeKernel::with_constants(
+                device,
+                &shader::DOWNSAMPLE[frame.input as usize],
+                &[
+                    bind::uniform(0),
+                    frame.input.layout_entry(1),
+                    bind::texture(2, wgpu::TextureSampleType::Uint),
+                    bind::texture(3, float),
+                    bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
+                    bind::storage_texture(5, NORMALS_FORMAT),
+                    bind::storage_texture(6, WORKING_MOTION_FORMAT),
+                ],
+                &[
+                    ("MODE", f64::from(settings.downsample as u32)),
+                    scale_constant,
+                    ("MOTION_VECTORS", flag(frame.motion_vectors)),
+                ],
+            )
+        });
+        self.upsamples.entry(up).or_insert_with(|| {
             ComputeKernel::with_constants(
                 device,
                 &shader::UPSAMPLE[frame.input as usize],
@@ -214,14 +180,14 @@ impl ResamplePass {
                     bind::storage_texture(10, LINEAR_DEPTH_FORMAT),
                 ],
                 &[
-                    ("MODE", f64::from(v.upsample as u32)),
-                    scale,
+                    ("MODE", f64::from(settings.upsample as u32)),
+                    scale_constant,
                     ("BENT_NORMALS", flag(frame.bent_normals)),
                     ("WRITE_LINEAR_DEPTH", flag(frame.write_linear_depth)),
                 ],
             )
         });
-        self.variant = v;
+        self.current = Some((down, up));
         queue.write_buffer(
             &self.uniforms,
             0,
@@ -243,7 +209,7 @@ impl ResamplePass {
     ) {
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
-            &self.downsamples[&self.variant.downsample_key()],
+            &self.downsamples[&self.current.expect("prepare comes first").0],
             &[
                 view(depth),
                 view(normals),
@@ -281,7 +247,7 @@ impl ResamplePass {
             bent_normals.unwrap_or((&self.bent_in_placeholder, &self.bent_out_placeholder));
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
-            &self.upsamples[&self.variant.upsample_key()],
+            &self.upsamples[&self.current.expect("prepare comes first").1],
             &[
                 view(depth),
                 self.uniforms.as_entire_binding(),
