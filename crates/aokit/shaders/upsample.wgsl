@@ -49,38 +49,33 @@ fn store(pixel: vec2<u32>, ao: f32, bent: vec4<f32>) {
     }
 }
 
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
-        return;
-    }
-    let depth = input_linear_depth(id.xy);
+// The 2x2 working texels around a block's pixels, in the order left-top, right-top,
+// left-bottom, right-bottom; `corner` is the left-top one, which may lie one texel outside.
+struct Texels {
+    corner: vec2<f32>,
+    depths: vec4<f32>,
+    aos: vec4<f32>,
+    bent: array<vec4<f32>, 4>,
+}
+
+fn upsample_pixel(pixel: vec2<u32>, texels: Texels) {
+    let depth = input_linear_depth(pixel);
     if WRITE_LINEAR_DEPTH {
-        textureStore(linear_out, id.xy, vec4<f32>(depth, 0.0, 0.0, 0.0));
+        textureStore(linear_out, pixel, vec4<f32>(depth, 0.0, 0.0, 0.0));
     }
     if depth == NO_SURFACE {
-        store(id.xy, 1.0, vec4<f32>(0.0, 0.0, 0.0, 1.0));
+        store(pixel, 1.0, vec4<f32>(0.0, 0.0, 0.0, 1.0));
         return;
     }
     // The pixel's centre on the working grid, whose texel centres lie at integers + 0.5.
-    let q = (vec2<f32>(id.xy) + 0.5) / f32(SCALE);
-    let corner = floor(q - 0.5);
-    let f = q - 0.5 - corner;
-    // The 2x2 texels, gathered at their shared corner: two fetches where loads took eight (on
-    // an H100 the pass took 0.60 to 0.68 of its time, with identical output). Gather order is
-    // (left, bottom), (right, bottom), (right, top), (left, top), "top" the smaller row; .wzxy
-    // puts them in the order left-top, right-top, left-bottom, right-bottom. The corner lies
-    // half a texel from any rounding boundary, so the footprint is exactly the texels it names.
-    let uv = (corner + 1.0) / vec2<f32>(textureDimensions(depth_working));
-    let depths = textureGather(0, depth_working, point_clamp, uv).wzxy;
-    let aos = textureGather(0, ao_in, point_clamp, uv).wzxy;
+    let f = (vec2<f32>(pixel) + 0.5) / f32(SCALE) - 0.5 - texels.corner;
     // No surface never matches: |0 - d| / d = 1 would pass a threshold of 1 or more.
-    let none = depths == vec4<f32>(NO_SURFACE);
-    let distance = select(abs(depths - depth) / depth, vec4<f32>(MAX_DEPTH), none);
+    let none = texels.depths == vec4<f32>(NO_SURFACE);
+    let distance = select(abs(texels.depths - depth) / depth, vec4<f32>(MAX_DEPTH), none);
     let bilinear = vec4<f32>((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
     if all(distance == vec4<f32>(MAX_DEPTH)) {
-        let normal = unpack_oct32(textureLoad(normals_full, id.xy, 0).r);
-        store(id.xy, 1.0, vec4<f32>(normal, 1.0));
+        let normal = unpack_oct32(textureLoad(normals_full, pixel, 0).r);
+        store(pixel, 1.0, vec4<f32>(normal, 1.0));
         return;
     }
     let same = distance < vec4<f32>(upsample.threshold);
@@ -112,19 +107,57 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     var base = 0.0;
     for (var k = 3; k >= 0; k--) {
         if weights[k] > 0.0 {
-            base = aos[k];
+            base = texels.aos[k];
         }
     }
-    let ao = base + dot(weights, aos - base) / total;
+    let ao = base + dot(weights, texels.aos - base) / total;
     var bent = vec4<f32>(0.0);
     if BENT_NORMALS {
-        let last = vec2<i32>(textureDimensions(depth_working)) - 1;
         for (var k = 0; k < 4; k++) {
-            let texel = clamp(vec2<i32>(corner) + vec2<i32>(k & 1, k >> 1u), vec2<i32>(0), last);
-            bent += weights[k] * textureLoad(bent_in, texel, 0);
+            bent += weights[k] * texels.bent[k];
         }
         let b = bent.xyz;
         bent = vec4<f32>(select(b, normalize(b), dot(b, b) > 1e-12), bent.w / total);
     }
-    store(id.xy, ao, bent);
+    store(pixel, ao, bent);
+}
+
+// One invocation per block of SCALE x SCALE pixels that share their 2x2 working texels: the
+// pixels whose centres lie between the centres of texels `id - 1` and `id` along each axis.
+// Fetching the texels once per block rather than per pixel is a quarter (a sixteenth at a
+// scale of 4) of the gathers. On lavapipe at 320x180 that took the pass from 0.64 to 0.53 ms
+// (perf samples of a half-resolution HBAO frame); the rest is each pixel's depth read and
+// stores (docs/performance.md, "Half and quarter resolution"). Blocks of the first row and column reach one
+// texel before the image, clamped to its edge, as the last ones reach past it.
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let first = vec2<i32>(id.xy * SCALE) - i32(SCALE / 2u);
+    if any(first >= vec2<i32>(view.size)) {
+        return;
+    }
+    var texels: Texels;
+    texels.corner = vec2<f32>(id.xy) - 1.0;
+    // Gathered at the texels' shared corner, two fetches where loads took eight (on an H100 the
+    // pass took 0.60 to 0.68 of its time with loads, with identical output). Gather order is (left, bottom), (right, bottom),
+    // (right, top), (left, top), "top" the smaller row, and .wzxy puts them in Texels' order.
+    // The corner lies half a texel from any rounding boundary, so the footprint is exactly the
+    // texels it names.
+    let uv = vec2<f32>(id.xy) / vec2<f32>(textureDimensions(depth_working));
+    texels.depths = textureGather(0, depth_working, point_clamp, uv).wzxy;
+    texels.aos = textureGather(0, ao_in, point_clamp, uv).wzxy;
+    if BENT_NORMALS {
+        let last = vec2<i32>(textureDimensions(depth_working)) - 1;
+        for (var k = 0; k < 4; k++) {
+            let texel = clamp(vec2<i32>(texels.corner) + vec2<i32>(k & 1, k >> 1u), vec2<i32>(0), last);
+            texels.bent[k] = textureLoad(bent_in, texel, 0);
+        }
+    }
+    for (var y = 0; y < i32(SCALE); y++) {
+        for (var x = 0; x < i32(SCALE); x++) {
+            let pixel = first + vec2<i32>(x, y);
+            if all(pixel >= vec2<i32>(0)) && all(pixel < vec2<i32>(view.size)) {
+                upsample_pixel(vec2<u32>(pixel), texels);
+            }
+        }
+    }
 }

@@ -245,9 +245,12 @@ impl ResamplePass {
     ) {
         let (bent_in, bent_out) =
             bent_normals.unwrap_or((&self.bent_in_placeholder, &self.bent_out_placeholder));
+        let key = self.current.expect("prepare comes first").1;
+        let size = ctx.size;
+        ctx.size = upsample_blocks(size, key.2);
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
-            &self.upsamples[&self.current.expect("prepare comes first").1],
+            &self.upsamples[&key],
             &[
                 view(depth),
                 self.uniforms.as_entire_binding(),
@@ -261,7 +264,15 @@ impl ResamplePass {
                 view(linear_depth.unwrap_or(&self.linear_out_placeholder)),
             ],
         );
+        ctx.size = size;
     }
+}
+
+/// The upsample's invocations over an input of `size` at `scale`: one per block of pixels
+/// sharing their working texels, the first and last blocks reaching half a block past the
+/// image (`upsample.wgsl`'s `main`).
+fn upsample_blocks(size: [u32; 2], scale: u32) -> [u32; 2] {
+    size.map(|n| (n + scale / 2 - 1) / scale + 1)
 }
 
 #[cfg(test)]
@@ -504,14 +515,14 @@ mod tests {
         }
     }
 
-    /// Upsamples working AO `ao(depth)` and bent normals `(0.6, 0, 0.8, ao)` over working depth
-    /// taken from `step_depth` by the point rule; returns the full-resolution AO and bent
-    /// normals.
+    /// Upsamples working AO `ao(depth, texel)` and bent normals `(0.6, 0, 0.8, ao)` over
+    /// working depth taken from `step_depth` by the point rule; returns the full-resolution AO
+    /// and bent normals.
     fn upsample(
         gpu: &GpuContext,
         pass: &mut ResamplePass,
         settings: &AoSettings,
-        ao: impl Fn(f32) -> f32,
+        ao: impl Fn(f32, [u32; 2]) -> f32,
     ) -> (Vec<f32>, Vec<[f32; 4]>) {
         let scale = settings.resolution.scale();
         let working = settings.resolution.working_size(SIZE);
@@ -533,7 +544,9 @@ mod tests {
                 )
             })
             .collect();
-        let working_ao: Vec<f32> = working_depth.iter().map(|&d| ao(d)).collect();
+        let working_ao: Vec<f32> = (0..working[0] * working[1])
+            .map(|i| ao(working_depth[i as usize], [i % working[0], i / working[0]]))
+            .collect();
         let bent: Vec<u16> = working_ao
             .iter()
             .flat_map(|&a| [0.6, 0.0, 0.8, a].map(f32_to_f16))
@@ -608,7 +621,7 @@ mod tests {
                 &gpu,
                 &mut pass,
                 &s,
-                |d| if d < 4.0 { near_ao } else { far_ao },
+                |d, _| if d < 4.0 { near_ao } else { far_ao },
             );
             for (i, &a) in ao.iter().enumerate() {
                 let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
@@ -635,7 +648,7 @@ mod tests {
         let mut pass = ResamplePass::new(&gpu.device);
         let constant = 0.37;
         for s in every_upsample() {
-            let (ao, bent) = upsample(&gpu, &mut pass, &s, |_| constant);
+            let (ao, bent) = upsample(&gpu, &mut pass, &s, |_, _| constant);
             for (i, (&a, b)) in ao.iter().zip(&bent).enumerate() {
                 let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
                 let at = format!(
@@ -654,6 +667,67 @@ mod tests {
                     b.iter().zip(want_bent).all(|(b, w)| (b - w).abs() < 2e-3),
                     "{at}: {b:?}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn bilinear_upsampling_interpolates_between_texel_centres() {
+        let gpu = gpu();
+        let mut pass = ResamplePass::new(&gpu.device);
+        let gradient = |[x, y]: [u32; 2]| 0.3 + 0.01 * x as f32 + 0.005 * y as f32;
+        for resolution in [Resolution::Half, Resolution::Quarter] {
+            let scale = resolution.scale();
+            let working = resolution.working_size(SIZE);
+            let point = |c: u32, side: u32| (c * scale + scale / 2 - 1).min(side - 1);
+            let texel_region = |[x, y]: [u32; 2]| region(point(x, SIZE[0]), point(y, SIZE[1]));
+            for mode in [Upsample::BilateralBilinear, Upsample::NearestDepth] {
+                let s = settings(resolution, Downsample::Point, mode);
+                let (ao, _) = upsample(&gpu, &mut pass, &s, |_, texel| gradient(texel));
+                let mut checked = 0;
+                for (i, &a) in ao.iter().enumerate() {
+                    let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
+                    // The pixel's centre in texel coordinates, between four texel centres
+                    // (clamped to the image, as the shader's sampler clamps).
+                    let q = [x, y].map(|c| (c as f32 + 0.5) / scale as f32 - 0.5);
+                    let corner = q.map(f32::floor);
+                    let f = [q[0] - corner[0], q[1] - corner[1]];
+                    let texel = |dx: f32, dy: f32| {
+                        [(corner[0] + dx, working[0]), (corner[1] + dy, working[1])]
+                            .map(|(c, n)| c.clamp(0.0, (n - 1) as f32) as u32)
+                    };
+                    let texels = [
+                        texel(0.0, 0.0),
+                        texel(1.0, 0.0),
+                        texel(0.0, 1.0),
+                        texel(1.0, 1.0),
+                    ];
+                    let pixel_region = region(x, y);
+                    if matches!(pixel_region, Region::Sky | Region::Lost)
+                        || texels.iter().any(|&t| texel_region(t) != pixel_region)
+                    {
+                        continue;
+                    }
+                    let weights = [
+                        (1.0 - f[0]) * (1.0 - f[1]),
+                        f[0] * (1.0 - f[1]),
+                        (1.0 - f[0]) * f[1],
+                        f[0] * f[1],
+                    ];
+                    let want: f32 = texels
+                        .iter()
+                        .zip(weights)
+                        .map(|(&t, w)| w * gradient(t))
+                        .sum();
+                    assert!(
+                        (a - want).abs() < 1e-5,
+                        "{} {}: pixel ({x}, {y}) {a} against {want}",
+                        resolution.name(),
+                        mode.name()
+                    );
+                    checked += 1;
+                }
+                assert!(checked > ao.len() / 2, "{checked} pixels checked");
             }
         }
     }
