@@ -223,6 +223,11 @@ struct Run {
     args: BenchArgs,
     settings: AoSettings,
     pipeline: AoPipeline,
+    /// Where the ratios come from the wall time and `pipeline` is timed: the same
+    /// configuration without timestamps, whose frames give the encode and wall times. Writing
+    /// timestamps costs lavapipe about 0.1 ms a pass (it waits for the pass to finish), which
+    /// would count against configurations with more passes.
+    untimed: Option<AoPipeline>,
     /// Per timed frame: each pass's GPU time (with timestamps).
     pass_times: Vec<Vec<PassTime>>,
     /// Per timed frame: milliseconds in [`AoPipeline::encode`].
@@ -239,7 +244,8 @@ struct View {
 }
 
 impl Run {
-    /// Encodes, submits and waits for one frame; records its times when `record`.
+    /// Encodes, submits and waits for one frame (one on each pipeline); records its times
+    /// when `record`.
     fn frame(
         &mut self,
         gpu: &GpuContext,
@@ -247,34 +253,16 @@ impl Run {
         frame_index: u32,
         record: bool,
     ) -> Result<()> {
-        let (device, queue) = (&gpu.device, &gpu.queue);
         let gbuffer = &view.gbuffers[&self.settings.normals.encoding];
-        let mut encoder = device.create_command_encoder(&Default::default());
-        let start = Instant::now();
-        self.pipeline.encode(
-            device,
-            queue,
-            &mut encoder,
-            &AoInputs {
-                normals: Some(&gbuffer.normals),
-                view_from_world: view.view_from_world,
-                frame_index,
-                motion_vectors: Some(&gbuffer.motion),
-                ..AoInputs::new(&gbuffer.depth, view.projection)
-            },
-        )?;
-        let encode_ms = start.elapsed().as_secs_f64() * 1e3;
-        let commands = encoder.finish();
-        let start = Instant::now();
-        queue.submit([commands]);
-        device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
-        let wall_ms = start.elapsed().as_secs_f64() * 1e3;
+        let (mut encode_ms, mut wall_ms) =
+            submit_frame(&mut self.pipeline, gpu, view, gbuffer, frame_index)?;
+        if let Some(untimed) = &mut self.untimed {
+            (encode_ms, wall_ms) = submit_frame(untimed, gpu, view, gbuffer, frame_index)?;
+        }
         if record {
             self.encode_ms.push(encode_ms);
             self.wall_ms.push(wall_ms);
-            if let Some(times) = self.pipeline.last_pass_times(device) {
+            if let Some(times) = self.pipeline.last_pass_times(&gpu.device) {
                 self.pass_times.push(times?);
             }
         }
@@ -427,16 +415,24 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         .poll(wgpu::PollType::wait_indefinitely())
         .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
 
+    let software = gpu.adapter_kind() == AdapterKind::Software;
     let mut runs = Vec::new();
     let mut timed = true;
     for ((label, config), settings) in configurations.into_iter().zip(all_settings) {
         let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings)?;
-        timed &= pipeline.enable_timing(&gpu.device, &gpu.queue);
+        let has_timestamps = pipeline.enable_timing(&gpu.device, &gpu.queue);
+        timed &= has_timestamps;
+        let untimed = if software && has_timestamps {
+            Some(AoPipeline::new(&gpu.device, &gpu.queue, &settings)?)
+        } else {
+            None
+        };
         runs.push(Run {
             label,
             args: config,
             settings,
             pipeline,
+            untimed,
             pass_times: Vec::new(),
             encode_ms: Vec::new(),
             wall_ms: Vec::new(),
@@ -449,13 +445,13 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             gpu.describe()
         );
     }
-    let software = gpu.adapter_kind() == AdapterKind::Software;
     if software {
         eprintln!(
             "note: software adapter: absolute times say nothing about a GPU, and its \
              timestamps need not bracket the compute work (llvmpipe's do not: its GPU times \
              gather in the last pass and fall far below the wall time); compare wall times, \
-             as --compare's ratios do here"
+             as --compare's ratios do here, taken from a second run of each frame without \
+             timestamps"
         );
     }
     let basis = if timed && !software {
@@ -499,6 +495,40 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Encodes, submits and waits for one frame of `pipeline` on `gbuffer`: the milliseconds in
+/// [`AoPipeline::encode`] and from submit until the device was idle.
+fn submit_frame(
+    pipeline: &mut AoPipeline,
+    gpu: &GpuContext,
+    view: &View,
+    gbuffer: &GBuffer,
+    frame_index: u32,
+) -> Result<(f64, f64)> {
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let mut encoder = device.create_command_encoder(&Default::default());
+    let start = Instant::now();
+    pipeline.encode(
+        device,
+        queue,
+        &mut encoder,
+        &AoInputs {
+            normals: Some(&gbuffer.normals),
+            view_from_world: view.view_from_world,
+            frame_index,
+            motion_vectors: Some(&gbuffer.motion),
+            ..AoInputs::new(&gbuffer.depth, view.projection)
+        },
+    )?;
+    let encode_ms = start.elapsed().as_secs_f64() * 1e3;
+    let commands = encoder.finish();
+    let start = Instant::now();
+    queue.submit([commands]);
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
+    Ok((encode_ms, start.elapsed().as_secs_f64() * 1e3))
 }
 
 /// `name  median  p10  p90` rows.
