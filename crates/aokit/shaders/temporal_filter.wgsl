@@ -81,13 +81,14 @@ fn history_at(q: vec2<f32>, expected: f32) -> vec2<f32> {
 // loads a pixel, docs/performance.md). The sampler clamps, so texels past the image's edge
 // repeat it as clamped loads would.
 fn neighbourhood(texture: texture_2d<f32>, pixel: vec2<u32>) -> array<f32, 9> {
-    let corner = vec2<f32>(pixel);
+    let corner = vec2<f32>(pixel) * view.inv_size;
+    let one = view.inv_size;
     // Gather order: x = (left, bottom), y = (right, bottom), z = (right, top), w = (left, top),
     // of the 2x2 texels whose shared corner the coordinate names.
-    let top_left = textureGather(0, texture, point_clamp, corner * view.inv_size);
-    let top_right = textureGather(0, texture, point_clamp, (corner + vec2<f32>(1.0, 0.0)) * view.inv_size);
-    let bottom_left = textureGather(0, texture, point_clamp, (corner + vec2<f32>(0.0, 1.0)) * view.inv_size);
-    let bottom_right = textureGather(0, texture, point_clamp, (corner + 1.0) * view.inv_size);
+    let top_left = textureGather(0, texture, point_clamp, corner);
+    let top_right = textureGather(0, texture, point_clamp, corner + vec2<f32>(one.x, 0.0));
+    let bottom_left = textureGather(0, texture, point_clamp, corner + vec2<f32>(0.0, one.y));
+    let bottom_right = textureGather(0, texture, point_clamp, corner + one);
     return array<f32, 9>(
         top_left.w, top_left.z, top_right.z,
         top_left.x, top_left.y, top_right.y,

@@ -127,8 +127,9 @@ fn upsample_pixel(pixel: vec2<u32>, texels: Texels) {
 // Fetching the texels once per block rather than per pixel is a quarter (a sixteenth at a
 // scale of 4) of the gathers. On lavapipe at 320x180 that took the pass from 0.64 to 0.53 ms
 // (perf samples of a half-resolution HBAO frame); the rest is each pixel's depth read and
-// stores (docs/performance.md, "Half and quarter resolution"). Blocks of the first row and column reach one
-// texel before the image, clamped to its edge, as the last ones reach past it.
+// stores (docs/performance.md, "Half and quarter resolution"). Blocks of the first row and
+// column reach one texel before the image, clamped to its edge, as the last ones reach past
+// it.
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let first = vec2<i32>(id.xy * SCALE) - i32(SCALE / 2u);
@@ -138,10 +139,10 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     var texels: Texels;
     texels.corner = vec2<f32>(id.xy) - 1.0;
     // Gathered at the texels' shared corner, two fetches where loads took eight (on an H100 the
-    // pass took 0.60 to 0.68 of its time with loads, with identical output). Gather order is (left, bottom), (right, bottom),
-    // (right, top), (left, top), "top" the smaller row, and .wzxy puts them in Texels' order.
-    // The corner lies half a texel from any rounding boundary, so the footprint is exactly the
-    // texels it names.
+    // pass took 0.60 to 0.68 of its time with loads, with identical output). Gather order is
+    // (left, bottom), (right, bottom), (right, top), (left, top), "top" the smaller row, and
+    // .wzxy puts them in Texels' order. The corner lies half a texel from any rounding
+    // boundary, so the footprint is exactly the texels it names.
     let uv = vec2<f32>(id.xy) / vec2<f32>(textureDimensions(depth_working));
     texels.depths = textureGather(0, depth_working, point_clamp, uv).wzxy;
     texels.aos = textureGather(0, ao_in, point_clamp, uv).wzxy;
