@@ -246,8 +246,9 @@ impl ResamplePass {
         let (bent_in, bent_out) =
             bent_normals.unwrap_or((&self.bent_in_placeholder, &self.bent_out_placeholder));
         let key = self.current.expect("prepare comes first").1;
+        let (_, _, scale, _, _) = key;
         let size = ctx.size;
-        ctx.size = upsample_blocks(size, key.2);
+        ctx.size = upsample_blocks(size, scale);
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
             &self.upsamples[&key],
