@@ -415,6 +415,12 @@ mod tests {
         )
     }
 
+    /// The point rule along one axis of `side` pixels: working texel `c` takes the top-left
+    /// pixel of its block's central 2x2, clamped to the image.
+    fn point_pixel(c: u32, scale: u32, side: u32) -> u32 {
+        (c * scale + scale / 2 - 1).min(side - 1)
+    }
+
     /// The pixel the downsample should take for working texel `(x, y)`, by the definitions in
     /// docs/denoise.md: pixels of the block (clamped to the image) in row order, the first of
     /// equal depths winning.
@@ -437,7 +443,9 @@ mod tests {
                 .reduce(|a, b| if distance(&b) > distance(&a) { b } else { a })
         };
         match mode {
-            Downsample::Point => clamp(x * scale + scale / 2 - 1, y * scale + scale / 2 - 1),
+            Downsample::Point => {
+                point_pixel(x, scale, SIZE[0]) + point_pixel(y, scale, SIZE[1]) * SIZE[0]
+            }
             Downsample::Min => nearest().unwrap(),
             Downsample::Max => farthest().unwrap(),
             Downsample::Checkerboard if (x + y).is_multiple_of(2) => nearest().unwrap(),
@@ -536,12 +544,11 @@ mod tests {
                 _ => pack_oct32(Vec3::Z),
             })
             .collect();
-        let point = |c: u32, side: u32| (c * scale + scale / 2 - 1).min(side - 1);
         let working_depth: Vec<f32> = (0..working[0] * working[1])
             .map(|i| {
                 step_depth(
-                    point(i % working[0], SIZE[0]),
-                    point(i / working[0], SIZE[1]),
+                    point_pixel(i % working[0], scale, SIZE[0]),
+                    point_pixel(i / working[0], scale, SIZE[1]),
                 )
             })
             .collect();
@@ -680,8 +687,12 @@ mod tests {
         for resolution in [Resolution::Half, Resolution::Quarter] {
             let scale = resolution.scale();
             let working = resolution.working_size(SIZE);
-            let point = |c: u32, side: u32| (c * scale + scale / 2 - 1).min(side - 1);
-            let texel_region = |[x, y]: [u32; 2]| region(point(x, SIZE[0]), point(y, SIZE[1]));
+            let texel_region = |[x, y]: [u32; 2]| {
+                region(
+                    point_pixel(x, scale, SIZE[0]),
+                    point_pixel(y, scale, SIZE[1]),
+                )
+            };
             for mode in [Upsample::BilateralBilinear, Upsample::NearestDepth] {
                 let s = settings(resolution, Downsample::Point, mode);
                 let (ao, _) = upsample(&gpu, &mut pass, &s, |_, texel| gradient(texel));
