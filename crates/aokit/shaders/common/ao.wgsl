@@ -176,6 +176,8 @@ fn footprint(q: vec2<f32>, level: u32) -> Footprint {
         let uv = (origin + corner) / vec2<f32>(textureDimensions(depth_mips));
         return Footprint(textureGather(0, depth_mips, point_clamp, uv), corner, scale);
     }
+    // The same corner at a scale of 1, written out: the scaled form for both cost the kernels
+    // 1 to 5% on lavapipe with the chain off.
     let corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
     return Footprint(textureGather(0, linear_depth, point_clamp, corner * view.inv_size), corner, 1.0);
 }
