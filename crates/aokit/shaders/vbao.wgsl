@@ -11,6 +11,14 @@
 
 const SECTORS: u32 = 32u;
 
+// Bit of `ao.flags` for `vbao.back_faces` (uniforms.rs, `flags::BACK_FACES`).
+const FLAG_BACK_FACES: u32 = 8u;
+
+// With FLAG_BACK_FACES, each working texel's measured occluder thickness (back_faces.wgsl):
+// MAX_DEPTH where the occluder is solid, 0 where nothing was measured. A 1x1 stand-in
+// otherwise, never read.
+@group(0) @binding(9) var back_thickness: texture_2d<f32>;
+
 // Antiderivative of cos(t - n) |sin t| that is 0 at t = 0: arc_integral signed by the side.
 fn arc_measure(t: f32, n: f32) -> f32 {
     return select(-1.0, 1.0, t >= 0.0) * arc_integral(t, n);
@@ -57,19 +65,27 @@ fn side_bits(s: Surface, slice: Slice, side: f32, jitter: f32, lo: f32) -> u32 {
     // The hemisphere's edge on this side, and the shaded point as the chain's first link.
     var previous_angle = slice.angle_n + side * HALF_PI;
     var previous_depth = s.depth;
+    let measured = (ao.flags & FLAG_BACK_FACES) != 0u;
     for (var step = 0u; step < ao.steps; step++) {
-        let sample = side_sample(s, slice, side, step_distance(step, ao.steps, jitter, s.radius_px));
+        let distance_px = step_distance(step, ao.steps, jitter, s.radius_px);
+        let sample = side_sample(s, slice, side, distance_px);
         if sample.w == 0.0 || dot(sample.xyz, sample.xyz) >= s.radius * s.radius {
             previous_depth = -1.0;
             continue;
         }
         let front = s.p + sample.xyz;
         let front_depth = -front.z;
-        let thickness = ao.thickness * s.scale + ao.thickness_growth * front_depth;
-        // The back face lies further along the ray from the eye through the front face.
+        var thickness = ao.thickness * s.scale + ao.thickness_growth * front_depth;
+        if measured {
+            let texel = vec2<u32>(side_position(s, slice, side, distance_px));
+            thickness = max(thickness, textureLoad(back_thickness, texel, 0).r);
+        }
+        // The back face lies further along the ray from the eye through the front face; a
+        // solid occluder's lies at the end of that ray, seen in the ray's own direction.
         let back = select(front * ((front_depth + thickness) / front_depth),
                           front - vec3<f32>(0.0, 0.0, thickness), view.orthographic > 0.5);
-        let to_back = back - s.p;
+        let ray = select(normalize(front), vec3<f32>(0.0, 0.0, -1.0), view.orthographic > 0.5);
+        let to_back = select(back - s.p, ray, thickness == MAX_DEPTH);
         let front_angle = side * fast_acos(dot(sample.xyz, s.v) / length(sample.xyz));
         let back_angle = side * fast_acos(dot(to_back, s.v) / length(to_back));
         bits |= span_bits(front_angle, back_angle, lo);

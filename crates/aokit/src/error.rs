@@ -39,6 +39,13 @@ pub enum AoError {
         "depth_mips = fp16 needs R16Float storage textures (Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES), which this device does not have; use depth_mips = fp32"
     )]
     Fp16DepthMipsUnsupported,
+    /// [`VbaoSettings::back_faces`](crate::VbaoSettings::back_faces) is on, but the inputs
+    /// have no [`AoInputs::back_depth`](crate::AoInputs::back_depth).
+    #[error(
+        "vbao.back_faces = true measures occluders from the back faces' depth, but the inputs \
+         have none (AoInputs::back_depth)"
+    )]
+    MissingBackDepth,
     /// The resolution exceeds the device's texture limit.
     #[error("resolution {}x{} exceeds this device's texture limit of {max}", size[0], size[1])]
     TooLarge {

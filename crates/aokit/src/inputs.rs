@@ -25,6 +25,7 @@ use crate::settings::NormalEncoding;
 ///     motion_vectors: Some(motion),
 ///     reset_history: camera_cut,
 ///     mask: None,
+///     back_depth: None,
 /// };
 /// let outputs = pipeline.encode(device, queue, encoder, &inputs)?;
 /// // ... the second player's lighting pass binds `outputs.ao_view` ...
@@ -76,6 +77,22 @@ pub struct AoInputs<'a> {
     ///
     /// [`AoOutputs::ao`]: crate::AoOutputs::ao
     pub mask: Option<AoMask<'a>>,
+    /// The depth of the nearest back faces: the scene's depth drawn a second time, with the
+    /// same camera and projection but front faces culled, in any format [`AoInputs::depth`]
+    /// may have and of its size. With
+    /// [`VbaoSettings::back_faces`](crate::VbaoSettings::back_faces) each occluder is as thick
+    /// as the distance from its front face to the back face behind it; nothing else reads it.
+    ///
+    /// ```no_run
+    /// # fn f(depth: &wgpu::Texture, back_depth: &wgpu::Texture, projection: aokit::Projection) {
+    /// // The renderer drew `back_depth` with `cull_mode: Some(wgpu::Face::Front)`.
+    /// let inputs = aokit::AoInputs {
+    ///     back_depth: Some(back_depth),
+    ///     ..aokit::AoInputs::new(depth, projection)
+    /// };
+    /// # }
+    /// ```
+    pub back_depth: Option<&'a wgpu::Texture>,
 }
 
 /// Where [`AoInputs::mask`] takes the pixels that receive no AO from. Multisampled masks are
@@ -170,6 +187,7 @@ impl<'a> AoInputs<'a> {
             motion_vectors: None,
             reset_history: false,
             mask: None,
+            back_depth: None,
         }
     }
 }
@@ -195,9 +213,9 @@ impl<'a> AoInputs<'a> {
 /// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum InputError {
-    /// The depth texture is neither a depth format nor `R32Float`.
-    #[error("depth texture format {0:?} is neither a depth format nor R32Float linear depth")]
-    DepthFormat(wgpu::TextureFormat),
+    /// The depth (or back-face depth) texture is neither a depth format nor `R32Float`.
+    #[error("{0} texture format {1:?} is neither a depth format nor R32Float linear depth")]
+    DepthFormat(&'static str, wgpu::TextureFormat),
     /// The normals texture's format is not the one its encoding is stored in.
     #[error(
         "normals texture format {format:?} cannot hold the `{}` normal encoding the settings \
@@ -259,11 +277,12 @@ impl AoInputs<'_> {
     /// ```
     pub fn validate(&self, encoding: NormalEncoding) -> Result<[u32; 2], InputError> {
         let depth = self.depth;
-        if !(depth.format().has_depth_aspect() || depth.format() == wgpu::TextureFormat::R32Float) {
-            return Err(InputError::DepthFormat(depth.format()));
-        }
-        check_bindable("depth", depth)?;
+        check_depth("depth", depth)?;
         let size = [depth.width(), depth.height()];
+        if let Some(back) = self.back_depth {
+            check_depth("back-face depth", back)?;
+            same_size("back-face depth", size, back)?;
+        }
         if let Some(normals) = self.normals {
             if normals.format() != encoding.texture_format() {
                 return Err(InputError::NormalsFormat {
@@ -297,6 +316,15 @@ impl AoInputs<'_> {
         }
         Ok(size)
     }
+}
+
+/// A depth texture or `R32Float` linear depth the passes can bind.
+fn check_depth(name: &'static str, texture: &wgpu::Texture) -> Result<(), InputError> {
+    let format = texture.format();
+    if !(format.has_depth_aspect() || format == wgpu::TextureFormat::R32Float) {
+        return Err(InputError::DepthFormat(name, format));
+    }
+    check_bindable(name, texture)
 }
 
 fn same_size(

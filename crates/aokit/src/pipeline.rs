@@ -6,6 +6,7 @@ use crate::error::AoError;
 use crate::gpu::{create_texture_2d, create_uniform_buffer};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
+use crate::passes::back_faces::{BackFacesPass, THICKNESS_FORMAT};
 use crate::passes::decode_normals::DecodeNormalsPass;
 use crate::passes::depth_mips::{DepthMipsPass, DepthReduction, atlas_format};
 use crate::passes::guided_filter::GuidedFilterPass;
@@ -48,6 +49,8 @@ struct Layout {
     depth_mips: bool,
     /// The format of the [`AoSettings::depth_mips`] atlas, when the kernel reads one.
     depth_mip_atlas: Option<wgpu::TextureFormat>,
+    /// Whether VBAO measures its occluders from the back faces.
+    back_faces: bool,
 }
 
 /// The intermediate textures.
@@ -71,6 +74,8 @@ struct Targets {
     depth_mips: Option<Target>,
     /// The [`AoSettings::depth_mips`] chain, for a kernel that reads far samples from it.
     depth_mip_atlas: Option<Target>,
+    /// The occluders' thickness from the back faces, at working size.
+    back_thickness: Option<Target>,
 }
 
 /// The downsample's and the upsample's textures.
@@ -136,6 +141,9 @@ impl Targets {
                 let view = texture.create_view(&Default::default());
                 (texture, view)
             }),
+            back_thickness: layout
+                .back_faces
+                .then(|| make("aokit back-face thickness", working, THICKNESS_FORMAT)),
         }
     }
 }
@@ -358,6 +366,7 @@ pub struct AoPipeline {
     view_uniforms: wgpu::Buffer,
     working_view_uniforms: wgpu::Buffer,
     linear_depth: LinearDepthPass,
+    back_faces: BackFacesPass,
     mask: MaskPass,
     normals_from_depth: NormalsFromDepthPass,
     decode_normals: DecodeNormalsPass,
@@ -410,6 +419,7 @@ impl AoPipeline {
                 "aokit working view",
             ),
             linear_depth: LinearDepthPass::default(),
+            back_faces: BackFacesPass::default(),
             mask: MaskPass::default(),
             normals_from_depth: NormalsFromDepthPass::new(device),
             decode_normals: DecodeNormalsPass::new(device),
@@ -574,6 +584,10 @@ impl AoPipeline {
         if size[0] > max || size[1] > max {
             return Err(AoError::TooLarge { size, max });
         }
+        let back_faces = settings.method == Method::Vbao && settings.vbao.back_faces;
+        if back_faces && inputs.back_depth.is_none() {
+            return Err(AoError::MissingBackDepth);
+        }
         let scale = settings.resolution.scale();
         let working = settings.resolution.working_size(size);
         // Below full resolution the filters run before the upsample, at working resolution,
@@ -594,6 +608,7 @@ impl AoPipeline {
             mask: inputs.mask.is_some(),
             depth_mips: settings.method.reads_depth_mips(),
             depth_mip_atlas: atlas_format(&settings),
+            back_faces,
         };
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
             self.targets = Some(Targets::new(device, layout));
@@ -715,6 +730,12 @@ impl AoPipeline {
             }
             None => (&targets.linear_depth.1, normals_view),
         };
+        let back_thickness = targets.back_thickness.as_ref().map(|(_, view)| {
+            let back_depth = inputs.back_depth.expect("checked with the settings");
+            self.back_faces
+                .encode(&mut ctx, scale, back_depth, working_depth, view);
+            view
+        });
         let working_texture = match &targets.working {
             Some(working) => &working.linear_depth.0,
             None => &targets.linear_depth.0,
@@ -774,6 +795,7 @@ impl AoPipeline {
                 &targets.ao.1,
                 targets.bent_normals.as_ref().map(|(_, view)| view),
                 targets.depth_mip_atlas.as_ref().map(|(_, view)| view),
+                back_thickness,
             );
         }
 

@@ -88,3 +88,15 @@ pub(crate) fn preset_values(method: Method, preset: Preset) -> Tuned {
         (Method::Vbao, Preset::Ultra) => tuned([3, 9], 1.5, 0.0, 0.2, 1.0, 1.0),
     }
 }
+
+/// `vbao`'s values at `preset` with [`VbaoSettings::back_faces`](crate::VbaoSettings::back_faces)
+/// on, tuned as the others are: its knob is then the least thickness, for occluders whose back
+/// faces lie closer than that or were not seen.
+pub(crate) fn vbao_back_faces_values(preset: Preset) -> Tuned {
+    match preset {
+        Preset::Low => tuned([2, 1], 1.0, 0.0, 0.2, 1.4, 1.2),
+        Preset::Medium => tuned([2, 2], 1.25, 0.0, 0.15, 1.25, 1.2),
+        Preset::High => tuned([3, 3], 1.25, 0.0, 0.1, 1.25, 1.1),
+        Preset::Ultra => tuned([3, 9], 1.75, 0.0, 0.05, 1.0, 1.1),
+    }
+}

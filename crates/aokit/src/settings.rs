@@ -1109,6 +1109,14 @@ pub struct VbaoSettings {
     /// depth is less certain and whose backs are further from their fronts in screen space, are
     /// thicker: `thickness * radius + thickness_growth * depth`. 0 keeps it constant.
     pub thickness_growth: f32,
+    /// Measure each occluder's thickness from [`AoInputs::back_depth`](crate::AoInputs::back_depth),
+    /// the depth of the nearest back faces, instead of assuming it: an occluder is then as
+    /// thick as the distance from its front face to the back face behind it, or solid where
+    /// no back face lies behind it, and never thinner than `thickness` says. Solids (boxes,
+    /// spheres, steps) then stop letting light through behind them, while poles and fences
+    /// keep their gaps. Needs the renderer to draw its depth a second time with front faces
+    /// culled; the pipeline refuses frames without it.
+    pub back_faces: bool,
 }
 
 impl Default for VbaoSettings {
@@ -1142,6 +1150,7 @@ impl VbaoSettings {
             // thinner and thicker occluders look like.
             thickness: tuned.knob,
             thickness_growth: 0.0,
+            back_faces: false,
         }
     }
 }
@@ -1360,6 +1369,49 @@ impl AoSettings {
             // The lowest offset at which no measured configuration's error rises by more than
             // 0.001 (docs/depth-mips.md).
             depth_mip_offset: 3.0,
+        }
+    }
+
+    /// [`AoSettings::preset`], for a renderer that hands in
+    /// [`AoInputs::back_depth`](crate::AoInputs::back_depth): `vbao` then measures its
+    /// occluders ([`VbaoSettings::back_faces`] on) with the values tuned for that, whose
+    /// `vbao.thickness` is only the least an occluder gets and so lies well below the
+    /// assumed thickness of [`AoSettings::preset`] (docs/tuning.md). The other methods do not
+    /// read back faces and get [`AoSettings::preset`].
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method, Preset};
+    /// let measured = AoSettings::preset_with_back_faces(Method::Vbao, Preset::High);
+    /// assert!(measured.vbao.back_faces);
+    /// // Solids take their thickness from the back faces: the floor is for poles and fences.
+    /// let assumed = AoSettings::preset(Method::Vbao, Preset::High);
+    /// assert!(measured.vbao.thickness < assumed.vbao.thickness);
+    /// assert_eq!(measured.samples_per_pixel(), assumed.samples_per_pixel());
+    /// assert_eq!(
+    ///     AoSettings::preset_with_back_faces(Method::Gtao, Preset::High),
+    ///     AoSettings::preset(Method::Gtao, Preset::High)
+    /// );
+    /// ```
+    pub fn preset_with_back_faces(method: Method, preset: Preset) -> Self {
+        let settings = Self::preset(method, preset);
+        if method != Method::Vbao {
+            return settings;
+        }
+        let tuned = presets::vbao_back_faces_values(preset);
+        let [slice_count, steps_per_side] = tuned.split;
+        Self {
+            radius_multiplier: tuned.radius_multiplier,
+            falloff: tuned.falloff,
+            power: tuned.power,
+            step_power: tuned.step_power,
+            vbao: VbaoSettings {
+                slice_count,
+                steps_per_side,
+                thickness: tuned.knob,
+                back_faces: true,
+                ..settings.vbao
+            },
+            ..settings
         }
     }
 

@@ -98,6 +98,9 @@ const DEPTH_NDC: &str = "
 @group(0) @binding(1) var depth_ndc: texture_depth_2d;
 fn load_ndc(pixel: vec2<u32>) -> f32 {
     return textureLoad(depth_ndc, pixel, 0);
+}
+fn input_size() -> vec2<u32> {
+    return textureDimensions(depth_ndc);
 }";
 
 /// As [`DEPTH_NDC`], multisampled: sample 0 is read.
@@ -105,6 +108,9 @@ const DEPTH_NDC_MULTISAMPLED: &str = "
 @group(0) @binding(1) var depth_ndc: texture_depth_multisampled_2d;
 fn load_ndc(pixel: vec2<u32>) -> f32 {
     return textureLoad(depth_ndc, pixel, 0);
+}
+fn input_size() -> vec2<u32> {
+    return textureDimensions(depth_ndc);
 }";
 
 /// Binding 1 of a program reading linear depth, and of `apply_mask` with a mask texture: the
@@ -113,6 +119,9 @@ const FLOAT_INPUT: &str = "
 @group(0) @binding(1) var input_texture: texture_2d<f32>;
 fn load_input(pixel: vec2<u32>) -> f32 {
     return textureLoad(input_texture, pixel, 0).r;
+}
+fn input_size() -> vec2<u32> {
+    return textureDimensions(input_texture);
 }";
 
 /// As [`FLOAT_INPUT`], multisampled: sample 0 is read.
@@ -120,6 +129,9 @@ const FLOAT_INPUT_MULTISAMPLED: &str = "
 @group(0) @binding(1) var input_texture: texture_multisampled_2d<f32>;
 fn load_input(pixel: vec2<u32>) -> f32 {
     return textureLoad(input_texture, pixel, 0).r;
+}
+fn input_size() -> vec2<u32> {
+    return textureDimensions(input_texture);
 }";
 
 /// `input_linear_depth` over [`DEPTH_NDC`] or [`DEPTH_NDC_MULTISAMPLED`].
@@ -159,6 +171,14 @@ pub const LINEAR_DEPTH: [ShaderSource; 4] = per_depth_input!(
     "linear_depth",
     [VIEW],
     [include_str!("../shaders/linear_depth.wgsl")]
+);
+
+/// Each working texel's occluder thickness from the back faces' depth, for
+/// `vbao.back_faces`, per kind of depth input.
+pub const BACK_FACES: [ShaderSource; 4] = per_depth_input!(
+    "back_faces",
+    [VIEW],
+    [include_str!("../shaders/back_faces.wgsl")]
 );
 
 /// Normals reconstructed from linear depth.
@@ -500,6 +520,10 @@ pub const ALL: &[ShaderSource] = &[
     LINEAR_DEPTH[1],
     LINEAR_DEPTH[2],
     LINEAR_DEPTH[3],
+    BACK_FACES[0],
+    BACK_FACES[1],
+    BACK_FACES[2],
+    BACK_FACES[3],
     NORMALS_FROM_DEPTH,
     DECODE_NORMALS_UINT,
     DECODE_NORMALS_FLOAT,

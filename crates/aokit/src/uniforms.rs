@@ -101,6 +101,8 @@ pub(crate) mod flags {
     pub const BENT_NORMALS: u32 = 2;
     /// `ue4-ssao`: the normal version rather than the depth-only one.
     pub const UE4_SSAO_NORMALS: u32 = 4;
+    /// `vbao`: occluder thickness from the back faces' depth.
+    pub const BACK_FACES: u32 = 8;
 }
 
 /// Shortest fade the kernels use, as a fraction of the radius: `falloff = 0` (a hard cut) becomes
@@ -168,6 +170,9 @@ impl AoUniforms {
         }
         if settings.ue4_ssao.use_normals {
             bits |= flags::UE4_SSAO_NORMALS;
+        }
+        if settings.vbao.back_faces {
+            bits |= flags::BACK_FACES;
         }
         Self {
             radius,
@@ -403,7 +408,7 @@ mod tests {
     }
 
     #[test]
-    fn ao_flags_match_wgsl_and_ue4_ssao_sets_its_version() {
+    fn ao_flags_match_wgsl_and_ue4_ssao_and_vbao_set_theirs() {
         let module = shader::UE4_SSAO.validate().unwrap();
         for (name, bit) in [
             ("FLAG_NORMALIZE_SLICES", flags::NORMALIZE_SLICES),
@@ -421,6 +426,13 @@ mod tests {
             AoUniforms::new(&settings).flags & flags::UE4_SSAO_NORMALS,
             0
         );
+        let vbao = shader::VBAO.validate().unwrap();
+        assert_eq!(
+            shader::u32_constant(&vbao, "FLAG_BACK_FACES"),
+            Some(flags::BACK_FACES)
+        );
+        let measured = AoSettings::preset_with_back_faces(Method::Vbao, crate::Preset::High);
+        assert_ne!(AoUniforms::new(&measured).flags & flags::BACK_FACES, 0);
     }
 
     #[test]

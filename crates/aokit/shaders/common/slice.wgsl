@@ -85,11 +85,16 @@ fn step_distance(step: u32, steps: u32, jitter: f32, radius_px: f32) -> f32 {
     return 1.0 + pow(t, ao.step_power) * (radius_px - 1.0);
 }
 
+// Where on screen, in pixels, the step `distance_px` from the pixel on one side of a slice lies.
+fn side_position(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec2<f32> {
+    return s.center + side * slice.omega * distance_px;
+}
+
 // The sample of a step on one side of a slice (side = +1 towards +omega, -1 away): the offset
 // from the shaded point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen, no
 // surface, or slid past the pixel onto the other half of the slice).
 fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f32> {
-    let q = s.center + side * slice.omega * distance_px;
+    let q = side_position(s, slice, side, distance_px);
     if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
         return vec4<f32>(0.0);
     }

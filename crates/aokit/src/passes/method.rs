@@ -6,6 +6,7 @@
 
 use std::collections::HashMap;
 
+use super::back_faces::THICKNESS_FORMAT;
 use super::depth_mips::{atlas_format, atlas_holds_level_0};
 use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_uniform_buffer, stand_in_view};
@@ -60,6 +61,8 @@ pub struct MethodPass {
     noise_placeholder: wgpu::TextureView,
     /// Bound in place of the depth MIP atlas when the kernel reads none.
     depth_mips_placeholder: wgpu::TextureView,
+    /// Bound in place of the back faces' thickness when VBAO does not read it.
+    thickness_placeholder: wgpu::TextureView,
 }
 
 /// The bindings every AO kernel declares (`common/ao.wgsl`), 0 to 8.
@@ -75,6 +78,18 @@ pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 9] {
         bind::texture(7, wgpu::TextureSampleType::Float { filterable: false }),
         bind::texture(8, wgpu::TextureSampleType::Float { filterable: false }),
     ]
+}
+
+/// [`layout`] and what `method`'s kernel declares besides: VBAO's back-face thickness at 9.
+fn method_layout(method: Method) -> Vec<wgpu::BindGroupLayoutEntry> {
+    let mut entries = layout().to_vec();
+    if method == Method::Vbao {
+        entries.push(bind::texture(
+            9,
+            wgpu::TextureSampleType::Float { filterable: false },
+        ));
+    }
+    entries
 }
 
 impl MethodPass {
@@ -110,6 +125,11 @@ impl MethodPass {
                 LINEAR_DEPTH_FORMAT,
                 wgpu::TextureUsages::TEXTURE_BINDING,
             ),
+            thickness_placeholder: placeholder(
+                "aokit back-face thickness placeholder",
+                THICKNESS_FORMAT,
+                wgpu::TextureUsages::TEXTURE_BINDING,
+            ),
         };
         pass.set_settings(device, queue, settings);
         pass
@@ -134,7 +154,7 @@ impl MethodPass {
                     ComputeKernel::with_constants(
                         device,
                         &shader::method(settings.method),
-                        &layout(),
+                        &method_layout(settings.method),
                         &[("DEPTH_MIPS", f64::from(read as u32))],
                     )
                 });
@@ -158,7 +178,9 @@ impl MethodPass {
     /// [`AoSettings::bent_normals`] on for a method that has them, into `bent_normals`
     /// ([`BENT_NORMALS_FORMAT`]), which must then be given. With
     /// [`AoSettings::depth_mips`] on, far samples read `depth_mips`, the chain's atlas
-    /// (`DepthMipsPass::create_atlas`), which must then be given.
+    /// (`DepthMipsPass::create_atlas`), which must then be given. With
+    /// [`VbaoSettings::back_faces`](crate::VbaoSettings::back_faces) on, VBAO reads its
+    /// occluders' thickness from `thickness` (`BackFacesPass`), which must then be given.
     ///
     /// # Panics
     /// When no settings with `method` were given to [`MethodPass::new`] or
@@ -173,16 +195,22 @@ impl MethodPass {
         ao: &wgpu::TextureView,
         bent_normals: Option<&wgpu::TextureView>,
         depth_mips: Option<&wgpu::TextureView>,
+        thickness: Option<&wgpu::TextureView>,
     ) {
         let read = match depth_mips {
             Some(_) => self.depth_mips_read,
             None => DepthMipsRead::Off,
         };
         let kernel = &self.kernels[&(method, read)];
-        ctx.dispatch(
-            kernel,
-            &self.bindings(linear_depth, normals, ao, bent_normals, depth_mips),
-        );
+        let mut resources = self
+            .bindings(linear_depth, normals, ao, bent_normals, depth_mips)
+            .to_vec();
+        if method == Method::Vbao {
+            resources.push(wgpu::BindingResource::TextureView(
+                thickness.unwrap_or(&self.thickness_placeholder),
+            ));
+        }
+        ctx.dispatch(kernel, &resources);
     }
 
     /// Bindings 1 to 8 of [`layout`] for the current settings, with `ao`, `bent_normals` and

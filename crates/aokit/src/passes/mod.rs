@@ -3,6 +3,7 @@
 //! The pass structs are the pipeline's own; [`ComputeKernel`] and [`bind`] are public so that
 //! companion crates write their passes the same way.
 
+pub(crate) mod back_faces;
 pub(crate) mod decode_normals;
 pub(crate) mod depth_mips;
 pub(crate) mod guided_filter;
