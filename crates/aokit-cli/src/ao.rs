@@ -9,7 +9,7 @@ use aokit_scene::external;
 use clap::Args;
 
 use crate::export::create_dir;
-use crate::passes::{self, DepthKind};
+use crate::passes::{self, DepthKind, PassFiles};
 use crate::render::{ao_summary, open_gpu};
 use crate::settings_args::SettingsArgs;
 
@@ -21,6 +21,10 @@ pub struct AoArgs {
     /// Normal image: EXR, PFM or NPY (H x W x 3). Without it normals are reconstructed from depth.
     #[arg(long, value_name = "FILE")]
     pub normals: Option<PathBuf>,
+    /// Depth of the nearest back faces (the scene drawn with front faces culled), in the
+    /// format and kind of --depth, for `--set vbao.back_faces=true`.
+    #[arg(long, value_name = "FILE")]
+    pub back_depth: Option<PathBuf>,
     /// The camera, in the camera.json format `render --gbuffer` writes.
     #[arg(long, value_name = "camera.json")]
     pub camera: PathBuf,
@@ -44,9 +48,12 @@ fn parse_normal_space(s: &str) -> Result<NormalSpace, String> {
 
 pub fn run(args: &AoArgs) -> Result<()> {
     let loaded = passes::load(
-        &args.depth,
-        args.normals.as_deref(),
-        &args.camera,
+        &PassFiles {
+            depth: &args.depth,
+            normals: args.normals.as_deref(),
+            back_depth: args.back_depth.as_deref(),
+            camera: &args.camera,
+        },
         args.depth_kind,
         args.normal_space,
     )?;

@@ -518,6 +518,7 @@ fn submit_frame(
             view_from_world: view.view_from_world,
             frame_index,
             motion_vectors: Some(&gbuffer.motion),
+            back_depth: gbuffer.back_depth.as_ref(),
             ..AoInputs::new(&gbuffer.depth, view.projection)
         },
     )?;

@@ -21,7 +21,7 @@ use serde_json::json;
 use crate::cache;
 use crate::camera_args::CameraArgs;
 use crate::export::create_dir;
-use crate::passes::{self, DepthKind};
+use crate::passes::{self, DepthKind, PassFiles};
 use crate::reference::ReferenceInfo;
 use crate::render::{open_gpu, parse_size};
 use crate::sequence::{SequenceFrame, score_sequence};
@@ -37,7 +37,7 @@ pub struct CompareArgs {
     /// A view as SCENE or SCENE@CAMERA; repeat for several views in one report.
     #[arg(long, value_name = "SCENE[@CAMERA]", conflicts_with = "inputs")]
     pub view: Vec<String>,
-    /// Score `aokit ao` on the passes in DIR (depth.exr, optional normal.exr, camera.json)
+    /// Score `aokit ao` on the passes in DIR (depth.exr, optional normal.exr and back_depth.exr, camera.json)
     /// against DIR/reference.exr, with the radius from DIR/reference.json unless --radius is given.
     #[arg(long, value_name = "DIR")]
     pub inputs: Option<PathBuf>,
@@ -120,11 +120,9 @@ fn settings_for(
     preset: Preset,
     radius: f32,
 ) -> Result<AoSettings> {
-    let base = AoSettings {
-        radius,
-        ..AoSettings::preset(method, preset)
-    };
-    let settings = args.overrides.apply(&base, None)?;
+    let settings = args
+        .overrides
+        .apply_to_preset(method, preset, Some(radius), None)?;
     if settings.radius != radius {
         bail!("set the radius with --radius, so that the reference is traced with it too");
     }
@@ -309,11 +307,14 @@ fn score_inputs(
     methods: &[Method],
     dir: &Path,
 ) -> Result<Scored> {
-    let normals = dir.join("normal.exr");
+    let (normals, back_depth) = (dir.join("normal.exr"), dir.join("back_depth.exr"));
     let loaded = passes::load(
-        &dir.join("depth.exr"),
-        normals.is_file().then_some(normals.as_path()),
-        &dir.join("camera.json"),
+        &PassFiles {
+            depth: &dir.join("depth.exr"),
+            normals: normals.is_file().then_some(normals.as_path()),
+            back_depth: back_depth.is_file().then_some(back_depth.as_path()),
+            camera: &dir.join("camera.json"),
+        },
         DepthKind::Linear,
         NormalSpace::View,
     )?;

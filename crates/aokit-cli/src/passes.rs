@@ -1,4 +1,5 @@
-//! G-buffer passes read from files: depth, optional normals and camera.json.
+//! G-buffer passes read from files: depth, optional normals and back-face depth, and
+//! camera.json.
 
 use std::path::Path;
 
@@ -26,6 +27,8 @@ pub struct LoadedPasses {
     pub linear_depth: Vec<f32>,
     /// View-space normals, when a normal file was given.
     pub normals: Option<Vec<Vec3>>,
+    /// Linear view depth of the back faces, when a back-face depth file was given.
+    pub back_depth: Option<Vec<f32>>,
 }
 
 impl LoadedPasses {
@@ -34,6 +37,7 @@ impl LoadedPasses {
             size: self.size,
             linear_depth: &self.linear_depth,
             normals: self.normals.as_deref(),
+            back_depth: self.back_depth.as_deref(),
             projection: self.projection,
         }
     }
@@ -45,13 +49,25 @@ pub fn read_camera(path: &Path) -> Result<CameraFile> {
     serde_json::from_str(&text).map_err(|e| anyhow!("{} is not a camera.json: {e}", path.display()))
 }
 
+/// The files `aokit ao` reads: depth, optional normals and back-face depth, and camera.json.
+pub struct PassFiles<'a> {
+    pub depth: &'a Path,
+    pub normals: Option<&'a Path>,
+    pub back_depth: Option<&'a Path>,
+    pub camera: &'a Path,
+}
+
 pub fn load(
-    depth_path: &Path,
-    normals_path: Option<&Path>,
-    camera_path: &Path,
+    files: &PassFiles<'_>,
     depth_kind: DepthKind,
     normal_space: NormalSpace,
 ) -> Result<LoadedPasses> {
+    let PassFiles {
+        depth: depth_path,
+        normals: normals_path,
+        back_depth: back_depth_path,
+        camera: camera_path,
+    } = *files;
     let camera = read_camera(camera_path)?;
     let projection = camera
         .projection()
@@ -64,32 +80,36 @@ pub fn load(
         );
     }
     let size = [camera.width, camera.height];
-    let depth = read_depth(depth_path)?;
-    if [depth.width, depth.height] != size {
-        bail!(
-            "{} is {}x{} but {} describes {}x{}",
-            depth_path.display(),
-            depth.width,
-            depth.height,
-            camera_path.display(),
-            size[0],
-            size[1]
-        );
-    }
-    let linear_depth = match depth_kind {
-        DepthKind::Linear => depth.data,
-        DepthKind::Ndc => depth
-            .data
-            .iter()
-            .map(|&d| {
-                if d == projection.far_ndc_depth() {
-                    0.0
-                } else {
-                    projection.linear_depth(d)
-                }
-            })
-            .collect(),
+    let read_linear = |path: &Path| -> Result<Vec<f32>> {
+        let depth = read_depth(path)?;
+        if [depth.width, depth.height] != size {
+            bail!(
+                "{} is {}x{} but {} describes {}x{}",
+                path.display(),
+                depth.width,
+                depth.height,
+                camera_path.display(),
+                size[0],
+                size[1]
+            );
+        }
+        Ok(match depth_kind {
+            DepthKind::Linear => depth.data,
+            DepthKind::Ndc => depth
+                .data
+                .iter()
+                .map(|&d| {
+                    if d == projection.far_ndc_depth() {
+                        0.0
+                    } else {
+                        projection.linear_depth(d)
+                    }
+                })
+                .collect(),
+        })
     };
+    let linear_depth = read_linear(depth_path)?;
+    let back_depth = back_depth_path.map(read_linear).transpose()?;
     let normals = normals_path
         .map(|path| -> Result<Vec<Vec3>> {
             let image = read_normals(path)?;
@@ -121,5 +141,6 @@ pub fn load(
         projection,
         linear_depth,
         normals,
+        back_depth,
     })
 }

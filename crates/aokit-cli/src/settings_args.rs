@@ -38,15 +38,35 @@ impl SettingsArgs {
     pub fn resolve(&self, suggested_radius: Option<f32>) -> Result<AoSettings> {
         let method: Method = parse_or_default(self.method.as_deref())?;
         let preset: Preset = parse_or_default(self.preset.as_deref())?;
-        let mut settings = AoSettings::preset(method, preset);
-        if let Some(radius) = suggested_radius {
-            settings.radius = radius;
-        }
-        self.overrides.apply(&settings, self.radius)
+        self.overrides
+            .apply_to_preset(method, preset, suggested_radius, self.radius)
     }
 }
 
 impl OverrideArgs {
+    /// `method` at `preset` with `base_radius` when given, then [`OverrideArgs::apply`] with
+    /// `radius`. Where the overrides turn `vbao.back_faces` on, they are laid over VBAO's
+    /// presets tuned with back faces instead (`AoSettings::preset_with_back_faces`), so that
+    /// the preset still names tuned values.
+    pub fn apply_to_preset(
+        &self,
+        method: Method,
+        preset: Preset,
+        base_radius: Option<f32>,
+        radius: Option<f32>,
+    ) -> Result<AoSettings> {
+        let with_radius = |settings: AoSettings| AoSettings {
+            radius: base_radius.unwrap_or(settings.radius),
+            ..settings
+        };
+        let settings = self.apply(&with_radius(AoSettings::preset(method, preset)), radius)?;
+        if settings.method == Method::Vbao && settings.vbao.back_faces {
+            let measured = AoSettings::preset_with_back_faces(Method::Vbao, preset);
+            return self.apply(&with_radius(measured), radius);
+        }
+        Ok(settings)
+    }
+
     /// `base` with the file, then `radius` when given, then each `--set`, checked.
     pub fn apply(&self, base: &AoSettings, radius: Option<f32>) -> Result<AoSettings> {
         let mut table = to_table(base)?;
@@ -206,6 +226,26 @@ mod tests {
         assert!(err.contains("radius"), "{err}");
         let err = args(&["gtao=1"]).resolve(None).unwrap_err().to_string();
         assert!(err.contains("group"), "{err}");
+    }
+
+    #[test]
+    fn turning_back_faces_on_takes_their_tuned_preset_under_the_overrides() {
+        let mut a = args(&["vbao.back_faces=true"]);
+        a.method = Some("vbao".into());
+        a.preset = Some("medium".into());
+        let measured = AoSettings::preset_with_back_faces(Method::Vbao, Preset::Medium);
+        assert_eq!(a.resolve(None).unwrap(), measured);
+        // Overrides still win over the preset, and the scene's radius still applies.
+        a.overrides.set.push("vbao.thickness=0.7".into());
+        let s = a.resolve(Some(0.5)).unwrap();
+        assert_eq!((s.vbao.thickness, s.radius), (0.7, 0.5));
+        assert_eq!(s.power, measured.power);
+        // Without back faces the plain preset stands.
+        a.overrides.set = vec![];
+        assert_eq!(
+            a.resolve(None).unwrap(),
+            AoSettings::preset(Method::Vbao, Preset::Medium)
+        );
     }
 
     #[test]

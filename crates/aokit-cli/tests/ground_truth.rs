@@ -530,3 +530,64 @@ fn compare_scores_sequences_along_camera_paths() {
     let refused = aokit(d, &["compare", "--inputs", "still", "--frames", "3"]);
     assert_eq!(refused.status.code(), Some(2));
 }
+
+#[test]
+fn ao_measures_vbao_occluders_from_a_back_face_depth_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    ok(
+        d,
+        &[
+            "render",
+            "--scene",
+            "room",
+            "--size",
+            "64x40",
+            "--gbuffer",
+            "--out",
+            "g",
+        ],
+    );
+    // Every surface 5 units deep: solid, as the room's sphere and boxes are.
+    let depth = aokit_eval::read_depth(&d.join("g/depth.exr")).unwrap().data;
+    let deep: Vec<f32> = depth
+        .iter()
+        .map(|&z| if z > 0.0 { z + 5.0 } else { 0.0 })
+        .collect();
+    write_npy(&d.join("back.npy"), &[40, 64], &deep);
+    let ao = |extra: &[&str], out: &str| {
+        let mut args = vec![
+            "ao",
+            "--depth",
+            "g/depth.exr",
+            "--camera",
+            "g/camera.json",
+            "--method",
+            "vbao",
+            "--out",
+            out,
+        ];
+        args.extend_from_slice(extra);
+        aokit(d, &args)
+    };
+    let measured = ["--set", "vbao.back_faces=true"];
+    let refused = ao(&measured, "refused");
+    assert_eq!(refused.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        stderr.contains("vbao.back_faces") && stderr.contains("back_depth"),
+        "{stderr}"
+    );
+    assert!(ao(&[], "assumed").status.success());
+    let with_file = [&measured[..], &["--back-depth", "back.npy"]].concat();
+    assert!(ao(&with_file, "measured").status.success());
+    let mean = |out: &str| {
+        let ao = exr(&d.join(out).join("ao.exr"));
+        ao.iter().sum::<f32>() / ao.len() as f32
+    };
+    let (assumed, measured) = (mean("assumed"), mean("measured"));
+    assert!(
+        measured < assumed - 0.005,
+        "mean AO {measured} with deep back faces, {assumed} with the assumed thickness"
+    );
+}

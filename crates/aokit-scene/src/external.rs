@@ -21,6 +21,7 @@ use crate::renderer::RenderError;
 ///     size: [1280, 720],
 ///     linear_depth: &depth,
 ///     normals: Some(&normals),
+///     back_depth: None,
 ///     projection: Projection::perspective(1.0, 1280.0 / 720.0, 0.1, None),
 /// };
 /// let ao = ambient_occlusion(gpu, &AoSettings::default(), &passes, 0)?;
@@ -34,6 +35,9 @@ pub struct Passes<'a> {
     pub linear_depth: &'a [f32],
     /// View-space unit normals, or `None` to reconstruct them from depth.
     pub normals: Option<&'a [Vec3]>,
+    /// Linear view depth of the nearest back faces, as `linear_depth`, for
+    /// [`aokit::VbaoSettings::back_faces`].
+    pub back_depth: Option<&'a [f32]>,
     /// The camera's projection.
     pub projection: Projection,
 }
@@ -58,6 +62,7 @@ pub struct Passes<'a> {
 /// ```
 pub struct ExternalAo {
     depth: wgpu::Texture,
+    back_depth: Option<wgpu::Texture>,
     /// The unit normals as given, kept to encode them again for another encoding.
     source_normals: Option<Vec<Vec3>>,
     normals: Option<wgpu::Texture>,
@@ -88,19 +93,27 @@ impl ExternalAo {
         passes: &Passes<'_>,
     ) -> Result<Self, RenderError> {
         let (device, queue) = (&gpu.device, &gpu.queue);
-        let depth = upload_texture_2d(
-            device,
-            queue,
-            "external linear depth",
-            passes.size,
-            wgpu::TextureFormat::R32Float,
-            bytemuck::cast_slice(passes.linear_depth),
-        )?;
+        let upload = |label, depth: &[f32]| {
+            upload_texture_2d(
+                device,
+                queue,
+                label,
+                passes.size,
+                wgpu::TextureFormat::R32Float,
+                bytemuck::cast_slice(depth),
+            )
+        };
+        let depth = upload("external linear depth", passes.linear_depth)?;
+        let back_depth = passes
+            .back_depth
+            .map(|back| upload("external back-face depth", back))
+            .transpose()?;
         let source_normals: Option<Vec<Vec3>> = passes
             .normals
             .map(|normals| normals.iter().map(|n| n.normalize_or(Vec3::Z)).collect());
         let mut external = Self {
             depth,
+            back_depth,
             source_normals,
             normals: None,
             projection: passes.projection,
@@ -211,6 +224,7 @@ impl ExternalAo {
                 normals: self.normals.as_ref(),
                 frame_index,
                 reset_history: std::mem::take(&mut self.reset_history),
+                back_depth: self.back_depth.as_ref(),
                 ..AoInputs::new(&self.depth, self.projection)
             },
         )?;
@@ -231,6 +245,7 @@ impl ExternalAo {
 ///     size: [64, 64],
 ///     linear_depth: &depth,
 ///     normals: None,
+///     back_depth: None,
 ///     projection: Projection::perspective(1.0, 1.0, 0.1, None),
 /// };
 /// let ao = ambient_occlusion(&gpu, &AoSettings::default(), &passes, 0)?;

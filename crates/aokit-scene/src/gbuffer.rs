@@ -225,6 +225,10 @@ pub struct GBuffer {
     /// surface was in the previous frame, moved by the camera and by its part's motion; 0
     /// where nothing was drawn.
     pub motion: wgpu::Texture,
+    /// The depth of the nearest back faces ([`DEPTH_FORMAT`]), for
+    /// [`AoInputs::back_depth`](aokit::AoInputs::back_depth), when made with
+    /// [`GBuffer::with_back_depth`].
+    pub back_depth: Option<wgpu::Texture>,
 }
 
 impl GBuffer {
@@ -251,6 +255,35 @@ impl GBuffer {
             encoding,
             albedo: make("gbuffer albedo", ALBEDO_FORMAT),
             motion: make("gbuffer motion", MOTION_FORMAT),
+            back_depth: None,
+        }
+    }
+
+    /// Adds [`GBuffer::back_depth`], which [`GBufferPass::encode`] then draws too.
+    ///
+    /// ```no_run
+    /// use aokit::NormalEncoding;
+    /// use aokit_scene::gbuffer::GBuffer;
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// // For `vbao.back_faces`: one more depth target of the G-buffer's size.
+    /// let gbuffer = GBuffer::new(&gpu.device, [1280, 720], NormalEncoding::Oct32)
+    ///     .with_back_depth(&gpu.device);
+    /// assert_eq!(gbuffer.back_depth.unwrap().size(), gbuffer.depth.size());
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
+    pub fn with_back_depth(self, device: &wgpu::Device) -> Self {
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
+        Self {
+            back_depth: Some(create_texture_2d(
+                device,
+                "gbuffer back-face depth",
+                self.size,
+                DEPTH_FORMAT,
+                usage,
+            )),
+            ..self
         }
     }
 }
@@ -311,6 +344,9 @@ pub struct GBufferPass {
     /// Per normal encoding, pipelines for standard (`[0]`) and reverse-Z (`[1]`) depth tests,
     /// made the first time the encoding is drawn.
     pipelines: HashMap<NormalEncoding, [wgpu::RenderPipeline; 2]>,
+    /// Depth-only pipelines of the back faces, standard and reverse-Z, made the first time a
+    /// G-buffer has [`GBuffer::back_depth`].
+    back_pipelines: Option<[wgpu::RenderPipeline; 2]>,
     uniforms: UniformBlock<GBufferUniforms>,
 }
 
@@ -328,8 +364,48 @@ impl GBufferPass {
             module: shaders::GBUFFER.create_module(device),
             layout: uniforms.pipeline_layout(device, "gbuffer"),
             pipelines: HashMap::new(),
+            back_pipelines: None,
             uniforms,
         }
+    }
+
+    fn back_pipelines(&mut self, device: &wgpu::Device) -> &[wgpu::RenderPipeline; 2] {
+        let (module, layout) = (&self.module, &self.layout);
+        self.back_pipelines.get_or_insert_with(|| {
+            let pipeline = |compare| {
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some("gbuffer back faces"),
+                    layout: Some(layout),
+                    vertex: wgpu::VertexState {
+                        module,
+                        entry_point: Some("vs_main"),
+                        compilation_options: Default::default(),
+                        buffers: &[Some(GpuMesh::layout())],
+                    },
+                    // Triangles are wound towards their normals (`wound_to_normals`), so the
+                    // culled front faces are those whose normals face the eye.
+                    primitive: wgpu::PrimitiveState {
+                        cull_mode: Some(wgpu::Face::Front),
+                        ..Default::default()
+                    },
+                    depth_stencil: Some(wgpu::DepthStencilState {
+                        format: DEPTH_FORMAT,
+                        depth_write_enabled: Some(true),
+                        depth_compare: Some(compare),
+                        stencil: Default::default(),
+                        bias: Default::default(),
+                    }),
+                    multisample: Default::default(),
+                    fragment: None,
+                    multiview_mask: None,
+                    cache: None,
+                })
+            };
+            [
+                pipeline(wgpu::CompareFunction::Less),
+                pipeline(wgpu::CompareFunction::Greater),
+            ]
+        })
     }
 
     fn pipelines(
@@ -469,6 +545,30 @@ impl GBufferPass {
         pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, self.uniforms.bind_group(), &[]);
         mesh.draw(&mut pass);
+        drop(pass);
+        if let Some(back_depth) = &target.back_depth {
+            let reverse_z = usize::from(projection.reverse_z);
+            let pipeline = self.back_pipelines(&gpu.device)[reverse_z].clone();
+            let view = back_depth.create_view(&Default::default());
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("gbuffer back faces"),
+                color_attachments: &[],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &view,
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(projection.far_ndc_depth()),
+                        store: wgpu::StoreOp::Store,
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, self.uniforms.bind_group(), &[]);
+            mesh.draw(&mut pass);
+        }
     }
 }
 

@@ -346,16 +346,21 @@ impl Renderer {
         encoder: &mut wgpu::CommandEncoder,
         size: [u32; 2],
         encoding: aokit::NormalEncoding,
+        back_faces: bool,
         camera: &GBufferCamera<'_>,
     ) -> GBuffer {
-        let gbuffer = GBuffer::new(&gpu.device, size, encoding);
+        let mut gbuffer = GBuffer::new(&gpu.device, size, encoding);
+        if back_faces {
+            gbuffer = gbuffer.with_back_depth(&gpu.device);
+        }
         self.gbuffer_pass
             .encode(gpu, encoder, &self.mesh, camera, &gbuffer);
         gbuffer
     }
 
     /// Rasterises only the G-buffer of `camera` at `size`, normals in `encoding`, with the
-    /// scene at rest and standing still (motion vectors 0), and submits it; returns it with
+    /// scene at rest and standing still (motion vectors 0), and its back faces' depth (for
+    /// any settings with [`aokit::VbaoSettings::back_faces`]), and submits it; returns it with
     /// the projection it was drawn with. No AO, shadow or lighting pass runs, and the
     /// sequence [`Renderer::render`] keeps (history, previous camera) is left as it was.
     ///
@@ -398,6 +403,7 @@ impl Renderer {
             &mut encoder,
             size,
             encoding,
+            true,
             &GBufferCamera {
                 view_from_world,
                 projection: &projection,
@@ -485,6 +491,7 @@ impl Renderer {
             &mut encoder,
             size,
             self.settings.normals.encoding,
+            wanted.method == aokit::Method::Vbao && wanted.vbao.back_faces,
             &GBufferCamera {
                 view_from_world,
                 projection: &projection,
@@ -501,6 +508,7 @@ impl Renderer {
                 frame_index,
                 motion_vectors: self.use_motion_vectors.then_some(&gbuffer.motion),
                 reset_history,
+                back_depth: gbuffer.back_depth.as_ref(),
                 ..AoInputs::new(&gbuffer.depth, projection)
             },
         )?;

@@ -286,6 +286,7 @@ fn passes_from_the_cpu_give_the_same_ao_as_the_raster() {
             size: frame.size,
             linear_depth: &frame.linear_depth,
             normals: Some(&frame.normals),
+            back_depth: None,
             projection: frame.projection,
         };
         let ao = external::ambient_occlusion(&gpu, &settings_for(&scene), &passes, 0).unwrap();
