@@ -184,8 +184,9 @@ struct Dimension {
     values: Vec<Candidate>,
 }
 
-/// The dimensions searched for `method` around `at`, with the samples per pixel of its preset.
-fn dimensions(method: Method, at: &Candidate, samples: u32) -> Vec<Dimension> {
+/// The dimensions searched for `method` (measuring its occluders from the back faces when
+/// `back_faces`) around `at`, with the samples per pixel of its preset.
+fn dimensions(method: Method, back_faces: bool, at: &Candidate, samples: u32) -> Vec<Dimension> {
     let along = |name, values: &[f32], set: fn(&mut Candidate, f32)| Dimension {
         name,
         values: values
@@ -228,6 +229,9 @@ fn dimensions(method: Method, at: &Candidate, samples: u32) -> Vec<Dimension> {
         }
         Method::Hbao | Method::HbaoPlus => &[0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5],
         Method::Gtao => &[0.0, 0.05, 0.1, 0.2, 0.3, 0.5],
+        // Measured from the back faces, solids are as thick as they are, and the knob is the
+        // least thickness, for poles and fences whose back faces lie closer or were not seen.
+        Method::Vbao if back_faces => &[0.05, 0.1, 0.15, 0.2, 0.3, 0.45, 0.6],
         Method::Vbao => &[0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.3],
         // Unity's slider runs from 1 to 10; below 1 rejects occluders of a plain crease.
         Method::Msvo => &[0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0],
@@ -283,10 +287,12 @@ struct Evaluator<'a> {
     gpu: &'a GpuContext,
     views: Vec<View>,
     pipeline: AoPipeline,
-    /// Mean squared error over the views, and each view's RMSE, by method and candidate.
-    scores: HashMap<(Method, String), (f64, Vec<f64>)>,
-    /// Every evaluation in order, for evaluations.csv.
-    log: Vec<(Method, Preset, Candidate, f64)>,
+    /// Mean squared error over the views, and each view's RMSE, by method, back faces and
+    /// candidate.
+    scores: HashMap<(Method, bool, String), (f64, Vec<f64>)>,
+    /// Every evaluation in order, for evaluations.csv: the subject (method, and whether it
+    /// measures back faces), the preset, the candidate and its mean squared error.
+    log: Vec<(Method, bool, Preset, Candidate, f64)>,
 }
 
 impl Evaluator<'_> {
@@ -296,7 +302,8 @@ impl Evaluator<'_> {
         preset: Preset,
         candidate: &Candidate,
     ) -> Result<(f64, Vec<f64>)> {
-        let key = (base.method, candidate.key());
+        let back_faces = base.method == Method::Vbao && base.vbao.back_faces;
+        let key = (base.method, back_faces, candidate.key());
         if let Some(scored) = self.scores.get(&key) {
             return Ok(scored.clone());
         }
@@ -312,6 +319,7 @@ impl Evaluator<'_> {
                 &mut encoder,
                 &AoInputs {
                     normals: Some(&view.gbuffer.normals),
+                    back_depth: view.gbuffer.back_depth.as_ref(),
                     ..AoInputs::new(&view.gbuffer.depth, view.projection)
                 },
             )?;
@@ -328,7 +336,8 @@ impl Evaluator<'_> {
             rmse.push(metrics.rmse);
         }
         let mse = rmse.iter().map(|r| r * r).sum::<f64>() / rmse.len() as f64;
-        self.log.push((base.method, preset, *candidate, mse));
+        self.log
+            .push((base.method, back_faces, preset, *candidate, mse));
         self.scores.insert(key, (mse, rmse.clone()));
         Ok((mse, rmse))
     }
@@ -338,6 +347,9 @@ impl Evaluator<'_> {
 #[derive(Serialize)]
 struct Tuned {
     method: &'static str,
+    /// Whether `vbao` measured its occluders from the back faces
+    /// (`AoSettings::preset_with_back_faces`).
+    back_faces: bool,
     preset: &'static str,
     samples_per_pixel: u32,
     knob: &'static str,
@@ -369,16 +381,21 @@ struct PowerSweep {
     rmse: Vec<f64>,
 }
 
-/// Coordinate descent from the preset's own values; `split`, when given, replaces the preset's
-/// split of the samples and is kept (hbao-plus takes hbao's).
+/// Coordinate descent from the preset's own values (those of
+/// `AoSettings::preset_with_back_faces` when `back_faces`); `split`, when given, replaces the
+/// preset's split of the samples and is kept (hbao-plus takes hbao's).
 fn tune_one(
     evaluator: &mut Evaluator<'_>,
-    method: Method,
+    (method, back_faces): (Method, bool),
     preset: Preset,
     rounds: u32,
     split: Option<[u32; 2]>,
 ) -> Result<Tuned> {
-    let base = AoSettings::preset(method, preset);
+    let base = if back_faces {
+        AoSettings::preset_with_back_faces(method, preset)
+    } else {
+        AoSettings::preset(method, preset)
+    };
     let samples = base.samples_per_pixel();
     let mut start = Candidate::of(&base);
     if let Some(split) = split {
@@ -388,7 +405,7 @@ fn tune_one(
     let mut best = (start, start_mse);
     for _ in 0..rounds {
         let before = best.1;
-        for dimension in dimensions(method, &best.0, samples) {
+        for dimension in dimensions(method, back_faces, &best.0, samples) {
             for candidate in &dimension.values {
                 let (mse, _) = evaluator.score(&base, preset, candidate)?;
                 // Ties keep the current value, so the search only moves for a real gain.
@@ -398,7 +415,7 @@ fn tune_one(
             }
             eprintln!(
                 "tune: {} {} after {}: RMSE {:.4}",
-                method.name(),
+                subject(method, back_faces),
                 preset.name(),
                 dimension.name,
                 best.1.sqrt()
@@ -411,6 +428,7 @@ fn tune_one(
     let (_, views_rmse) = evaluator.score(&base, preset, &best.0)?;
     Ok(Tuned {
         method: method.name(),
+        back_faces,
         preset: preset.name(),
         samples_per_pixel: samples,
         knob: knob_name(method),
@@ -420,6 +438,15 @@ fn tune_one(
         tuned_rmse: best.1.sqrt(),
         views_rmse,
     })
+}
+
+/// How the table names what was tuned.
+fn subject(method: Method, back_faces: bool) -> String {
+    if back_faces {
+        format!("{} + back faces", method.name())
+    } else {
+        method.name().to_string()
+    }
 }
 
 fn load_views(gpu: &GpuContext, args: &TuneArgs) -> Result<Vec<View>> {
@@ -481,8 +508,9 @@ fn markdown(
     for t in tuned {
         let c = &t.tuned;
         md.push_str(&format!(
-            "| `{}` | {} | {} | {}x{} | {} | {} | `{}` = {} | {} | {} | {:.4} | {:.4} |\n",
+            "| `{}`{} | {} | {} | {}x{} | {} | {} | `{}` = {} | {} | {} | {:.4} | {:.4} |\n",
             t.method,
+            if t.back_faces { " + back faces" } else { "" },
             t.preset,
             t.samples_per_pixel,
             c.split[0],
@@ -556,11 +584,23 @@ pub fn run(args: &TuneArgs) -> Result<()> {
                 .flatten();
             tuned.push(tune_one(
                 &mut evaluator,
-                method,
+                (method, false),
                 preset,
                 args.rounds,
                 split,
             )?);
+        }
+        // vbao again, measuring its occluders from the back faces: presets of their own.
+        if method == Method::Vbao {
+            for &preset in &args.presets {
+                tuned.push(tune_one(
+                    &mut evaluator,
+                    (method, true),
+                    preset,
+                    args.rounds,
+                    None,
+                )?);
+            }
         }
     }
 
@@ -597,10 +637,10 @@ pub fn run(args: &TuneArgs) -> Result<()> {
     let mut csv = String::from(
         "method,preset,directions,steps,step_power,falloff,knob,power,radius_multiplier,rmse\n",
     );
-    for (method, preset, c, mse) in &evaluator.log {
+    for (method, back_faces, preset, c, mse) in &evaluator.log {
         csv.push_str(&format!(
             "{},{},{},{},{},{},{},{},{},{:.6}\n",
-            method.name(),
+            subject(*method, *back_faces),
             preset.name(),
             c.split[0],
             c.split[1],

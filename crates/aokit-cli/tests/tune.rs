@@ -20,7 +20,7 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
             "--spp",
             "16",
             "--methods",
-            "gtao,hbao,hbao-plus",
+            "gtao,hbao,hbao-plus,vbao",
             "--presets",
             "low",
             "--rounds",
@@ -42,7 +42,14 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
     let json: Value =
         serde_json::from_str(&std::fs::read_to_string(t.join("tune.json")).unwrap()).unwrap();
     let results = json["results"].as_array().unwrap();
-    assert_eq!(results.len(), 3);
+    // vbao is tuned twice: assuming its occluders' thickness, and measuring it from the back
+    // faces.
+    assert_eq!(results.len(), 5);
+    assert_eq!(results[4]["method"], "vbao");
+    assert_eq!(
+        (&results[3]["back_faces"], &results[4]["back_faces"]),
+        (&Value::Bool(false), &Value::Bool(true))
+    );
     for r in results {
         let (start, tuned) = (
             r["start_rmse"].as_f64().unwrap(),
@@ -52,14 +59,12 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
     }
     // hbao-plus runs on hbao's directions and steps.
     assert_eq!(results[2]["tuned"]["split"], results[1]["tuned"]["split"]);
-    assert_eq!(json["power_sweep"].as_array().unwrap().len(), 3);
+    assert_eq!(json["power_sweep"].as_array().unwrap().len(), 4);
     let csv = std::fs::read_to_string(t.join("evaluations.csv")).unwrap();
     assert!(csv.lines().count() > 20, "{csv}");
-    assert!(
-        std::fs::read_to_string(t.join("tune.md"))
-            .unwrap()
-            .contains("| `gtao` | low |")
-    );
+    let md = std::fs::read_to_string(t.join("tune.md")).unwrap();
+    assert!(md.contains("| `gtao` | low |"), "{md}");
+    assert!(md.contains("| `vbao` + back faces | low |"), "{md}");
 }
 
 #[test]
@@ -68,8 +73,8 @@ fn the_presets_are_the_tuning_table() {
     let json: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let results = json["results"].as_array().unwrap();
     // Every method but ssao-crytek, sao, ue4-ssao and msvo, whose presets keep their published
-    // forms.
-    assert_eq!(results.len(), (Method::ALL.len() - 4) * Preset::ALL.len());
+    // forms, and vbao once more measuring its occluders from the back faces.
+    assert_eq!(results.len(), (Method::ALL.len() - 3) * Preset::ALL.len());
     for preset in Preset::ALL {
         let crytek = AoSettings::preset(Method::SsaoCrytek, preset);
         assert_eq!(
@@ -110,10 +115,20 @@ fn the_presets_are_the_tuning_table() {
     for r in results {
         let method: Method = r["method"].as_str().unwrap().parse().unwrap();
         let preset: Preset = r["preset"].as_str().unwrap().parse().unwrap();
-        let s = AoSettings::preset(method, preset);
+        let back_faces = r["back_faces"].as_bool().unwrap();
+        let s = if back_faces {
+            AoSettings::preset_with_back_faces(method, preset)
+        } else {
+            AoSettings::preset(method, preset)
+        };
+        assert_eq!(s.vbao.back_faces, back_faces);
         let tuned = &r["tuned"];
         let value = |key: &str| tuned[key].as_f64().unwrap() as f32;
-        let what = format!("{} {}", method.name(), preset.name());
+        let what = format!(
+            "{} {} back faces {back_faces}",
+            method.name(),
+            preset.name()
+        );
         assert_eq!(s.power, value("power"), "{what}: power");
         assert_eq!(s.falloff, value("falloff"), "{what}: falloff");
         assert_eq!(s.step_power, value("step_power"), "{what}: step_power");
