@@ -111,20 +111,29 @@ for method in $method_list; do
 done
 splice pictures "$out/pictures.md"
 
+variant() { # variant METHOD NAME IMAGES SUFFIX ARGS...: one more error table and pictures
+    local method=$1 name=$2 images=$3 suffix=$4
+    shift 4
+    compare --methods "$method" "$@" --out "$out/$name"
+    awk -v m="## $method" '$0 == m {on = 1; next} /^## / {on = 0} on' \
+        "$out/$name/metrics-by-method.md" > "$out/errors-$name.md"
+    splice "errors:$name" "$out/errors-$name.md"
+    mkdir -p "$images"
+    for view in "${views[@]}"; do
+        cp "$out/$name/images/$view-$method-high.png" "$images/$view$suffix.png"
+    done
+}
 # docs/methods.md's separable HBAO: each variant with the same four directions and steps (the
 # separable one reads no direction count), so both take 4 x step_count samples per pixel.
 if [[ $methods == all || ,$methods, == *,hbao,* ]]; then
-    separable_images=docs/images/separable-hbao
-    mkdir -p "$separable_images"
-    for variant in per-pixel separable; do
-        compare --methods hbao --set hbao.variant=$variant --set hbao.direction_count=4 \
-            --out "$out/hbao-$variant"
-        awk '$0 == "## hbao" {on = 1; next} /^## / {on = 0} on' \
-            "$out/hbao-$variant/metrics-by-method.md" > "$out/errors-hbao-$variant.md"
-        splice "errors:hbao-$variant" "$out/errors-hbao-$variant.md"
-        for view in "${views[@]}"; do
-            cp "$out/hbao-$variant/images/$view-hbao-high.png" "$separable_images/$view-$variant.png"
-        done
+    for v in per-pixel separable; do
+        variant hbao "hbao-$v" docs/images/separable-hbao "-$v" \
+            --set hbao.variant=$v --set hbao.direction_count=4
     done
+fi
+# docs/methods.md's VBAO measuring its occluders from the back faces' depth: --set
+# vbao.back_faces=true starts from its presets tuned with back faces.
+if [[ $methods == all || ,$methods, == *,vbao,* ]]; then
+    variant vbao vbao-back-faces docs/images/vbao-back-faces "" --set vbao.back_faces=true
 fi
 echo "wrote docs/quality.md, docs/methods.md's tables, $images/ and $pictures/"
