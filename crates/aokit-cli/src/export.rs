@@ -1,5 +1,6 @@
 //! The G-buffer export shared by `render --gbuffer` and `reference`: depth.exr, normal.exr and
-//! camera.json, the format docs/camera-json.md describes.
+//! camera.json, the format docs/camera-json.md describes, and back_depth.exr where the back
+//! faces were drawn.
 
 use std::path::Path;
 
@@ -34,6 +35,17 @@ pub fn write_gbuffer(
         &CameraFile::new(projection, view_from_world, size),
     )?;
     Ok(["depth.exr", "normal.exr", "camera.json"])
+}
+
+/// Writes the back faces' linear depth into `out` as back_depth.exr (one channel `Z`, as
+/// depth.exr), which `aokit ao --back-depth` reads; returns its name.
+pub fn write_back_depth(out: &Path, size: [u32; 2], back_depth: &[f32]) -> Result<&'static str> {
+    write_exr(
+        &out.join("back_depth.exr"),
+        size,
+        &[("Z", back_depth.to_vec())],
+    )?;
+    Ok("back_depth.exr")
 }
 
 /// Pretty JSON with a trailing newline.

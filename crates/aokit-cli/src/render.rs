@@ -12,7 +12,7 @@ use clap::Args;
 use aokit_eval::{grey_to_rgba, write_exr, write_gif, write_grey_png, write_rgba_png};
 
 use crate::camera_args::CameraArgs;
-use crate::export::{create_dir, write_gbuffer};
+use crate::export::{create_dir, write_back_depth, write_gbuffer};
 use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug)]
@@ -30,7 +30,8 @@ pub struct RenderArgs {
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-out")]
     pub out: PathBuf,
-    /// Also write depth.exr, normal.exr and camera.json.
+    /// Also write depth.exr, normal.exr and camera.json, and back_depth.exr when the settings
+    /// measure back faces (`--set vbao.back_faces=true`).
     #[arg(long)]
     pub gbuffer: bool,
     /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
@@ -260,6 +261,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             )?
             .map(String::from),
         );
+        if let Some(back_depth) = &frame.back_depth {
+            written.push(write_back_depth(out, frame.size, back_depth)?.into());
+        }
     }
     println!(
         "rendered `{}` from camera `{}` at {}x{} with {} (radius {}): wrote {} to {}",

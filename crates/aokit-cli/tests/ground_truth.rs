@@ -535,7 +535,7 @@ fn compare_scores_sequences_along_camera_paths() {
 fn ao_measures_vbao_occluders_from_a_back_face_depth_file() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    ok(
+    let stdout = ok(
         d,
         &[
             "render",
@@ -543,11 +543,56 @@ fn ao_measures_vbao_occluders_from_a_back_face_depth_file() {
             "room",
             "--size",
             "64x40",
+            "--method",
+            "vbao",
+            "--set",
+            "vbao.back_faces=true",
             "--gbuffer",
             "--out",
             "g",
         ],
     );
+    assert!(stdout.contains("back_depth.exr"), "{stdout}");
+    // The exported back faces lie behind the front ones, and give the AO render gave.
+    let front = aokit_eval::read_depth(&d.join("g/depth.exr")).unwrap().data;
+    let back = aokit_eval::read_depth(&d.join("g/back_depth.exr"))
+        .unwrap()
+        .data;
+    for (i, (f, b)) in front.iter().zip(&back).enumerate() {
+        assert!(
+            *b == 0.0 || *b >= f * 0.999,
+            "pixel {i}: back {b}, front {f}"
+        );
+    }
+    assert!(back.iter().filter(|&&b| b > 0.0).count() > back.len() / 10);
+    ok(
+        d,
+        &[
+            "ao",
+            "--depth",
+            "g/depth.exr",
+            "--normals",
+            "g/normal.exr",
+            "--back-depth",
+            "g/back_depth.exr",
+            "--camera",
+            "g/camera.json",
+            "--method",
+            "vbao",
+            "--set",
+            "vbao.back_faces=true",
+            "--out",
+            "again",
+        ],
+    );
+    let (rendered, again) = (exr(&d.join("g/ao.exr")), exr(&d.join("again/ao.exr")));
+    let difference = rendered
+        .iter()
+        .zip(&again)
+        .map(|(a, b)| (a - b).abs())
+        .sum::<f32>()
+        / again.len() as f32;
+    assert!(difference < 0.002, "mean difference {difference}");
     // Every surface 5 units deep: solid, as the room's sphere and boxes are.
     let depth = aokit_eval::read_depth(&d.join("g/depth.exr")).unwrap().data;
     let deep: Vec<f32> = depth

@@ -55,6 +55,9 @@ pub struct Frame {
     /// View-space bent normals, when the settings given to the [`Renderer`] ask for them (not
     /// when only the composite's GTSO turned them on).
     pub bent_normals: Option<Vec<Vec3>>,
+    /// Linear view depth of the nearest back faces, 0 where none was drawn, when the settings
+    /// measure VBAO's occluders from them ([`aokit::VbaoSettings::back_faces`]).
+    pub back_depth: Option<Vec<f32>>,
     /// The G-buffer's motion vectors: the offset in pixels (y down) from each pixel's centre to
     /// where its surface was in the previous frame of the sequence; 0 where nothing was drawn
     /// and in a sequence's first frame.
@@ -567,6 +570,20 @@ impl Renderer {
             }
         }
         let lit = read_texture(device, queue, &lit)?;
+        let back_depth = gbuffer
+            .back_depth
+            .as_ref()
+            .map(|texture| read_texture_f32(device, queue, texture))
+            .transpose()?
+            .map(|ndc| {
+                ndc.iter()
+                    .map(|&d| {
+                        let linear = projection.linear_depth(d);
+                        let surface = d != projection.far_ndc_depth() && linear.is_finite();
+                        if surface { linear.max(0.0) } else { 0.0 }
+                    })
+                    .collect()
+            });
         let motion_vectors = read_texture_rg16f(device, queue, &gbuffer.motion)?
             .into_iter()
             .map(Vec2::from_array)
@@ -594,6 +611,7 @@ impl Renderer {
             normals,
             history_rejected,
             bent_normals,
+            back_depth,
             motion_vectors,
             debug,
         })
