@@ -54,8 +54,9 @@ for size in "${sizes[@]}"; do
     bench_json "passes-sponza-atrium-$size" "${view[@]}" --size "$size" --method gtao \
         --preset high -- "${passes[@]}"
 done
-# The separable HBAO against the per-pixel one at the same samples (four directions), and the
-# passes of SAO, UE4's SSAO and MSVO (the depth chain, and MSVO's per level), to
+# The separable HBAO against the per-pixel one at the same samples (four directions), the
+# passes of SAO, UE4's SSAO and MSVO (the depth chain, and MSVO's per level), and VBAO with its
+# occluders measured from the back faces (the back_faces prepass), to
 # OUT/variants-SCENE-SIZE.json.
 variants=(
     "--method hbao --preset high --set hbao.direction_count=4"
@@ -65,6 +66,8 @@ variants=(
     "--method sao --preset high"
     "--method ue4-ssao --preset high"
     "--method msvo --preset high"
+    "--method vbao --preset high"
+    "--method vbao --preset high --set vbao.back_faces=true"
 )
 bench_each_view variants "${variants[@]}"
 # The depth MIP chain (docs/depth-mips.md): each reading method at `high` with it off, at both
