@@ -372,39 +372,14 @@ impl GBufferPass {
     fn back_pipelines(&mut self, device: &wgpu::Device) -> &[wgpu::RenderPipeline; 2] {
         let (module, layout) = (&self.module, &self.layout);
         self.back_pipelines.get_or_insert_with(|| {
-            let pipeline = |compare| {
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("gbuffer back faces"),
-                    layout: Some(layout),
-                    vertex: wgpu::VertexState {
-                        module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: Default::default(),
-                        buffers: &[Some(GpuMesh::layout())],
-                    },
-                    // Triangles are wound towards their normals (`wound_to_normals`), so the
-                    // culled front faces are those whose normals face the eye.
-                    primitive: wgpu::PrimitiveState {
-                        cull_mode: Some(wgpu::Face::Front),
-                        ..Default::default()
-                    },
-                    depth_stencil: Some(wgpu::DepthStencilState {
-                        format: DEPTH_FORMAT,
-                        depth_write_enabled: Some(true),
-                        depth_compare: Some(compare),
-                        stencil: Default::default(),
-                        bias: Default::default(),
-                    }),
-                    multisample: Default::default(),
-                    fragment: None,
-                    multiview_mask: None,
-                    cache: None,
-                })
+            // Triangles are wound towards their normals (`wound_to_normals`), so the culled
+            // front faces are those whose normals face the eye.
+            let raster = Raster {
+                label: "gbuffer back faces",
+                cull_mode: Some(wgpu::Face::Front),
+                fragment: None,
             };
-            [
-                pipeline(wgpu::CompareFunction::Less),
-                pipeline(wgpu::CompareFunction::Greater),
-            ]
+            raster.pipelines(device, module, layout)
         })
     }
 
@@ -416,58 +391,35 @@ impl GBufferPass {
         let (module, layout) = (&self.module, &self.layout);
         self.pipelines.entry(encoding).or_insert_with(|| {
             let constants = [("ENCODING", f64::from(encoding.shader_code()))];
-            let pipeline = |compare| {
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some("gbuffer"),
-                    layout: Some(layout),
-                    vertex: wgpu::VertexState {
-                        module,
-                        entry_point: Some("vs_main"),
-                        compilation_options: Default::default(),
-                        buffers: &[Some(GpuMesh::layout())],
-                    },
-                    primitive: wgpu::PrimitiveState {
-                        // Both sides are drawn: scene files hold open sheets and mixed windings.
-                        cull_mode: None,
+            let targets = [
+                Some(encoding.texture_format().into()),
+                Some(ALBEDO_FORMAT.into()),
+                Some(MOTION_FORMAT.into()),
+            ];
+            let raster = Raster {
+                label: "gbuffer",
+                // Both sides are drawn: scene files hold open sheets and mixed windings.
+                cull_mode: None,
+                fragment: Some(wgpu::FragmentState {
+                    module,
+                    entry_point: Some(if encoding.is_uint() {
+                        "fs_uint"
+                    } else {
+                        "fs_float"
+                    }),
+                    compilation_options: wgpu::PipelineCompilationOptions {
+                        constants: &constants,
                         ..Default::default()
                     },
-                    depth_stencil: Some(wgpu::DepthStencilState {
-                        format: DEPTH_FORMAT,
-                        depth_write_enabled: Some(true),
-                        depth_compare: Some(compare),
-                        stencil: Default::default(),
-                        bias: Default::default(),
-                    }),
-                    multisample: Default::default(),
-                    fragment: Some(wgpu::FragmentState {
-                        module,
-                        entry_point: Some(if encoding.is_uint() {
-                            "fs_uint"
-                        } else {
-                            "fs_float"
-                        }),
-                        compilation_options: wgpu::PipelineCompilationOptions {
-                            constants: &constants,
-                            ..Default::default()
-                        },
-                        targets: &[
-                            Some(encoding.texture_format().into()),
-                            Some(ALBEDO_FORMAT.into()),
-                            Some(MOTION_FORMAT.into()),
-                        ],
-                    }),
-                    multiview_mask: None,
-                    cache: None,
-                })
+                    targets: &targets,
+                }),
             };
-            [
-                pipeline(wgpu::CompareFunction::Less),
-                pipeline(wgpu::CompareFunction::Greater),
-            ]
+            raster.pipelines(device, module, layout)
         })
     }
 
-    /// Records the raster of `mesh` seen by `camera`, clearing `target` first. Then hand
+    /// Records the raster of `mesh` seen by `camera`, clearing `target` first, and when it has
+    /// [`GBuffer::back_depth`], the depth of its back faces. Then hand
     /// [`GBuffer::depth`] and [`GBuffer::normals`] to an [`aokit::AoPipeline`]:
     ///
     /// ```no_run
@@ -510,12 +462,15 @@ impl GBufferPass {
             _pad: 0.0,
         };
         self.uniforms.write(&gpu.queue, &uniforms);
-        let pipeline =
-            self.pipelines(&gpu.device, target.encoding)[usize::from(projection.reverse_z)].clone();
+        let reverse_z = usize::from(projection.reverse_z);
+        let pipeline = self.pipelines(&gpu.device, target.encoding)[reverse_z].clone();
+        let back_pipeline = target
+            .back_depth
+            .as_ref()
+            .map(|_| self.back_pipelines(&gpu.device)[reverse_z].clone());
         let normals = target.normals.create_view(&Default::default());
         let albedo = target.albedo.create_view(&Default::default());
         let motion = target.motion.create_view(&Default::default());
-        let depth = target.depth.create_view(&Default::default());
         let color = |view| {
             Some(wgpu::RenderPassColorAttachment {
                 view,
@@ -527,34 +482,17 @@ impl GBufferPass {
                 },
             })
         };
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("gbuffer"),
-            color_attachments: &[color(&normals), color(&albedo), color(&motion)],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(projection.far_ndc_depth()),
-                    store: wgpu::StoreOp::Store,
-                }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, self.uniforms.bind_group(), &[]);
-        mesh.draw(&mut pass);
-        drop(pass);
-        if let Some(back_depth) = &target.back_depth {
-            let reverse_z = usize::from(projection.reverse_z);
-            let pipeline = self.back_pipelines(&gpu.device)[reverse_z].clone();
-            let view = back_depth.create_view(&Default::default());
+        let draw = |encoder: &mut wgpu::CommandEncoder,
+                    label,
+                    pipeline: &wgpu::RenderPipeline,
+                    colors: &[Option<wgpu::RenderPassColorAttachment<'_>>],
+                    depth: &wgpu::Texture| {
+            let depth = depth.create_view(&Default::default());
             let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("gbuffer back faces"),
-                color_attachments: &[],
+                label: Some(label),
+                color_attachments: colors,
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &view,
+                    view: &depth,
                     depth_ops: Some(wgpu::Operations {
                         load: wgpu::LoadOp::Clear(projection.far_ndc_depth()),
                         store: wgpu::StoreOp::Store,
@@ -565,10 +503,61 @@ impl GBufferPass {
                 occlusion_query_set: None,
                 multiview_mask: None,
             });
-            pass.set_pipeline(&pipeline);
+            pass.set_pipeline(pipeline);
             pass.set_bind_group(0, self.uniforms.bind_group(), &[]);
             mesh.draw(&mut pass);
+        };
+        let colors = [color(&normals), color(&albedo), color(&motion)];
+        draw(encoder, "gbuffer", &pipeline, &colors, &target.depth);
+        if let (Some(back_depth), Some(pipeline)) = (&target.back_depth, &back_pipeline) {
+            draw(encoder, "gbuffer back faces", pipeline, &[], back_depth);
         }
+    }
+}
+
+/// What a G-buffer raster pipeline draws: the scene's vertices through `vs_main`, writing
+/// depth, culling `cull_mode`, and `fragment`'s targets (none: depth alone).
+struct Raster<'a> {
+    label: &'static str,
+    cull_mode: Option<wgpu::Face>,
+    fragment: Option<wgpu::FragmentState<'a>>,
+}
+
+impl Raster<'_> {
+    /// Its pipelines for standard (`[0]`) and reverse-Z (`[1]`) depth tests.
+    fn pipelines(
+        &self,
+        device: &wgpu::Device,
+        module: &wgpu::ShaderModule,
+        layout: &wgpu::PipelineLayout,
+    ) -> [wgpu::RenderPipeline; 2] {
+        [wgpu::CompareFunction::Less, wgpu::CompareFunction::Greater].map(|compare| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(self.label),
+                layout: Some(layout),
+                vertex: wgpu::VertexState {
+                    module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(GpuMesh::layout())],
+                },
+                primitive: wgpu::PrimitiveState {
+                    cull_mode: self.cull_mode,
+                    ..Default::default()
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(compare),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: Default::default(),
+                fragment: self.fragment.clone(),
+                multiview_mask: None,
+                cache: None,
+            })
+        })
     }
 }
 
