@@ -7,7 +7,8 @@ use super::linear_depth::DepthInput;
 use super::{ComputeKernel, PassContext, bind};
 use crate::shader;
 
-/// Format of the thickness VBAO reads: view-depth units, `f32::MAX` for solid.
+/// Format of the thickness VBAO reads: view-depth units; `MAX_DEPTH` (3.4e38, common/view.wgsl)
+/// for a solid, 0 for nothing measured.
 pub const THICKNESS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 
 /// Measures how far behind each working texel's surface the nearest back face lies
