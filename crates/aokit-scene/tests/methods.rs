@@ -278,6 +278,33 @@ fn vbao_beats_gtao_behind_thin_objects_and_gtao_beats_ssao_and_hbao_in_the_room(
 }
 
 #[test]
+fn vbao_leaves_an_open_plane_unoccluded_with_and_without_back_faces() {
+    let gpu = gpu();
+    let scene = Builtin::Open.build();
+    let radius = scene.suggested_radius.unwrap_or(1.0);
+    for settings in [
+        AoSettings::preset(Method::Vbao, Preset::High),
+        AoSettings::preset_with_back_faces(Method::Vbao, Preset::High),
+    ] {
+        let settings = AoSettings { radius, ..settings };
+        for camera in &scene.cameras {
+            // Two sizes: the samples, and how far inside the hemisphere rounding puts them,
+            // differ between them.
+            for size in [SIZE, [320, 180]] {
+                let frame = render_frame(&gpu, &scene, camera, &settings, size);
+                let worst = covered(&frame).fold(1.0f32, f32::min);
+                assert!(
+                    worst >= 0.999,
+                    "back faces {}, camera {} at {size:?}: lowest AO {worst} on an open plane",
+                    settings.vbao.back_faces,
+                    camera.name
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn distance_fade_intensity_and_method_switches_apply_at_runtime() {
     let gpu = gpu();
     let scene = Builtin::Room.build();
