@@ -38,7 +38,8 @@ pub struct TuneArgs {
     /// are left out unless named: their presets keep their published forms, Crytek's 2007
     /// formulation, whose grey look is what the method is chosen for (the search would trade
     /// it away: docs/tuning.md), the SAO paper's parameters, Unreal's as seed 002 gives them
-    /// and Unity's MSVO defaults (seed 003).
+    /// and Unity's MSVO defaults (seed 003). `vbao` is tuned twice: as it is, and measuring
+    /// its occluders from the back faces (the presets of `AoSettings::preset_with_back_faces`).
     #[arg(
         long,
         value_delimiter = ',',
@@ -440,7 +441,7 @@ fn tune_one(
     })
 }
 
-/// How the table names what was tuned.
+/// How the progress lines and evaluations.csv name what is tuned.
 fn subject(method: Method, back_faces: bool) -> String {
     if back_faces {
         format!("{} + back faces", method.name())
