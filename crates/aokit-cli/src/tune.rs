@@ -6,7 +6,8 @@
 //! knobs that cost nothing (the final power, the falloff, the step spacing, a radius scale and
 //! each method's own bias or thickness) and the split of the samples between directions and
 //! steps. It is a coordinate descent: one parameter at a time over its candidate values, the
-//! others held, best kept, for a few rounds, starting from the current preset.
+//! others held, best kept, round after round until one gains nothing, starting from the
+//! current preset.
 
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -52,8 +53,10 @@ pub struct TuneArgs {
     /// Reference rays per pixel.
     #[arg(long, default_value_t = 256)]
     pub spp: u32,
-    /// Rounds of the coordinate descent over all parameters.
-    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=10))]
+    /// Most rounds of the coordinate descent over all parameters; a search stops at the first
+    /// round that gains nothing. 3 rounds left the first tuning short of where the search
+    /// ends (docs/tuning.md).
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=10))]
     pub rounds: u32,
     /// Where references are cached (default: $AOKIT_CACHE, $XDG_CACHE_HOME/aokit or ~/.cache/aokit).
     #[arg(long, value_name = "DIR")]
