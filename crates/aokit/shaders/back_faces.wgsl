@@ -10,14 +10,12 @@
 //                 block's point pixel saw another surface than the downsample kept); the
 //                 constant thickness holds
 //
-// The program starts with the back-face depth at binding 1, `input_linear_depth` and
-// `input_size` (one per kind of depth input, `DepthInput` in passes/linear_depth.rs).
+// The program starts with resample.wgsl (SCALE, point_pixel), then the back-face depth at
+// binding 1, `input_linear_depth` and `input_size` (one per kind of depth input, `DepthInput`
+// in passes/linear_depth.rs).
 
 @group(0) @binding(2) var working_depth: texture_2d<f32>;
 @group(0) @binding(3) var thickness_out: texture_storage_2d<r32float, write>;
-
-// Input pixels per working texel along each axis: 1, 2 or 4.
-override SCALE: u32;
 
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
@@ -25,9 +23,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let front = textureLoad(working_depth, id.xy, 0).r;
-    // The point downsample's pixel: the top-left one of the block's central 2x2.
-    let pixel = min(id.xy * SCALE + max(SCALE / 2u, 1u) - 1u, input_size() - 1u);
-    let back = input_linear_depth(pixel);
+    let back = input_linear_depth(point_pixel(id.xy, input_size() - 1u));
     var thickness = 0.0;
     if front != NO_SURFACE {
         thickness = select(select(0.0, back - front, back > front), MAX_DEPTH, back == NO_SURFACE);

@@ -42,7 +42,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if mode == DOWNSAMPLE_CHECKERBOARD {
         mode = select(DOWNSAMPLE_MIN, DOWNSAMPLE_MAX, ((id.x + id.y) & 1u) == 1u);
     }
-    var chosen = min(first + SCALE / 2u - 1u, last);
+    var chosen = point_pixel(id.xy, last);
     if mode != DOWNSAMPLE_POINT {
         var best = distance_key(input_linear_depth(first));
         chosen = first;

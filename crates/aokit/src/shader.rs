@@ -177,7 +177,7 @@ pub const LINEAR_DEPTH: [ShaderSource; 4] = per_depth_input!(
 /// `vbao.back_faces`, per kind of depth input.
 pub const BACK_FACES: [ShaderSource; 4] = per_depth_input!(
     "back_faces",
-    [VIEW],
+    [VIEW, RESAMPLE],
     [include_str!("../shaders/back_faces.wgsl")]
 );
 
