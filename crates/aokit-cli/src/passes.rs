@@ -98,13 +98,7 @@ pub fn load(
             DepthKind::Ndc => depth
                 .data
                 .iter()
-                .map(|&d| {
-                    if d == projection.far_ndc_depth() {
-                        0.0
-                    } else {
-                        projection.linear_depth(d)
-                    }
-                })
+                .map(|&d| projection.surface_depth(d))
                 .collect(),
         })
     };

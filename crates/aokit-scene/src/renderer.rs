@@ -575,15 +575,7 @@ impl Renderer {
             .as_ref()
             .map(|texture| read_texture_f32(device, queue, texture))
             .transpose()?
-            .map(|ndc| {
-                ndc.iter()
-                    .map(|&d| {
-                        let linear = projection.linear_depth(d);
-                        let surface = d != projection.far_ndc_depth() && linear.is_finite();
-                        if surface { linear.max(0.0) } else { 0.0 }
-                    })
-                    .collect()
-            });
+            .map(|ndc| ndc.iter().map(|&d| projection.surface_depth(d)).collect());
         let motion_vectors = read_texture_rg16f(device, queue, &gbuffer.motion)?
             .into_iter()
             .map(Vec2::from_array)

@@ -350,6 +350,24 @@ impl Projection {
         (c.x * ndc_depth + c.y) / (c.z * ndc_depth + c.w)
     }
 
+    /// [`Projection::linear_depth`] of a depth-buffer value as the pipeline reads it: 0, no
+    /// surface, where the buffer holds the far plane's clear value or the value gives no finite
+    /// positive depth.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// let p = Projection::perspective(1.0, 1.0, 0.1, None);
+    /// // A depth buffer read back: a surface 10 units away, and the cleared sky.
+    /// assert!((p.surface_depth(0.01) - 10.0).abs() < 1e-4);
+    /// assert_eq!(p.surface_depth(p.far_ndc_depth()), 0.0);
+    /// ```
+    pub fn surface_depth(&self, ndc_depth: f32) -> f32 {
+        let linear = self.linear_depth(ndc_depth);
+        // Written as a positive test, as depth_from_ndc.wgsl's, so that NaN is no surface too.
+        let surface = ndc_depth != self.far_ndc_depth() && linear > 0.0 && linear < f32::MAX;
+        if surface { linear } else { 0.0 }
+    }
+
     /// NDC depth of a point at the given linear view depth.
     ///
     /// ```
