@@ -2,7 +2,10 @@
 
 mod common;
 
-use aokit::{AoSettings, GpuContext, Method, NoiseKind, NoiseSettings, Preset, TemporalOffset};
+use aokit::{
+    AoSettings, DepthMips, GpuContext, Method, NoiseKind, NoiseSettings, Preset, SampleDepth,
+    TemporalOffset,
+};
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
 use common::{
     assert_in_range_with_sky_at_one, covered, gpu, pixel_of, render_frame, scene_settings, trace,
@@ -301,6 +304,66 @@ fn vbao_leaves_an_open_plane_unoccluded_with_and_without_back_faces() {
                 );
             }
         }
+    }
+}
+
+#[test]
+fn slice_methods_leave_an_open_plane_unoccluded_with_either_depth_read() {
+    let gpu = gpu();
+    let scene = Builtin::Open.build();
+    for method in Method::ALL.into_iter().filter(|m| m.marches_slices()) {
+        for (sample_depth, depth_mips) in [
+            (SampleDepth::Nearest, DepthMips::Off),
+            (SampleDepth::Nearest, DepthMips::Fp32),
+            (SampleDepth::Interpolated, DepthMips::Off),
+        ] {
+            let settings = AoSettings {
+                sample_depth,
+                depth_mips,
+                ..scene_settings(&scene, method, Preset::High)
+            };
+            for camera in &scene.cameras {
+                let frame = render(&gpu, &scene, camera, &settings);
+                let worst = covered(&frame).fold(1.0f32, f32::min);
+                assert!(
+                    worst >= 0.999,
+                    "{} with {} depth, mips {}, camera {}: lowest AO {worst} on an open plane",
+                    method.name(),
+                    sample_depth.name(),
+                    depth_mips.name(),
+                    camera.name
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_nearest_depth_read_moves_the_slice_methods_ao_a_little_and_switches_at_runtime() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let camera = &scene.cameras[0];
+    for method in Method::ALL.into_iter().filter(|m| m.marches_slices()) {
+        let at = |sample_depth| AoSettings {
+            sample_depth,
+            ..scene_settings(&scene, method, Preset::High)
+        };
+        let nearest = render(&gpu, &scene, camera, &at(SampleDepth::Nearest)).ao;
+        let interpolated = render(&gpu, &scene, camera, &at(SampleDepth::Interpolated)).ao;
+        assert_ne!(nearest, interpolated, "{}: the read changed nothing", method.name());
+        let mean_change = nearest
+            .iter()
+            .zip(&interpolated)
+            .map(|(a, b)| (a - b).abs())
+            .sum::<f32>()
+            / nearest.len() as f32;
+        assert!(mean_change < 0.01, "{}: mean change {mean_change}", method.name());
+        let mut renderer = Renderer::new(&gpu, &scene, &at(SampleDepth::Nearest)).unwrap();
+        renderer
+            .set_settings(&gpu, &at(SampleDepth::Interpolated))
+            .unwrap();
+        let switched = renderer.render(&gpu, camera, SIZE, 0).unwrap().ao;
+        assert_eq!(switched, interpolated, "{}", method.name());
     }
 }
 

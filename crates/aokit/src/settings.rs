@@ -121,6 +121,20 @@ impl Method {
         matches!(self, Method::Gtao | Method::Vbao)
     }
 
+    /// Whether the method's samples lie in slices (half-planes through the view vector), which
+    /// is what lets them read the nearest texel ([`AoSettings::sample_depth`]): the others read
+    /// theirs one way only.
+    ///
+    /// ```
+    /// use aokit::Method;
+    /// let marching: Vec<Method> =
+    ///     Method::ALL.into_iter().filter(|m| m.marches_slices()).collect();
+    /// assert_eq!(marching, [Method::Hbao, Method::HbaoPlus, Method::Gtao, Method::Vbao]);
+    /// ```
+    pub fn marches_slices(self) -> bool {
+        matches!(self, Method::Hbao | Method::HbaoPlus | Method::Gtao | Method::Vbao)
+    }
+
     /// Whether the method's kernel reads a depth MIP chain, which the pipeline then builds
     /// from the working linear depth each frame (and otherwise never makes): `sao`'s keeps one
     /// depth of every 2x2 block (and `msvo`'s, whose levels are its scales), `ue4-ssao`'s the
@@ -717,6 +731,37 @@ named_enum! {
     }
 }
 
+named_enum! {
+    /// How the slice methods (`gtao`, `vbao`, `hbao`, `hbao-plus`:
+    /// [`Method::marches_slices`]) read the depth where a sample lands
+    /// (docs/methods.md#sample-depth). The point methods always interpolate, since the nearest
+    /// texel makes a plane seen at a grazing angle occlude itself there; the separable `hbao`,
+    /// `sao`, `ue4-ssao` and `msvo` read theirs one way only.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method, Preset, SampleDepth};
+    /// // The exact read, for stills where the kernel's time matters less than the last 0.5%.
+    /// let settings = AoSettings {
+    ///     sample_depth: SampleDepth::Interpolated,
+    ///     ..AoSettings::preset(Method::Gtao, Preset::High)
+    /// };
+    /// settings.validate()?;
+    /// # Ok::<(), aokit::SettingsError>(())
+    /// ```
+    pub enum SampleDepth ("sample depth") {
+        /// The texel the sample lands in, at its centre: one load. The slice methods slide
+        /// that point into the slice within the pixel's tangent plane, so a plane seen at any
+        /// angle stays unoccluded. The default: on an H100 the kernels take about three
+        /// quarters of the interpolated read's time (docs/performance.md).
+        #[default]
+        Nearest = "nearest",
+        /// Inside one surface, 1 / depth interpolated over the 2x2 texels around the sample,
+        /// exact on a plane; the nearest texel across a depth edge. A gather and about half a
+        /// sample's arithmetic more, for slightly lower error (docs/methods.md#sample-depth).
+        Interpolated = "interpolated",
+    }
+}
+
 /// Largest [`SpatialSettings::radius`]: the filter's workgroup tile holds the row or column
 /// segment of its 64 threads plus this many pixels on each side, and the guided filter's tile
 /// the 8x8 block of its threads plus as many on each side (24x24 texels, 9 KiB of the 16 KiB
@@ -1260,6 +1305,8 @@ pub struct AoSettings {
     /// (XeGTAO's `depthMIPSamplingOffset`, which rounds where this floors). Larger keeps more
     /// samples at full resolution; 16 keeps all of them.
     pub depth_mip_offset: f32,
+    /// How the slice methods' samples read the depth where they land.
+    pub sample_depth: SampleDepth,
 }
 
 impl Default for AoSettings {
@@ -1369,6 +1416,7 @@ impl AoSettings {
             // The lowest offset at which no measured configuration's error rises by more than
             // 0.001 (docs/depth-mips.md).
             depth_mip_offset: 3.0,
+            sample_depth: SampleDepth::default(),
         }
     }
 
@@ -1863,6 +1911,9 @@ mod tests {
         }
         for f in FilterResolution::ALL {
             assert_eq!(f.name().parse::<FilterResolution>().unwrap(), f);
+        }
+        for m in SampleDepth::ALL {
+            assert_eq!(m.name().parse::<SampleDepth>().unwrap(), m);
         }
         for m in DepthMips::ALL {
             assert_eq!(m.name().parse::<DepthMips>().unwrap(), m);

@@ -185,11 +185,11 @@ fn footprint(q: vec2<f32>, level: u32) -> Footprint {
 // The surface seen at continuous pixel position `q`, read at depth MIP level `level` (0: the
 // working depth; see mip_level). Inside one surface, 1 / depth (perspective) or depth
 // (orthographic) is affine in screen space across a plane, so interpolating it bilinearly
-// gives the depth exactly at `q`, on a plane seen at any angle; reading the nearest texel
-// instead makes planes seen at grazing angles occlude themselves. Across a depth edge
-// interpolation would invent a surface between foreground and background, so there the nearest
-// texel is returned with its centre. A coarser level does the same on its own grid, whose
-// texels are 2^level pixels wide.
+// gives the depth exactly at `q`, on a plane seen at any angle; a point method comparing a
+// sample with the nearest texel instead sees planes at grazing angles occlude themselves.
+// Across a depth edge interpolation would invent a surface between foreground and background,
+// so there the nearest texel is returned with its centre. A coarser level does the same on its
+// own grid, whose texels are 2^level pixels wide.
 fn surface_at(q: vec2<f32>, level: u32) -> SeenSurface {
     // The 2x2 texels around `q`, gathered at their shared corner: a coordinate there cannot
     // round into a neighbouring footprint the way `q` itself can near texel centres, so `f`
@@ -214,6 +214,20 @@ fn surface_at(q: vec2<f32>, level: u32) -> SeenSurface {
     let depth = select(select(depths.w, depths.z, right), select(depths.x, depths.y, right), bottom);
     let texel = corner + select(vec2<f32>(-0.5), vec2<f32>(0.5), vec2<bool>(right, bottom));
     return SeenSurface(depth, texel * read.scale, false);
+}
+
+// The texel of `level` that continuous pixel position `q` lies in, seen at its centre: one load
+// where surface_at takes a gather and its interpolation. Never `exact`.
+fn nearest_surface(q: vec2<f32>, level: u32) -> SeenSurface {
+    if DEPTH_MIPS == DEPTH_MIPS_ATLAS || (DEPTH_MIPS == DEPTH_MIPS_COARSE && level > 0u) {
+        let scale = f32(1u << level);
+        let texel = min(floor(q / scale), max(floor(view.size / scale), vec2<f32>(1.0)) - 1.0);
+        let origin = select(vec2<f32>(0.0), atlas_origin(level), level > 0u);
+        let depth = textureLoad(depth_mips, vec2<u32>(origin + texel), 0).r;
+        return SeenSurface(depth, (texel + 0.5) * scale, false);
+    }
+    let texel = floor(q);
+    return SeenSurface(textureLoad(linear_depth, vec2<u32>(texel), 0).r, texel + 0.5, false);
 }
 
 // Linear depth of the surface seen at continuous pixel position `q`, read at MIP level `level`

@@ -12,7 +12,7 @@ use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_uniform_buffer, stand_in_view};
 use crate::noise;
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
-use crate::settings::{AoSettings, Method, NoiseKind};
+use crate::settings::{AoSettings, Method, NoiseKind, SampleDepth};
 use crate::shader;
 use crate::uniforms::AoUniforms;
 
@@ -45,10 +45,13 @@ impl DepthMipsRead {
 
 /// Runs the kernel of the current method.
 pub struct MethodPass {
-    /// By method and how it reads the depth MIP atlas.
-    kernels: HashMap<(Method, DepthMipsRead), ComputeKernel>,
+    /// By method, how it reads the depth MIP atlas and how its samples read depth.
+    /// (`None` for the methods that read depth one way only).
+    kernels: HashMap<(Method, DepthMipsRead, Option<SampleDepth>), ComputeKernel>,
     /// How the kernel of the current settings reads the atlas.
     depth_mips_read: DepthMipsRead,
+    /// How the samples of the current settings' kernel read depth.
+    sample_depth: Option<SampleDepth>,
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
     /// Bound in place of the bent normals when they are off: the kernels never write it.
@@ -106,6 +109,7 @@ impl MethodPass {
         let mut pass = Self {
             kernels: HashMap::new(),
             depth_mips_read: DepthMipsRead::Off,
+            sample_depth: None,
             uniforms: create_uniform_buffer::<AoUniforms>(device, "aokit method settings"),
             point_clamp,
             bent_placeholder: placeholder(
@@ -147,15 +151,25 @@ impl MethodPass {
         // (`SeparableHbaoPass`, `MsvoPass`).
         if !settings.separable_hbao() && settings.method != Method::Msvo {
             let read = DepthMipsRead::of(settings);
+            let sample_depth = settings
+                .method
+                .marches_slices()
+                .then_some(settings.sample_depth);
             self.depth_mips_read = read;
+            self.sample_depth = sample_depth;
             self.kernels
-                .entry((settings.method, read))
+                .entry((settings.method, read, sample_depth))
                 .or_insert_with(|| {
+                    let mut constants = vec![("DEPTH_MIPS", f64::from(read as u32))];
+                    if let Some(sample_depth) = sample_depth {
+                        let nearest = sample_depth == SampleDepth::Nearest;
+                        constants.push(("NEAREST_DEPTH", f64::from(u8::from(nearest))));
+                    }
                     ComputeKernel::with_constants(
                         device,
                         &shader::method(settings.method),
                         &method_layout(settings.method),
-                        &[("DEPTH_MIPS", f64::from(read as u32))],
+                        &constants,
                     )
                 });
         }
@@ -201,7 +215,7 @@ impl MethodPass {
             Some(_) => self.depth_mips_read,
             None => DepthMipsRead::Off,
         };
-        let kernel = &self.kernels[&(method, read)];
+        let kernel = &self.kernels[&(method, read, self.sample_depth)];
         let mut resources = self
             .bindings(linear_depth, normals, ao, bent_normals, depth_mips)
             .to_vec();
@@ -243,6 +257,18 @@ impl MethodPass {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_slice_methods_are_the_kernels_with_a_nearest_read() {
+        for method in Method::ALL {
+            let program = shader::method(method);
+            assert_eq!(
+                program.parts.contains(&shader::SLICE),
+                method.marches_slices(),
+                "{method:?}"
+            );
+        }
+    }
 
     #[test]
     fn depth_mips_read_codes_match_wgsl() {
