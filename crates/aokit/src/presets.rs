@@ -67,25 +67,25 @@ pub(crate) fn preset_values(method: Method, preset: Preset) -> Tuned {
         // chords weight its samples), power and radius as given.
         (Method::Msvo, _) => tuned([samples(preset), 1], 1.0, 0.0, 1.0, 1.0, 1.0),
         (Method::Ssao, Preset::Low) => tuned([4, 1], 1.0, 1.0, 0.005, 1.0, 1.2),
-        (Method::Ssao, Preset::Medium) => tuned([8, 1], 1.0, 0.35, 0.005, 1.0, 1.1),
-        (Method::Ssao, Preset::High) => tuned([18, 1], 1.0, 0.5, 0.005, 1.4, 1.0),
-        (Method::Ssao, Preset::Ultra) => tuned([54, 1], 1.0, 0.5, 0.005, 1.6, 1.0),
+        (Method::Ssao, Preset::Medium) => tuned([8, 1], 1.0, 0.5, 0.005, 1.1, 1.1),
+        (Method::Ssao, Preset::High) => tuned([18, 1], 1.0, 0.75, 0.005, 1.6, 1.2),
+        (Method::Ssao, Preset::Ultra) => tuned([54, 1], 1.0, 0.75, 0.005, 2.0, 1.1),
         (Method::Hbao, Preset::Low) => tuned([2, 2], 1.5, 0.0, 0.0, 0.9, 1.5),
-        (Method::Hbao, Preset::Medium) => tuned([4, 2], 1.5, 0.0, 0.1, 1.6, 1.35),
-        (Method::Hbao, Preset::High) => tuned([3, 6], 2.0, 0.0, 0.05, 1.0, 1.35),
+        (Method::Hbao, Preset::Medium) => tuned([4, 2], 1.5, 0.0, 0.05, 1.4, 1.5),
+        (Method::Hbao, Preset::High) => tuned([6, 3], 1.5, 0.0, 0.05, 1.25, 1.35),
         (Method::Hbao, Preset::Ultra) => tuned([6, 9], 1.75, 0.0, 0.1, 1.0, 1.35),
-        (Method::HbaoPlus, Preset::Low) => tuned([2, 2], 1.5, 0.0, 0.0, 3.0, 1.2),
+        (Method::HbaoPlus, Preset::Low) => tuned([2, 2], 1.75, 0.0, 0.0, 2.5, 1.5),
         (Method::HbaoPlus, Preset::Medium) => tuned([4, 2], 1.5, 0.0, 0.05, 3.5, 1.5),
-        (Method::HbaoPlus, Preset::High) => tuned([3, 6], 1.5, 0.0, 0.05, 3.5, 1.5),
-        (Method::HbaoPlus, Preset::Ultra) => tuned([6, 9], 1.5, 0.0, 0.05, 3.5, 1.7),
+        (Method::HbaoPlus, Preset::High) => tuned([6, 3], 1.5, 0.0, 0.05, 3.5, 1.5),
+        (Method::HbaoPlus, Preset::Ultra) => tuned([6, 9], 1.5, 0.0, 0.05, 3.5, 1.5),
         (Method::Gtao, Preset::Low) => tuned([2, 1], 1.0, 0.0, 0.0, 1.1, 1.35),
         (Method::Gtao, Preset::Medium) => tuned([2, 2], 1.0, 0.0, 0.0, 1.0, 1.1),
-        (Method::Gtao, Preset::High) => tuned([3, 3], 1.0, 0.0, 0.05, 1.1, 1.1),
-        (Method::Gtao, Preset::Ultra) => tuned([3, 9], 1.0, 0.1, 0.0, 1.1, 0.8),
+        (Method::Gtao, Preset::High) => tuned([3, 3], 1.25, 0.0, 0.05, 1.1, 1.1),
+        (Method::Gtao, Preset::Ultra) => tuned([3, 9], 1.25, 0.1, 0.0, 1.1, 0.8),
         (Method::Vbao, Preset::Low) => tuned([2, 1], 1.0, 0.0, 0.45, 1.4, 1.2),
-        (Method::Vbao, Preset::Medium) => tuned([2, 2], 1.0, 0.0, 0.45, 1.1, 1.1),
-        (Method::Vbao, Preset::High) => tuned([3, 3], 1.25, 0.0, 0.45, 1.1, 1.0),
-        (Method::Vbao, Preset::Ultra) => tuned([3, 9], 1.5, 0.0, 0.2, 1.0, 1.0),
+        (Method::Vbao, Preset::Medium) => tuned([2, 2], 1.25, 0.0, 0.45, 1.1, 1.2),
+        (Method::Vbao, Preset::High) => tuned([3, 3], 1.5, 0.0, 0.45, 1.1, 1.1),
+        (Method::Vbao, Preset::Ultra) => tuned([3, 9], 1.75, 0.0, 0.2, 1.0, 1.1),
     }
 }
 
@@ -96,7 +96,7 @@ pub(crate) fn vbao_back_faces_values(preset: Preset) -> Tuned {
     match preset {
         Preset::Low => tuned([2, 1], 1.0, 0.0, 0.2, 1.4, 1.2),
         Preset::Medium => tuned([2, 2], 1.25, 0.0, 0.15, 1.25, 1.2),
-        Preset::High => tuned([3, 3], 1.25, 0.0, 0.1, 1.25, 1.1),
+        Preset::High => tuned([3, 3], 1.5, 0.0, 0.1, 1.25, 1.2),
         Preset::Ultra => tuned([3, 9], 1.75, 0.0, 0.05, 1.0, 1.1),
     }
 }
