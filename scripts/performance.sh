@@ -82,3 +82,12 @@ for method in gtao vbao hbao ssao; do
     )
 done
 bench_each_view depth-mips "${depth_mips[@]}"
+# How the slice methods' samples read depth (docs/methods.md#sample-depth): the default nearest
+# texel against the interpolated read, to OUT/sample-depth-SCENE-SIZE.json.
+sample_depth=()
+for configuration in "--method gtao --preset high" "--method gtao --preset ultra" \
+    "--method vbao --preset high" "--method hbao --preset high" "--method hbao-plus --preset high" \
+    "--method gtao --preset high --set resolution=half"; do
+    sample_depth+=("$configuration" "$configuration --set sample_depth=interpolated")
+done
+bench_each_view sample-depth "${sample_depth[@]}"

@@ -5,8 +5,10 @@
 
 DIR is performance.sh's output directory (target/performance by default there). Prints, in the
 page's markdown, the two "Every method and preset" tables (`room` and Sponza's atrium, from
-SCENE-SIZE-RESOLUTION.json) and the "Each pass" table (from passes-sponza-atrium-SIZE.json):
-medians of the total and per-pass GPU time in milliseconds, to 3 decimals. Standard library only.
+SCENE-SIZE-RESOLUTION.json), the "Each pass" table (from passes-sponza-atrium-SIZE.json), and
+one table for each set that performance.sh times on both views and sizes (variants, depth-mips,
+sample-depth: NAME-SCENE-SIZE.json, each row's ratio to the row it extends beside it): medians
+of the total and per-pass GPU time in milliseconds, to 3 decimals. Standard library only.
 """
 import json
 import sys
@@ -96,12 +98,45 @@ def pass_table(out):
             print("| " + " | ".join(cells) + " |")
 
 
+def base_row(configurations, i):
+    """The row configuration i extends: the last earlier one whose options it starts with
+    (`--method gtao --preset high` for `... --set depth_mips=fp32`), else the first."""
+    words = configurations[i].split()
+    for j in range(i - 1, -1, -1):
+        if words[:len(configurations[j].split())] == configurations[j].split():
+            return j
+    return 0
+
+
+def each_view_table(out, name):
+    """The frame's median ms of each configuration on both views at both sizes, in brackets
+    its ratio to the row it extends (base_row)."""
+    views = [(scene, size) for scene, _ in SCENES for size in SIZES]
+    runs = [load(out / f"{name}-{scene}-{size}.json") for scene, size in views]
+    configurations = [r["configuration"] for r in runs[0]]
+    print(f"`{name}`:\n")
+    print("| configuration | " + " | ".join(f"{scene} {size}" for scene, size in views) + " |")
+    print("|---|" + "--:|" * len(views))
+    for i, configuration in enumerate(configurations):
+        assert all(run[i]["configuration"] == configuration for run in runs), configuration
+        base = base_row(configurations, i)
+        cells = [f"`{configuration}`"]
+        for run in runs:
+            median = run[i]["total_gpu_ms"]["median"]
+            cells.append(f"{ms(median)} ({median / run[base]['total_gpu_ms']['median']:.2f})")
+        print("| " + " | ".join(cells) + " |")
+    print()
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     out = Path(sys.argv[1])
     method_tables(out)
     pass_table(out)
+    print()
+    for name in ("variants", "depth-mips", "sample-depth"):
+        each_view_table(out, name)
 
 
 if __name__ == "__main__":
