@@ -122,28 +122,19 @@ fn upsample_pixel(pixel: vec2<u32>, texels: Texels) {
     store(pixel, ao, bent);
 }
 
-// One invocation per block of SCALE x SCALE pixels that share their 2x2 working texels: the
-// pixels whose centres lie between the centres of texels `id - 1` and `id` along each axis.
-// Fetching the texels once per block rather than per pixel is a quarter (a sixteenth at a
-// scale of 4) of the gathers. On lavapipe at 320x180 that took the pass from 0.64 to 0.53 ms
-// (perf samples of a half-resolution HBAO frame); the rest is each pixel's depth read and
-// stores (docs/performance.md, "Half and quarter resolution"). Blocks of the first row and
-// column reach one texel before the image, clamped to its edge, as the last ones reach past
-// it.
-@compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    let first = vec2<i32>(id.xy * SCALE) - i32(SCALE / 2u);
-    if any(first >= vec2<i32>(view.size)) {
-        return;
-    }
+// The 2x2 working texels that the pixels of block `block` combine: the pixels whose centres lie
+// between the centres of texels `block - 1` and `block` along each axis (SCALE x SCALE of them).
+// Blocks of the first row and column reach one texel before the image, clamped to its edge, as
+// the last ones reach past it.
+fn block_texels(block: vec2<u32>) -> Texels {
     var texels: Texels;
-    texels.corner = vec2<f32>(id.xy) - 1.0;
+    texels.corner = vec2<f32>(block) - 1.0;
     // Gathered at the texels' shared corner, two fetches where loads took eight (on an H100 the
     // pass took 0.60 to 0.68 of its time with loads, with identical output). Gather order is
     // (left, bottom), (right, bottom), (right, top), (left, top), "top" the smaller row, and
     // .wzxy puts them in Texels' order. The corner lies half a texel from any rounding
     // boundary, so the footprint is exactly the texels it names.
-    let uv = vec2<f32>(id.xy) / vec2<f32>(textureDimensions(depth_working));
+    let uv = vec2<f32>(block) / vec2<f32>(textureDimensions(depth_working));
     texels.depths = textureGather(0, depth_working, point_clamp, uv).wzxy;
     texels.aos = textureGather(0, ao_in, point_clamp, uv).wzxy;
     if BENT_NORMALS {
@@ -153,12 +144,17 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
             texels.bent[k] = textureLoad(bent_in, texel, 0);
         }
     }
-    for (var y = 0; y < i32(SCALE); y++) {
-        for (var x = 0; x < i32(SCALE); x++) {
-            let pixel = first + vec2<i32>(x, y);
-            if all(pixel >= vec2<i32>(0)) && all(pixel < vec2<i32>(view.size)) {
-                upsample_pixel(vec2<u32>(pixel), texels);
-            }
-        }
+    return texels;
+}
+
+// One invocation per pixel. One per block, fetching the block's texels once for all its
+// pixels, took a fifth off the pass on lavapipe but made it 1.6 (half resolution) to 3.5
+// (quarter, 3840x2160) times as long on an H100: a quarter or a sixteenth as many invocations
+// to hide the latency, and each one's stores SCALE pixels apart (docs/performance.md).
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if any(id.xy >= vec2<u32>(view.size)) {
+        return;
     }
+    upsample_pixel(id.xy, block_texels((id.xy + SCALE / 2u) / SCALE));
 }

@@ -246,9 +246,6 @@ impl ResamplePass {
         let (bent_in, bent_out) =
             bent_normals.unwrap_or((&self.bent_in_placeholder, &self.bent_out_placeholder));
         let key = self.current.expect("prepare comes first").1;
-        let (_, _, scale, _, _) = key;
-        let size = ctx.size;
-        ctx.size = upsample_blocks(size, scale);
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
             &self.upsamples[&key],
@@ -265,15 +262,7 @@ impl ResamplePass {
                 view(linear_depth.unwrap_or(&self.linear_out_placeholder)),
             ],
         );
-        ctx.size = size;
     }
-}
-
-/// The upsample's invocations over an input of `size` at `scale`: one per block of pixels
-/// sharing their working texels, the first and last blocks reaching half a block past the
-/// image (`upsample.wgsl`'s `main`).
-fn upsample_blocks(size: [u32; 2], scale: u32) -> [u32; 2] {
-    size.map(|n| (n + scale / 2 - 1) / scale + 1)
 }
 
 #[cfg(test)]
