@@ -740,7 +740,7 @@ named_enum! {
     ///
     /// ```
     /// use aokit::{AoSettings, Method, Preset, SampleDepth};
-    /// // The exact read, for stills where the kernel's time matters less than the last 0.5%.
+    /// // The exact read, for stills where the kernel's time matters less than the last 1%.
     /// let settings = AoSettings {
     ///     sample_depth: SampleDepth::Interpolated,
     ///     ..AoSettings::preset(Method::Gtao, Preset::High)
@@ -749,10 +749,11 @@ named_enum! {
     /// # Ok::<(), aokit::SettingsError>(())
     /// ```
     pub enum SampleDepth ("sample depth") {
-        /// The texel the sample lands in, at its centre: one load. The slice methods slide
-        /// that point into the slice within the pixel's tangent plane, so a plane seen at any
-        /// angle stays unoccluded. The default: on an H100 the kernels take about three
-        /// quarters of the interpolated read's time (docs/performance.md).
+        /// The texel the sample lands in: one load. Its point is moved onto the view ray
+        /// through the sample, which lies in the slice, at the same height above the pixel's
+        /// tangent plane, so a plane seen at any angle stays unoccluded. The default: on an
+        /// H100 the frames take about four fifths of the interpolated read's time
+        /// (docs/performance.md).
         #[default]
         Nearest = "nearest",
         /// Inside one surface, 1 / depth interpolated over the 2x2 texels around the sample,
