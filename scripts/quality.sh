@@ -136,4 +136,12 @@ fi
 if [[ $methods == all || ,$methods, == *,vbao,* ]]; then
     variant vbao vbao-back-faces docs/images/vbao-back-faces "" --set vbao.back_faces=true
 fi
+# docs/methods.md's sample depth: the slice methods with the interpolated read, beside their
+# own tables (the default nearest read).
+for method in gtao vbao hbao hbao-plus; do
+    if [[ $methods == all || ,$methods, == *,$method,* ]]; then
+        variant "$method" "$method-interpolated" docs/images/sample-depth "-$method-interpolated" \
+            --set sample_depth=interpolated
+    fi
+done
 echo "wrote docs/quality.md, docs/methods.md's tables, $images/ and $pictures/"
