@@ -257,7 +257,7 @@ fn rmse_against_reference(gpu: &GpuContext, scene: &Scene, methods: &[Method]) -
 }
 
 #[test]
-fn vbao_beats_gtao_behind_thin_objects_and_gtao_beats_ssao_and_hbao_in_the_room() {
+fn vbao_beats_gtao_behind_thin_objects_and_gtao_beats_both_ssaos_in_the_room() {
     let gpu = gpu();
     let thin = rmse_against_reference(&gpu, &Builtin::Thin.build(), &[Method::Gtao, Method::Vbao]);
     assert!(
@@ -266,12 +266,15 @@ fn vbao_beats_gtao_behind_thin_objects_and_gtao_beats_ssao_and_hbao_in_the_room(
         thin[1],
         thin[0]
     );
+    // Not HBAO: with the presets of the converged tuning the two lie within 2% of each other
+    // here (GTAO 0.0557, HBAO 0.0545 at this size; 0.0545 and 0.0547 at 480x270), and HBAO is
+    // lower on Sponza (docs/methods.md, "Against the targets").
     let room = rmse_against_reference(
         &gpu,
         &Builtin::Room.build(),
-        &[Method::Gtao, Method::Ssao, Method::SsaoCrytek, Method::Hbao],
+        &[Method::Gtao, Method::Ssao, Method::SsaoCrytek],
     );
-    for (name, rmse) in ["ssao", "ssao-crytek", "hbao"].iter().zip(&room[1..]) {
+    for (name, rmse) in ["ssao", "ssao-crytek"].iter().zip(&room[1..]) {
         assert!(
             room[0] < *rmse,
             "room: GTAO RMSE {} vs {name} {rmse}",
@@ -350,14 +353,23 @@ fn the_nearest_depth_read_moves_the_slice_methods_ao_a_little_and_switches_at_ru
         };
         let nearest = render(&gpu, &scene, camera, &at(SampleDepth::Nearest)).ao;
         let interpolated = render(&gpu, &scene, camera, &at(SampleDepth::Interpolated)).ao;
-        assert_ne!(nearest, interpolated, "{}: the read changed nothing", method.name());
+        assert_ne!(
+            nearest,
+            interpolated,
+            "{}: the read changed nothing",
+            method.name()
+        );
         let mean_change = nearest
             .iter()
             .zip(&interpolated)
             .map(|(a, b)| (a - b).abs())
             .sum::<f32>()
             / nearest.len() as f32;
-        assert!(mean_change < 0.01, "{}: mean change {mean_change}", method.name());
+        assert!(
+            mean_change < 0.01,
+            "{}: mean change {mean_change}",
+            method.name()
+        );
         let mut renderer = Renderer::new(&gpu, &scene, &at(SampleDepth::Nearest)).unwrap();
         renderer
             .set_settings(&gpu, &at(SampleDepth::Interpolated))

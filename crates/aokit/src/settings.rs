@@ -132,7 +132,10 @@ impl Method {
     /// assert_eq!(marching, [Method::Hbao, Method::HbaoPlus, Method::Gtao, Method::Vbao]);
     /// ```
     pub fn marches_slices(self) -> bool {
-        matches!(self, Method::Hbao | Method::HbaoPlus | Method::Gtao | Method::Vbao)
+        matches!(
+            self,
+            Method::Hbao | Method::HbaoPlus | Method::Gtao | Method::Vbao
+        )
     }
 
     /// Whether the method's kernel reads a depth MIP chain, which the pipeline then builds
@@ -1056,7 +1059,7 @@ impl HbaoSettings {
     /// ```
     /// use aokit::{HbaoSettings, Preset};
     /// let high = HbaoSettings::preset(Preset::High);
-    /// assert_eq!((high.direction_count, high.step_count), (3, 6));
+    /// assert_eq!((high.direction_count, high.step_count), (6, 3));
     /// ```
     pub fn preset(preset: Preset) -> Self {
         let [direction_count, step_count] = presets::preset_values(Method::Hbao, preset).split;
