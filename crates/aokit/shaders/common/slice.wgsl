@@ -56,8 +56,11 @@ fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f3
     let near = view_position(q, 0.0);
     let along = view_position(q, 1.0) - near;
     let d = dot(seen_at - near, n) / dot(along, n);
-    if !(d > 0.0 && d < MAX_DEPTH) {
-        return vec4<f32>(0.0);
+    // Where the ray meets that plane well in front of the texel, the texel is not on a surface
+    // parallel to the pixel's (the background behind a silhouette, which the ray would bring up
+    // to the pixel as an occluder): its own point is the better guess.
+    if !(d > 0.0 && seen.depth <= d * (1.0 + DEPTH_EDGE)) {
+        return vec4<f32>(seen_at - p, 1.0);
     }
     return vec4<f32>(near + d * along - p, 1.0);
 }
