@@ -142,6 +142,21 @@ fn settings_flags_reach_the_pipeline() {
 }
 
 #[test]
+fn the_sample_depth_read_is_reachable_from_the_command_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let render = |read: &str| {
+        let setting = format!("sample_depth={read}");
+        let out = aokit(
+            dir.path(),
+            &["render", "--size", "64x48", "--set", &setting, "--out", read],
+        );
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        read_exr_channel(&dir.path().join(read).join("ao.exr"), "Y").0
+    };
+    assert_ne!(render("nearest"), render("interpolated"));
+}
+
+#[test]
 fn bad_arguments_exit_2_and_name_the_problem() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("broken.obj"), "v 0 0 0\nf 1 2 3\n").unwrap();
@@ -164,6 +179,10 @@ fn bad_arguments_exit_2_and_name_the_problem() {
         (
             &["render", "--set", "spatial.guided_epsilon=0"],
             "spatial.guided_epsilon",
+        ),
+        (
+            &["render", "--set", "sample_depth=exact"],
+            "`nearest` or `interpolated`",
         ),
         (&["render", "--settings", "missing.toml"], "missing.toml"),
         (&["render", "--settings", "bad.toml"], "bad.toml"),

@@ -178,13 +178,14 @@ fn every_encoding_renders_normals_and_ao_close_to_oct32s() {
             // sample at its texel's height above the pixel's tangent plane, so the normal's
             // rounding reaches the AO about three times as strongly as through the interpolated
             // read, whose bounds these were (0.003 for oct16, 0.001 for the others): measured
-            // worst, on the stairs, oct16 0.0092, oct20 0.0038, oct24 0.0024, rgb10a2 0.0025.
+            // worst, on the stairs, oct16 0.0060, oct20 0.0029, oct24 and rgb10a2 0.0028,
+            // rgba16f 0.0011.
             let (worst_rounding, ao_bound) = match e {
-                NormalEncoding::Oct16 => (0.95, 0.012),
-                NormalEncoding::Oct20 => (0.24, 0.005),
-                NormalEncoding::Oct24 => (0.06, 0.003),
-                NormalEncoding::Rgb10a2 => (0.1, 0.003),
-                NormalEncoding::Rgba16f => (0.023, 0.001),
+                NormalEncoding::Oct16 => (0.95, 0.009),
+                NormalEncoding::Oct20 => (0.24, 0.004),
+                NormalEncoding::Oct24 => (0.06, 0.004),
+                NormalEncoding::Rgb10a2 => (0.1, 0.004),
+                NormalEncoding::Rgba16f => (0.023, 0.002),
                 // Mirrored normals on the stairs' risers move the AO visibly.
                 NormalEncoding::Xy => (0.34, 0.03),
                 NormalEncoding::Oct32

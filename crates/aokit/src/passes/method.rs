@@ -45,8 +45,8 @@ impl DepthMipsRead {
 
 /// Runs the kernel of the current method.
 pub struct MethodPass {
-    /// By method, how it reads the depth MIP atlas and how its samples read depth.
-    /// (`None` for the methods that read depth one way only).
+    /// By method, how it reads the depth MIP atlas and how its samples read depth (`None`
+    /// for the methods that read depth one way only).
     kernels: HashMap<(Method, DepthMipsRead, Option<SampleDepth>), ComputeKernel>,
     /// How the kernel of the current settings reads the atlas.
     depth_mips_read: DepthMipsRead,
