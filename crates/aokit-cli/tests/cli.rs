@@ -148,7 +148,9 @@ fn the_sample_depth_read_is_reachable_from_the_command_line() {
         let setting = format!("sample_depth={read}");
         let out = aokit(
             dir.path(),
-            &["render", "--size", "64x48", "--set", &setting, "--out", read],
+            &[
+                "render", "--size", "64x48", "--set", &setting, "--out", read,
+            ],
         );
         assert!(out.status.success(), "{}", text(&out.stderr));
         read_exr_channel(&dir.path().join(read).join("ao.exr"), "Y").0

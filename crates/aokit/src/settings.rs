@@ -755,7 +755,7 @@ named_enum! {
         /// The texel the sample lands in: one load. Its point is moved onto the view ray
         /// through the sample, which lies in the slice, at the same height above the pixel's
         /// tangent plane, so a plane seen at any angle stays unoccluded. The default: on an
-        /// H100 the slice methods' frames take 0.80 to 0.95 of the interpolated read's time
+        /// H100 the slice methods' frames take 0.79 to 0.95 of the interpolated read's time
         /// (docs/performance.md).
         #[default]
         Nearest = "nearest",

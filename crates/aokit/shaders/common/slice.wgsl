@@ -34,7 +34,7 @@ override NEAREST_DEPTH: bool = false;
 // at any angle stays unoccluded. (Sliding it within the tangent plane into the slice, the way
 // before, keeps the height too, but can shorten its distance to p many times over where the
 // texel lies mostly beside the slice: single pixels of a grazing open plane then read 0.89.)
-// The nearest read is the default: on an H100 GTAO `high`'s frame takes 0.82 to 0.88 of the
+// The nearest read is the default: on an H100 GTAO `high`'s frame takes 0.81 to 0.87 of the
 // interpolated read's time with it, for about 1% more error (docs/methods.md#sample-depth).
 fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f32> {
     var seen: SeenSurface;
