@@ -27,6 +27,11 @@ fn exr(path: &Path) -> Vec<f32> {
     aokit_eval::read_scalar_exr(path).unwrap().data
 }
 
+/// Mean of `|a - b|` over every pixel.
+fn mean_abs_difference(a: &[f32], b: &[f32]) -> f32 {
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum::<f32>() / a.len() as f32
+}
+
 #[test]
 fn reference_writes_the_ground_truth_and_the_gbuffer_deterministically() {
     let dir = tempfile::tempdir().unwrap();
@@ -165,12 +170,7 @@ fn ao_on_exported_passes_matches_render_itself() {
     );
     assert!(stdout.contains("reconstructed from depth"), "{stdout}");
     let reconstructed = exr(&d.join("n/ao.exr"));
-    let mean_difference = rendered
-        .iter()
-        .zip(&reconstructed)
-        .map(|(a, b)| (a - b).abs())
-        .sum::<f32>()
-        / rendered.len() as f32;
+    let mean_difference = mean_abs_difference(&rendered, &reconstructed);
     assert!(mean_difference < 0.05, "mean difference {mean_difference}");
 }
 
@@ -586,12 +586,7 @@ fn ao_measures_vbao_occluders_from_a_back_face_depth_file() {
         ],
     );
     let (rendered, again) = (exr(&d.join("g/ao.exr")), exr(&d.join("again/ao.exr")));
-    let difference = rendered
-        .iter()
-        .zip(&again)
-        .map(|(a, b)| (a - b).abs())
-        .sum::<f32>()
-        / again.len() as f32;
+    let difference = mean_abs_difference(&rendered, &again);
     assert!(difference < 0.002, "mean difference {difference}");
     // Every surface 5 units deep: solid, as the room's sphere and boxes are.
     let depth = aokit_eval::read_depth(&d.join("g/depth.exr")).unwrap().data;

@@ -8,7 +8,8 @@ use aokit::{
 };
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
 use common::{
-    assert_in_range_with_sky_at_one, covered, gpu, pixel_of, render_frame, scene_settings, trace,
+    assert_in_range_with_sky_at_one, covered, gpu, mean_abs_difference, pixel_of, render_frame,
+    scene_settings, trace,
 };
 use glam::Vec3;
 
@@ -359,12 +360,7 @@ fn the_nearest_depth_read_moves_the_slice_methods_ao_a_little_and_switches_at_ru
             "{}: the read changed nothing",
             method.name()
         );
-        let mean_change = nearest
-            .iter()
-            .zip(&interpolated)
-            .map(|(a, b)| (a - b).abs())
-            .sum::<f32>()
-            / nearest.len() as f32;
+        let mean_change = mean_abs_difference(&nearest, &interpolated);
         assert!(
             mean_change < 0.01,
             "{}: mean change {mean_change}",

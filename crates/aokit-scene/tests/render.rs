@@ -5,7 +5,7 @@ mod common;
 use aokit::{AoSettings, GpuContext, Preset, Projection};
 use aokit_scene::external::{self, Passes};
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
-use common::gpu;
+use common::{gpu, mean_abs_difference};
 use glam::{Vec2, Vec3};
 
 const SIZE: [u32; 2] = [192, 128];
@@ -233,13 +233,7 @@ fn ao_does_not_depend_on_the_depth_convention() {
             ..base
         },
     );
-    let mean_diff = reference
-        .ao
-        .iter()
-        .zip(&standard.ao)
-        .map(|(a, b)| (a - b).abs())
-        .sum::<f32>()
-        / reference.ao.len() as f32;
+    let mean_diff = mean_abs_difference(&reference.ao, &standard.ao);
     assert!(
         mean_diff < 0.01,
         "mean AO difference between depth conventions {mean_diff}"

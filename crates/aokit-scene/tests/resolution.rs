@@ -12,7 +12,10 @@ use aokit::{
     Resolution, Upsample,
 };
 use aokit_scene::{Builtin, Camera, CameraPath, Frame, Renderer, Scene};
-use common::{DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, rmse, trace};
+use common::{
+    DepthCopy, copy_depth, encode_frame, gpu, linear_depth_texture, mean_abs_difference, rmse,
+    trace,
+};
 use glam::{Vec2, Vec3};
 
 /// A frame's depth, normals and motion vectors as a renderer hands them to the pipeline.
@@ -260,13 +263,7 @@ fn motion_vectors_at_working_resolution_reproject_as_the_camera_does() {
             let r = o.history_rejected.as_ref().unwrap();
             r.iter().sum::<f32>() / r.len() as f32
         };
-        let mean_difference = camera
-            .ao
-            .iter()
-            .zip(&motion.ao)
-            .map(|(a, b)| (a - b).abs())
-            .sum::<f32>()
-            / camera.ao.len() as f32;
+        let mean_difference = mean_abs_difference(&camera.ao, &motion.ao);
         // Both reproject each working texel's surface to the same place, up to rounding; motion
         // vectors left in input pixels would land twice or four times too far and reject.
         assert!(

@@ -73,6 +73,11 @@ pub fn encode_frame<T>(
     read(&outputs)
 }
 
+/// Mean of `|a - b|` over every pixel.
+pub fn mean_abs_difference(a: &[f32], b: &[f32]) -> f32 {
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum::<f32>() / a.len() as f32
+}
+
 /// RMSE of `a` against `b` over the pixels `keep` selects.
 pub fn rmse(a: &[f32], b: &[f32], keep: impl Fn(usize) -> bool) -> f64 {
     let errors: Vec<f64> = (0..a.len())
