@@ -593,11 +593,34 @@ impl ShaderSource {
     /// });
     /// # }
     /// ```
+    ///
+    /// aokit's own programs ([`ALL`]) are compiled without wgpu's loop bounding: wgpu counts the
+    /// iterations of every loop and leaves it after 2^64 in case it would never end (an endless
+    /// loop is undefined behaviour to the drivers' compilers), and on an H100 that counter costs
+    /// the method kernels 6 to 9% of their time (docs/performance.md, "Loop bounding"). Every
+    /// other program, one's own included, keeps all of wgpu's checks.
     pub fn create_module(&self, device: &wgpu::Device) -> wgpu::ShaderModule {
-        device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        let descriptor = wgpu::ShaderModuleDescriptor {
             label: Some(self.name),
             source: wgpu::ShaderSource::Wgsl(self.source().into()),
-        })
+        };
+        if !self.is_own() {
+            return device.create_shader_module(descriptor);
+        }
+        let checks = wgpu::ShaderRuntimeChecks {
+            force_loop_bounding: false,
+            ..wgpu::ShaderRuntimeChecks::checked()
+        };
+        // SAFETY: bounds checks stay on, and every loop of aokit's programs ends: each counts up
+        // or down by a fixed step to a bound that is a constant, a texture's size, or a count
+        // the settings' validation keeps finite, or shifts or divides an integer down to 0.
+        unsafe { device.create_shader_module_trusted(descriptor, checks) }
+    }
+
+    /// Whether this is one of aokit's programs, text for text.
+    fn is_own(&self) -> bool {
+        ALL.iter()
+            .any(|own| own.name == self.name && own.parts == self.parts)
     }
 
     /// The `@workgroup_size` of the program's compute entry point `main`, from parsing it.
@@ -751,6 +774,25 @@ mod tests {
         for shader in ALL {
             shader.validate().unwrap_or_else(|e| panic!("{e}"));
         }
+    }
+
+    #[test]
+    fn only_aokits_own_programs_skip_loop_bounding() {
+        assert!(ALL.iter().all(ShaderSource::is_own));
+        for program in [GTAO, method(Method::Vbao), SPATIAL_FILTER_HORIZONTAL] {
+            assert!(program.is_own(), "{}", program.name);
+        }
+        // A program of one's own under an aokit name, or aokit's parts with one more, is
+        // compiled with every check.
+        let renamed = ShaderSource {
+            name: "gtao",
+            parts: &[VIEW, "fn f() { loop {} }"],
+        };
+        let extended = ShaderSource {
+            name: "gtao",
+            parts: &[VIEW, ENCODING, NOISE, AO, AO_ENTRY, SLICE, "fn g() {}"],
+        };
+        assert!(!renamed.is_own() && !extended.is_own());
     }
 
     #[test]
