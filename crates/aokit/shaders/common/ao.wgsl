@@ -78,8 +78,6 @@ struct Surface {
     // Pixel centre, in pixels.
     center: vec2<f32>,
     depth: f32,
-    // unit_view_xy of the pixel centre.
-    unit_xy: vec2<f32>,
     // View-space position, unit vector towards the eye, unit normal.
     p: vec3<f32>,
     v: vec3<f32>,
@@ -90,8 +88,6 @@ struct Surface {
     // settings give relative to the radius (falloff, bias, thickness) scale with it.
     radius: f32,
     scale: f32,
-    // falloff_weight's slope here: ao.falloff_mul over scale.
-    falloff_mul: f32,
 }
 
 fn load_surface(pixel: vec2<u32>) -> Surface {
@@ -99,8 +95,7 @@ fn load_surface(pixel: vec2<u32>) -> Surface {
     s.pixel = pixel;
     s.center = vec2<f32>(pixel) + 0.5;
     s.depth = textureLoad(linear_depth, pixel, 0).r;
-    s.unit_xy = unit_view_xy(s.center);
-    s.p = unit_position(s.unit_xy, s.depth);
+    s.p = view_position(s.center, s.depth);
     s.v = view_direction(s.p);
     // A visible surface faces the eye, but normals interpolated across a silhouette, or
     // reconstructed from depth there, can face away, and a hemisphere about such a normal lies
@@ -112,7 +107,6 @@ fn load_surface(pixel: vec2<u32>) -> Surface {
     s.radius_px = clamp(unclamped, ao.min_radius_px, ao.max_radius_px);
     s.scale = select(1.0, s.radius_px / unclamped, unclamped > 0.0);
     s.radius = ao.radius * s.scale;
-    s.falloff_mul = ao.falloff_mul / s.scale;
     return s;
 }
 
@@ -248,7 +242,7 @@ fn depth_at(q: vec2<f32>, level: u32) -> f32 {
 // A sample's weight by its distance from the shaded point: 1 inside, fading to 0 at the
 // surface's radius.
 fn falloff_weight(s: Surface, distance: f32) -> f32 {
-    return saturate(distance * s.falloff_mul + ao.falloff_add);
+    return saturate(distance / s.scale * ao.falloff_mul + ao.falloff_add);
 }
 
 // Shapes visibility into the stored AO: intensity, power, then the distance fade.

@@ -36,7 +36,7 @@ override NEAREST_DEPTH: bool = false;
 // texel lies mostly beside the slice: single pixels of a grazing open plane then read 0.89.)
 // The nearest read is the default: on an H100 GTAO `high`'s frame takes 0.81 to 0.87 of the
 // interpolated read's time with it, for about 1% more error (docs/methods.md#sample-depth).
-fn slice_sample(q: vec2<f32>, q_xy: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f32> {
+fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f32> {
     var seen: SeenSurface;
     if NEAREST_DEPTH {
         seen = nearest_surface(q, level);
@@ -52,9 +52,9 @@ fn slice_sample(q: vec2<f32>, q_xy: vec2<f32>, level: u32, p: vec3<f32>, n: vec3
     }
     // The view ray through q, near + d * along for linear depth d, lies in the slice; the
     // sample is where it meets the plane through the texel's point parallel to the tangent
-    // plane at p. q_xy is q's unit_view_xy, which the march steps without a view position.
-    let near = vec3<f32>(q_xy * view.orthographic, 0.0);
-    let along = vec3<f32>(q_xy * (1.0 - view.orthographic), -1.0);
+    // plane at p.
+    let near = view_position(q, 0.0);
+    let along = view_position(q, 1.0) - near;
     let crossing = dot(seen_at - near, n) / dot(along, n);
     // A crossing far in front of the texel means the texel lies on no surface parallel to the
     // pixel's (the background behind a silhouette, which the ray would bring up to the pixel
@@ -80,8 +80,6 @@ struct Slice {
     tangent: vec3<f32>,
     // Unit normal of the slice plane.
     axis: vec3<f32>,
-    // unit_view_xy's change per pixel along omega.
-    unit_xy_step: vec2<f32>,
     // Length of the normal projected onto the slice plane: the slice's weight.
     n_len: f32,
     // Signed angle of the projected normal from V, positive towards +omega.
@@ -91,7 +89,6 @@ struct Slice {
 fn make_slice(s: Surface, phi: f32) -> Slice {
     var slice: Slice;
     slice.omega = vec2<f32>(cos(phi), sin(phi));
-    slice.unit_xy_step = unit_view_xy_per_pixel(slice.omega);
     // The same direction in view space (y up).
     let direction = vec3<f32>(slice.omega.x, -slice.omega.y, 0.0);
     slice.tangent = normalize(direction - dot(direction, s.v) * s.v);
@@ -125,8 +122,7 @@ fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f3
     if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
         return vec4<f32>(0.0);
     }
-    let q_xy = s.unit_xy + (side * distance_px) * slice.unit_xy_step;
-    let sample = slice_sample(q, q_xy, mip_level(distance_px), s.p, s.n);
+    let sample = slice_sample(q, mip_level(distance_px), s.p, s.n);
     if sample.w == 0.0 || side * dot(sample.xyz, slice.tangent) <= 0.0 {
         return vec4<f32>(0.0);
     }

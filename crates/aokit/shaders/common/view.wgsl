@@ -38,28 +38,12 @@ fn linearize_depth(ndc_depth: f32) -> f32 {
     return (c.x * ndc_depth + c.y) / (c.z * ndc_depth + c.w);
 }
 
-// View-space x and y of the point at `pixel` (in pixels, centres at +0.5) and linear depth 1
-// (perspective) or any depth (orthographic): view_position's, before the depth scales them.
-fn unit_view_xy(pixel: vec2<f32>) -> vec2<f32> {
-    let uv = pixel * view.uv_per_pixel;
-    let ndc = vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0) - view.ndc_offset;
-    return ndc * view.ndc_to_view;
-}
-
-// How unit_view_xy changes per pixel moved along `direction` (in pixels): it is affine in the
-// pixel position, so a march along a line needs it once.
-fn unit_view_xy_per_pixel(direction: vec2<f32>) -> vec2<f32> {
-    return direction * view.uv_per_pixel * vec2<f32>(2.0, -2.0) * view.ndc_to_view;
-}
-
 // View-space position of the point at `pixel` (in pixels, centres at +0.5) and linear depth.
 fn view_position(pixel: vec2<f32>, linear_depth: f32) -> vec3<f32> {
-    return unit_position(unit_view_xy(pixel), linear_depth);
-}
-
-// View-space position of the point with unit_view_xy `xy` at linear depth `linear_depth`.
-fn unit_position(xy: vec2<f32>, linear_depth: f32) -> vec3<f32> {
-    return vec3<f32>(xy * mix(linear_depth, 1.0, view.orthographic), -linear_depth);
+    let uv = pixel * view.uv_per_pixel;
+    let ndc = vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0) - view.ndc_offset;
+    let scale = mix(linear_depth, 1.0, view.orthographic);
+    return vec3<f32>(ndc * view.ndc_to_view * scale, -linear_depth);
 }
 
 // Unit vector from a view-space point towards the eye.
