@@ -94,8 +94,12 @@ fn side_bits(s: Surface, slice: Slice, side: f32, jitter: f32, lo: f32) -> u32 {
                           front - vec3<f32>(0.0, 0.0, thickness), view.orthographic > 0.5);
         let ray = select(normalize(front), vec3<f32>(0.0, 0.0, -1.0), view.orthographic > 0.5);
         let to_back = select(back - s.p, ray, thickness == MAX_DEPTH);
-        let front_angle = side * fast_acos(dot(sample.xyz, s.v) / length(sample.xyz));
-        let back_angle = side * fast_acos(dot(to_back, s.v) / length(to_back));
+        // Cosines from inverse square roots, not length() and a division: one special
+        // function each where those take two.
+        let front_cos = dot(sample.xyz, s.v) * inverseSqrt(dot(sample.xyz, sample.xyz));
+        let back_cos = dot(to_back, s.v) * inverseSqrt(dot(to_back, to_back));
+        let front_angle = side * fast_acos(front_cos);
+        let back_angle = side * fast_acos(back_cos);
         bits |= span_bits(front_angle, back_angle, lo);
         if abs(front_depth - previous_depth) < thickness {
             bits |= span_bits(previous_angle, front_angle, lo);

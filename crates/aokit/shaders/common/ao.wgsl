@@ -88,6 +88,8 @@ struct Surface {
     // settings give relative to the radius (falloff, bias, thickness) scale with it.
     radius: f32,
     scale: f32,
+    // falloff_weight's slope here: ao.falloff_mul over scale, divided once per pixel.
+    falloff_mul: f32,
 }
 
 fn load_surface(pixel: vec2<u32>) -> Surface {
@@ -107,6 +109,7 @@ fn load_surface(pixel: vec2<u32>) -> Surface {
     s.radius_px = clamp(unclamped, ao.min_radius_px, ao.max_radius_px);
     s.scale = select(1.0, s.radius_px / unclamped, unclamped > 0.0);
     s.radius = ao.radius * s.scale;
+    s.falloff_mul = ao.falloff_mul / s.scale;
     return s;
 }
 
@@ -242,7 +245,7 @@ fn depth_at(q: vec2<f32>, level: u32) -> f32 {
 // A sample's weight by its distance from the shaded point: 1 inside, fading to 0 at the
 // surface's radius.
 fn falloff_weight(s: Surface, distance: f32) -> f32 {
-    return saturate(distance / s.scale * ao.falloff_mul + ao.falloff_add);
+    return saturate(distance * s.falloff_mul + ao.falloff_add);
 }
 
 // Shapes visibility into the stored AO: intensity, power, then the distance fade.
