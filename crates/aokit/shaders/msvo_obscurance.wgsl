@@ -25,17 +25,6 @@ var<private> PAIRS: array<vec2<f32>, 32> = array<vec2<f32>, 32>(
     vec2(-3.0, 3.0), vec2(3.0, 3.0), vec2(-4.0, 2.0), vec2(4.0, 2.0),
 );
 
-// The working pixel whose depth texel `t` of `level` holds: the chain's subsample keeps, of the
-// 2x2 texels below each of its texels, the one at offset (y & 1, x & 1), clamped to that level.
-fn source_pixel(t: vec2<u32>, level: u32) -> vec2<f32> {
-    var texel = t;
-    for (var l = level; l > 0u; l--) {
-        let below = textureDimensions(linear_depth, l - 1u);
-        texel = min(2u * texel + vec2<u32>(texel.y & 1u, texel.x & 1u), below - 1u);
-    }
-    return vec2<f32>(texel) + 0.5;
-}
-
 // The fraction of the sphere's chord at a sample that lies in front of the depth buffer there:
 // the chord spans `center +- half_chord`; below 0 the sample is in front of the whole chord,
 // above 1 behind it. No surface is infinitely far: nothing there occludes.
@@ -80,8 +69,8 @@ fn level_visibility(t: vec2<u32>, level: u32) -> f32 {
         // texel's depth by up to a texel, so the pair is centred on the working depth at its
         // own midpoint (depth_at: exact on a plane), and a plane seen at any angle leaves the
         // pair's chords exactly as full as they are empty.
-        let sa = source_pixel(vec2<u32>(a), level);
-        let sb = source_pixel(vec2<u32>(b), level);
+        let sa = vec2<f32>(subsample_source(vec2<u32>(a), level)) + 0.5;
+        let sb = vec2<f32>(subsample_source(vec2<u32>(b), level)) + 0.5;
         let reach = 0.5 * length(sa - sb) / disc_px;
         let mid = depth_at(0.5 * (sa + sb), 0u);
         if reach >= 1.0 || mid == NO_SURFACE {

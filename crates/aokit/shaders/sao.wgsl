@@ -9,8 +9,6 @@
 // on the same or neighbouring texels of their level instead of pixels far apart, so a wide
 // radius costs no more texture cache than a small one; the paper found 8 to 32 pixels best.
 const LOG_MAX_OFFSET: i32 = 3;
-// Coarsest level the chain holds.
-const MAX_MIP_LEVEL: i32 = 4;
 // The paper's epsilon, 0.01 m^2 at its 1 m radius, here relative to r^2 so that the estimate
 // does not depend on the scene's units: it keeps a tap right next to the point from dividing by
 // almost nothing, which would blacken creases.
@@ -19,17 +17,6 @@ const EPSILON: f32 = 0.01;
 // = 1 (`intensity` and `power` shape the result afterwards, as for every method).
 const SUM_SCALE: f32 = 5.0;
 
-// The level-0 texel whose depth texel `t` of `level` holds: each level keeps, of the 2x2
-// texels below each of its texels, the one at offset (y & 1, x & 1), clamped to that level.
-fn source_texel(t: vec2<u32>, level: u32) -> vec2<u32> {
-    var texel = t;
-    for (var l = level; l > 0u; l--) {
-        let below = textureDimensions(linear_depth, l - 1u);
-        texel = min(2u * texel + vec2<u32>(texel.y & 1u, texel.x & 1u), below - 1u);
-    }
-    return texel;
-}
-
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     let count = f32(ao.count);
     let r = surface.radius;
@@ -37,7 +24,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     let bias = ao.bias * surface.scale;
     let epsilon = EPSILON * r2;
     let spin = TWO_PI * noise.x;
-    let coarsest = min(MAX_MIP_LEVEL, i32(textureNumLevels(linear_depth)) - 1);
+    let coarsest = min(i32(CHAIN_COARSEST), i32(textureNumLevels(linear_depth)) - 1);
     var sum = 0.0;
     for (var i = 0u; i < ao.count; i++) {
         let alpha = (f32(i) + 0.5) / count;
@@ -58,7 +45,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         }
         // Placed at the centre of the pixel the depth came from, the tap lies exactly on the
         // surface seen there, so a plane never occludes itself at any level.
-        let q = view_position(vec2<f32>(source_texel(texel, level)) + 0.5, depth);
+        let q = view_position(vec2<f32>(subsample_source(texel, level)) + 0.5, depth);
         let v = q - surface.p;
         let vv = dot(v, v);
         // The paper's f = max(r^2 - v.v, 0)^3 max((v.n - bias) / (v.v + epsilon), 0), divided

@@ -408,9 +408,12 @@ pub const GTAO: ShaderSource = ao_program!("gtao", AO_ENTRY, SLICE);
 /// Visibility bitmask AO.
 pub const VBAO: ShaderSource = ao_program!("vbao", AO_ENTRY, SLICE);
 /// Scalable Ambient Obscurance.
-pub const SAO: ShaderSource = ao_program!("sao", AO_ENTRY);
+pub const SAO: ShaderSource = ao_program!("sao", AO_ENTRY, SUBSAMPLE_CHAIN);
 /// Unreal Engine 4's legacy SSAO: mirrored sample pairs scored by the angle between them.
 pub const UE4_SSAO: ShaderSource = ao_program!("ue4_ssao", AO_ENTRY);
+
+/// Where the texels of the subsampled depth MIP chain that `sao` and `msvo` read come from.
+pub(crate) const SUBSAMPLE_CHAIN: &str = include_str!("../shaders/common/subsample_chain.wgsl");
 
 /// What `msvo`'s two passes share.
 const MSVO: &str = include_str!("../shaders/msvo.wgsl");
@@ -424,7 +427,7 @@ const MSVO: &str = include_str!("../shaders/msvo.wgsl");
 /// assert_eq!(shader::method(Method::Msvo).name, shader::MSVO_OBSCURANCE.name);
 /// assert!(shader::MSVO_MERGE.source().contains("fn shape_ao("));
 /// ```
-pub const MSVO_OBSCURANCE: ShaderSource = ao_program!("msvo_obscurance", MSVO);
+pub const MSVO_OBSCURANCE: ShaderSource = ao_program!("msvo_obscurance", MSVO, SUBSAMPLE_CHAIN);
 
 /// `msvo`'s merge of one level: its obscurance times the depth-aware upsample of the merged
 /// level below it, shaped at the working level into the method's AO.
@@ -823,9 +826,10 @@ mod tests {
             OCCLUSION,
             DEPTH_FROM_NDC,
             DEPTH_FROM_LINEAR,
+            SUBSAMPLE_CHAIN,
         ] {
             assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
         }
-        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 10);
+        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 11);
     }
 }

@@ -291,6 +291,12 @@ mod tests {
     }
 
     #[test]
+    fn the_subsample_sources_walk_down_from_the_coarsest_level() {
+        let coarsest = format!("const CHAIN_COARSEST: u32 = {}u;", LEVELS - 1);
+        assert!(crate::shader::SUBSAMPLE_CHAIN.contains(&coarsest));
+    }
+
+    #[test]
     fn atlas_levels_keep_two_texels_a_side_and_stop_at_four() {
         for (size, levels) in [
             ([1, 1], 0),
