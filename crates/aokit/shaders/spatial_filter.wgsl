@@ -3,9 +3,9 @@
 // spatial_filter_vertical.wgsl) that sets `AXIS` and the workgroup shape and defines
 // `load_ao_depth` and `store_filtered` over its own textures.
 //
-// Each workgroup filters a segment of LINE pixels along the axis. Its threads first load the
-// segment and RADIUS pixels on each side (the apron) into workgroup memory, LINE texels at a
-// time, so that each texel is read once per workgroup instead of once per tap. Every tap then
+// Each workgroup filters ACROSS neighbouring segments of LINE pixels along the axis. Its threads
+// first load each segment and RADIUS pixels on each side (the apron) into workgroup memory, LINE
+// texels at a time, so that each texel is read once per workgroup instead of once per tap. Every tap then
 // weighs the neighbour `k` pixels away whose relative depth difference from the centre is `r`:
 //
 //     w = exp(-k^2 / (2 sigma^2)) * exp(-r^2 / (2 depth_sigma^2))     (gaussian)
@@ -49,8 +49,10 @@ override NORMAL_WEIGHT: bool;
 const LINE: u32 = 64u;
 const TILE: u32 = LINE + 2u * MAX_RADIUS;
 
-var<workgroup> tile_ao_depth: array<vec2<f32>, TILE>;
-var<workgroup> tile_normal: array<vec3<f32>, TILE>;
+// TILE texels of each segment, interleaved: texel i of segment s at i * ACROSS + s, so that the
+// threads of a SIMD group, which span the segments, read neighbouring words.
+var<workgroup> tile_ao_depth: array<vec2<f32>, TILE * ACROSS>;
+var<workgroup> tile_normal: array<vec3<f32>, TILE * ACROSS>;
 
 // The weight of a neighbour `offset` pixels from the centre whose depth is `depth`, against the
 // centre's `centre_depth` (> 0) and normal `n0`.
@@ -80,10 +82,14 @@ fn neighbour_weight(offset: f32, depth: f32, centre_depth: f32, n: vec3<f32>, n0
 fn main(
     @builtin(global_invocation_id) id: vec3<u32>,
     @builtin(workgroup_id) group: vec3<u32>,
-    @builtin(local_invocation_index) local: u32,
+    @builtin(local_invocation_id) local_id: vec3<u32>,
 ) {
     let radius = RADIUS;
-    let first = vec2<i32>(group.xy * vec2<u32>(GROUP_WIDTH, GROUP_HEIGHT)) - AXIS * i32(radius);
+    // The thread's place along the axis, and its segment.
+    let local = dot(local_id.xy, vec2<u32>(AXIS));
+    let segment = dot(local_id.xy, vec2<u32>(AXIS.yx));
+    let first = vec2<i32>(group.xy * vec2<u32>(GROUP_WIDTH, GROUP_HEIGHT)) + vec2<i32>(AXIS.yx) * i32(segment)
+        - AXIS * i32(radius);
     for (var i = local; i < LINE + 2u * radius; i += LINE) {
         let pixel = first + AXIS * i32(i);
         var texel = vec2<f32>(1.0, NO_SURFACE);
@@ -94,15 +100,15 @@ fn main(
                 n = unpack_oct32(textureLoad(normals, pixel, 0).r);
             }
         }
-        tile_ao_depth[i] = texel;
-        tile_normal[i] = n;
+        tile_ao_depth[i * ACROSS + segment] = texel;
+        tile_normal[i * ACROSS + segment] = n;
     }
     workgroupBarrier();
 
     if any(id.xy >= vec2<u32>(view.size)) {
         return;
     }
-    let centre = local + radius;
+    let centre = (local + radius) * ACROSS + segment;
     let depth = tile_ao_depth[centre].y;
     if depth == NO_SURFACE {
         store_filtered(id.xy, 1.0, NO_SURFACE);
@@ -112,9 +118,9 @@ fn main(
     var sum = 0.0;
     var weight_sum = 0.0;
     for (var k = 0u; k <= 2u * radius; k++) {
-        let texel = tile_ao_depth[local + k];
-        let w = neighbour_weight(f32(k) - f32(radius), texel.y, depth, tile_normal[local + k], n0);
-        sum += w * texel.x;
+        let at = (local + k) * ACROSS + segment;
+        let w = neighbour_weight(f32(k) - f32(radius), tile_ao_depth[at].y, depth, tile_normal[at], n0);
+        sum += w * tile_ao_depth[at].x;
         weight_sum += w;
     }
     store_filtered(id.xy, sum / weight_sum, depth);

@@ -2,8 +2,9 @@
 // the linear depth to both packed in one texel, so that the vertical pass reads one texture.
 
 const AXIS = vec2<i32>(1, 0);
+const ACROSS: u32 = 1u;
 const GROUP_WIDTH: u32 = LINE;
-const GROUP_HEIGHT: u32 = 1u;
+const GROUP_HEIGHT: u32 = ACROSS;
 
 @group(0) @binding(3) var ao_in: texture_2d<f32>;
 @group(0) @binding(4) var depth_in: texture_2d<f32>;

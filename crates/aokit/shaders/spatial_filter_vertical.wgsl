@@ -2,7 +2,10 @@
 // pass's packed AO and depth to the filtered AO.
 
 const AXIS = vec2<i32>(0, 1);
-const GROUP_WIDTH: u32 = 1u;
+// Four columns side by side: a SIMD group then reads rows of four neighbouring texels, where
+// one column alone read a single texel from each of 32 rows.
+const ACROSS: u32 = 4u;
+const GROUP_WIDTH: u32 = ACROSS;
 const GROUP_HEIGHT: u32 = LINE;
 
 @group(0) @binding(3) var packed_in: texture_2d<f32>;

@@ -1,5 +1,5 @@
 //! The spatial denoiser: a separable bilateral blur of the AO, horizontal then vertical, each
-//! pass a compute kernel that stages its row or column segment in workgroup memory
+//! pass a compute kernel that stages its row segment or four column segments in workgroup memory
 //! (`shaders/spatial_filter.wgsl`; formulas and measurements in docs/denoise.md).
 
 use std::collections::HashMap;
@@ -186,7 +186,7 @@ pub(crate) mod tests {
         );
         assert_eq!(
             shader::SPATIAL_FILTER_VERTICAL.workgroup_size(),
-            Ok([1, 64, 1])
+            Ok([4, 64, 1])
         );
     }
 
