@@ -3,10 +3,11 @@
 // spatial_filter_vertical.wgsl) that sets `AXIS` and the workgroup shape and defines
 // `load_ao_depth` and `store_filtered` over its own textures.
 //
-// Each workgroup filters ACROSS neighbouring segments of LINE pixels along the axis. Its threads
-// first load each segment and RADIUS pixels on each side (the apron) into workgroup memory, LINE
-// texels at a time, so that each texel is read once per workgroup instead of once per tap. Every tap then
-// weighs the neighbour `k` pixels away whose relative depth difference from the centre is `r`:
+// Each workgroup filters ACROSS neighbouring segments of LINE pixels along the axis. Its
+// threads first load each segment and RADIUS pixels on each side (the apron) into workgroup
+// memory, LINE texels at a time, so that each texel is read once per workgroup instead of once
+// per tap. Every tap then weighs the neighbour `k` pixels away whose relative depth difference
+// from the centre is `r`:
 //
 //     w = exp(-k^2 / (2 sigma^2)) * exp(-r^2 / (2 depth_sigma^2))     (gaussian)
 //     w = exp(-k^2 / (2 sigma^2)) * (r < depth_sigma)                  (threshold)
@@ -88,8 +89,8 @@ fn main(
     // The thread's place along the axis, and its segment.
     let local = dot(local_id.xy, vec2<u32>(AXIS));
     let segment = dot(local_id.xy, vec2<u32>(AXIS.yx));
-    let first = vec2<i32>(group.xy * vec2<u32>(GROUP_WIDTH, GROUP_HEIGHT)) + vec2<i32>(AXIS.yx) * i32(segment)
-        - AXIS * i32(radius);
+    let origin = vec2<i32>(group.xy * vec2<u32>(GROUP_WIDTH, GROUP_HEIGHT));
+    let first = origin + AXIS.yx * i32(segment) - AXIS * i32(radius);
     for (var i = local; i < LINE + 2u * radius; i += LINE) {
         let pixel = first + AXIS * i32(i);
         var texel = vec2<f32>(1.0, NO_SURFACE);
@@ -119,7 +120,8 @@ fn main(
     var weight_sum = 0.0;
     for (var k = 0u; k <= 2u * radius; k++) {
         let at = (local + k) * ACROSS + segment;
-        let w = neighbour_weight(f32(k) - f32(radius), tile_ao_depth[at].y, depth, tile_normal[at], n0);
+        let offset = f32(k) - f32(radius);
+        let w = neighbour_weight(offset, tile_ao_depth[at].y, depth, tile_normal[at], n0);
         sum += w * tile_ao_depth[at].x;
         weight_sum += w;
     }

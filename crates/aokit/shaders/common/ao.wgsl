@@ -171,18 +171,35 @@ struct Footprint {
 }
 
 fn footprint(q: vec2<f32>, level: u32) -> Footprint {
-    if DEPTH_MIPS == DEPTH_MIPS_ATLAS || (DEPTH_MIPS == DEPTH_MIPS_COARSE && level > 0u) {
-        let scale = f32(1u << level);
-        let size = max(floor(view.size / scale), vec2<f32>(1.0));
-        let corner = clamp(floor(q / scale - 0.5) + 1.0, vec2<f32>(1.0), size - 1.0);
-        let origin = select(vec2<f32>(0.0), atlas_origin(level), level > 0u);
-        let uv = (origin + corner) / vec2<f32>(textureDimensions(depth_mips));
-        return Footprint(textureGather(0, depth_mips, point_clamp, uv), corner, scale);
+    if reads_atlas(level) {
+        let grid = atlas_level(level);
+        let corner = clamp(floor(q / grid.scale - 0.5) + 1.0, vec2<f32>(1.0), grid.size - 1.0);
+        let uv = (grid.origin + corner) / vec2<f32>(textureDimensions(depth_mips));
+        return Footprint(textureGather(0, depth_mips, point_clamp, uv), corner, grid.scale);
     }
     // The same corner at a scale of 1, written out: the scaled form for both cost the kernels
     // 1 to 5% on lavapipe with the chain off.
     let corner = clamp(floor(q - 0.5) + 1.0, vec2<f32>(1.0), view.size - 1.0);
     return Footprint(textureGather(0, linear_depth, point_clamp, corner * view.inv_size), corner, 1.0);
+}
+
+// Whether samples at `level` read the depth_mips atlas rather than the working depth.
+fn reads_atlas(level: u32) -> bool {
+    return DEPTH_MIPS == DEPTH_MIPS_ATLAS || (DEPTH_MIPS == DEPTH_MIPS_COARSE && level > 0u);
+}
+
+// Level `level`'s grid in the atlas: its texel width in pixels, its size in texels (at least
+// one a side) and where its texel (0, 0) lies.
+struct AtlasLevel {
+    scale: f32,
+    size: vec2<f32>,
+    origin: vec2<f32>,
+}
+
+fn atlas_level(level: u32) -> AtlasLevel {
+    let scale = f32(1u << level);
+    let size = max(floor(view.size / scale), vec2<f32>(1.0));
+    return AtlasLevel(scale, size, select(vec2<f32>(0.0), atlas_origin(level), level > 0u));
 }
 
 // The surface seen at continuous pixel position `q`, read at depth MIP level `level` (0: the
@@ -222,12 +239,11 @@ fn surface_at(q: vec2<f32>, level: u32) -> SeenSurface {
 // The texel of `level` that continuous pixel position `q` lies in, seen at its centre: one load
 // where surface_at takes a gather and its interpolation. Never `exact`.
 fn nearest_surface(q: vec2<f32>, level: u32) -> SeenSurface {
-    if DEPTH_MIPS == DEPTH_MIPS_ATLAS || (DEPTH_MIPS == DEPTH_MIPS_COARSE && level > 0u) {
-        let scale = f32(1u << level);
-        let texel = min(floor(q / scale), max(floor(view.size / scale), vec2<f32>(1.0)) - 1.0);
-        let origin = select(vec2<f32>(0.0), atlas_origin(level), level > 0u);
-        let depth = textureLoad(depth_mips, vec2<u32>(origin + texel), 0).r;
-        return SeenSurface(depth, (texel + 0.5) * scale, false);
+    if reads_atlas(level) {
+        let grid = atlas_level(level);
+        let texel = min(floor(q / grid.scale), grid.size - 1.0);
+        let depth = textureLoad(depth_mips, vec2<u32>(grid.origin + texel), 0).r;
+        return SeenSurface(depth, (texel + 0.5) * grid.scale, false);
     }
     let texel = floor(q);
     return SeenSurface(textureLoad(linear_depth, vec2<u32>(texel), 0).r, texel + 0.5, false);
