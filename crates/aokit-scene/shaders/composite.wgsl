@@ -49,7 +49,8 @@ struct CompositeUniforms {
 @group(0) @binding(1) var albedo: texture_2d<f32>;
 // The oct32 view-space normals the AO pipeline used.
 @group(0) @binding(2) var normals: texture_2d<u32>;
-@group(0) @binding(3) var depth: texture_depth_2d;
+// Hardware depth, bound as an unfilterable float texture as the AO passes bind it.
+@group(0) @binding(3) var depth: texture_2d<f32>;
 @group(0) @binding(4) var ao: texture_2d<f32>;
 @group(0) @binding(5) var shadow_map: texture_depth_2d;
 @group(0) @binding(6) var shadow_sampler: sampler_comparison;
@@ -95,7 +96,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     var color = light.sky_color.rgb;
-    let d = textureLoad(depth, id.xy, 0);
+    let d = textureLoad(depth, id.xy, 0).r;
     if d != light.far_ndc_depth {
         let uv = (vec2<f32>(id.xy) + 0.5) / vec2<f32>(size);
         let clip = vec4<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, d, 1.0);

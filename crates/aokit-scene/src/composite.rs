@@ -299,7 +299,7 @@ impl CompositePass {
                 bind::uniform(0),
                 bind::texture(1, float),
                 bind::texture(2, wgpu::TextureSampleType::Uint),
-                bind::texture(3, wgpu::TextureSampleType::Depth),
+                bind::texture(3, float),
                 bind::texture(4, float),
                 bind::texture(5, wgpu::TextureSampleType::Depth),
                 bind::sampler(6, wgpu::SamplerBindingType::Comparison),

@@ -93,28 +93,9 @@ pub struct ShaderSource {
     pub parts: &'static [&'static str],
 }
 
-/// Binding 1 of a program reading hardware depth: a single-sampled depth texture.
-const DEPTH_NDC: &str = "
-@group(0) @binding(1) var depth_ndc: texture_depth_2d;
-fn load_ndc(pixel: vec2<u32>) -> f32 {
-    return textureLoad(depth_ndc, pixel, 0);
-}
-fn input_size() -> vec2<u32> {
-    return textureDimensions(depth_ndc);
-}";
-
-/// As [`DEPTH_NDC`], multisampled: sample 0 is read.
-const DEPTH_NDC_MULTISAMPLED: &str = "
-@group(0) @binding(1) var depth_ndc: texture_depth_multisampled_2d;
-fn load_ndc(pixel: vec2<u32>) -> f32 {
-    return textureLoad(depth_ndc, pixel, 0);
-}
-fn input_size() -> vec2<u32> {
-    return textureDimensions(depth_ndc);
-}";
-
-/// Binding 1 of a program reading linear depth, and of `apply_mask` with a mask texture: the
-/// first channel of a single-sampled float texture.
+/// Binding 1 of a program reading depth, and of `apply_mask` with a mask texture: the first
+/// channel of a single-sampled float texture. Hardware depth is bound as an unfilterable float
+/// texture too (WebGPU allows it), so one binding serves both kinds of depth.
 const FLOAT_INPUT: &str = "
 @group(0) @binding(1) var input_texture: texture_2d<f32>;
 fn load_input(pixel: vec2<u32>) -> f32 {
@@ -134,9 +115,10 @@ fn input_size() -> vec2<u32> {
     return textureDimensions(input_texture);
 }";
 
-/// `input_linear_depth` over [`DEPTH_NDC`] or [`DEPTH_NDC_MULTISAMPLED`].
+/// `input_linear_depth` from hardware depth over [`FLOAT_INPUT`] or [`FLOAT_INPUT_MULTISAMPLED`].
 const DEPTH_FROM_NDC: &str = include_str!("../shaders/common/depth_from_ndc.wgsl");
-/// `input_linear_depth` over [`FLOAT_INPUT`] or [`FLOAT_INPUT_MULTISAMPLED`].
+/// `input_linear_depth` from linear depth over [`FLOAT_INPUT`] or
+/// [`FLOAT_INPUT_MULTISAMPLED`].
 const DEPTH_FROM_LINEAR: &str = include_str!("../shaders/common/depth_from_linear.wgsl");
 
 /// One program per kind of depth input, in the order hardware depth, multisampled hardware
@@ -147,11 +129,11 @@ macro_rules! per_depth_input {
         [
             ShaderSource {
                 name: $name,
-                parts: &[$($before,)* DEPTH_NDC, DEPTH_FROM_NDC, $($after),*],
+                parts: &[$($before,)* FLOAT_INPUT, DEPTH_FROM_NDC, $($after),*],
             },
             ShaderSource {
                 name: $name,
-                parts: &[$($before,)* DEPTH_NDC_MULTISAMPLED, DEPTH_FROM_NDC, $($after),*],
+                parts: &[$($before,)* FLOAT_INPUT_MULTISAMPLED, DEPTH_FROM_NDC, $($after),*],
             },
             ShaderSource {
                 name: $name,

@@ -47,13 +47,12 @@ impl DepthInput {
 
     /// The layout entry of a texture of this kind at `binding`.
     pub fn layout_entry(self, binding: u32) -> wgpu::BindGroupLayoutEntry {
-        let sample_type = match self {
-            Self::Ndc | Self::NdcMultisampled => wgpu::TextureSampleType::Depth,
-            Self::Linear | Self::LinearMultisampled => {
-                wgpu::TextureSampleType::Float { filterable: false }
-            }
-        };
-        bind::texture_with_samples(binding, sample_type, self.is_multisampled())
+        // Hardware depth too, as `texture_2d<f32>` (`FLOAT_INPUT` in shader.rs).
+        bind::texture_with_samples(
+            binding,
+            wgpu::TextureSampleType::Float { filterable: false },
+            self.is_multisampled(),
+        )
     }
 
     /// A view of `texture` the passes can bind: the depth aspect alone of a depth-stencil
