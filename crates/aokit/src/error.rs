@@ -39,6 +39,14 @@ pub enum AoError {
         "depth_mips = fp16 needs R16Float storage textures (Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES), which this device does not have; use depth_mips = fp32"
     )]
     Fp16DepthMipsUnsupported,
+    /// The device cannot write storage textures of these formats, which aokit's passes write.
+    /// WebGPU's core has them all; wgpu's GL backend lacks `Rg32Float`.
+    #[error(
+        "this device cannot write {} storage textures, which aokit's passes write; use a \
+         Vulkan, Metal or DX12 device",
+        .0.iter().map(|f| format!("{f:?}")).collect::<Vec<_>>().join(", ")
+    )]
+    StorageFormats(Vec<wgpu::TextureFormat>),
     /// [`VbaoSettings::back_faces`](crate::VbaoSettings::back_faces) is on, but the inputs
     /// have no [`AoInputs::back_depth`](crate::AoInputs::back_depth).
     #[error(

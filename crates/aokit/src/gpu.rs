@@ -47,6 +47,15 @@ pub enum GpuError {
         /// The backends that were searched.
         backends: String,
     },
+    /// Adapters exist, but none can run aokit's passes.
+    #[error(
+        "no adapter found can run aokit: {found}. Install a Vulkan driver, e.g. \
+         `apt-get install mesa-vulkan-drivers` for the lavapipe software rasteriser"
+    )]
+    NoUsableAdapter {
+        /// Each adapter found, with what it lacks.
+        found: String,
+    },
     /// `WGPU_ADAPTER_NAME` matched none of the adapters.
     #[error("WGPU_ADAPTER_NAME=`{wanted}` matches no adapter; found: {found}")]
     NoAdapterNamed {
@@ -140,6 +149,7 @@ impl GpuContext {
                     backends: format!("{backends:?}"),
                 },
                 Choice::NoneNamed { wanted, found } => GpuError::NoAdapterNamed { wanted, found },
+                Choice::NoneUsable { found } => GpuError::NoUsableAdapter { found },
             },
         )?;
         let adapter_info = adapter.get_info();
@@ -227,6 +237,60 @@ fn adapter_kind(info: &wgpu::AdapterInfo) -> AdapterKind {
 enum Choice {
     None,
     NoneNamed { wanted: String, found: String },
+    NoneUsable { found: String },
+}
+
+/// Every storage texture format aokit's passes write, but `R16Float`, which only the optional
+/// fp16 depth MIP chain writes (`AoError::Fp16DepthMipsUnsupported` covers it). WebGPU's core
+/// has them all; wgpu's GL backend has no `Rg32Float` storage, which the spatial and guided
+/// filters, the temporal history and the working resolution's motion vectors are stored in.
+pub(crate) const STORAGE_FORMATS: [wgpu::TextureFormat; 7] = [
+    wgpu::TextureFormat::R32Float,
+    wgpu::TextureFormat::R32Uint,
+    wgpu::TextureFormat::Rg32Float,
+    wgpu::TextureFormat::Rgba8Unorm,
+    wgpu::TextureFormat::Rgba16Float,
+    wgpu::TextureFormat::Rgba32Float,
+    wgpu::TextureFormat::Rgba32Uint,
+];
+
+/// The formats of [`STORAGE_FORMATS`] that `device` cannot write. A device does not tell its
+/// format features, so each is probed: a bind group layout with a storage entry of a format the
+/// device lacks fails validation.
+pub(crate) fn missing_storage_formats(device: &wgpu::Device) -> Vec<wgpu::TextureFormat> {
+    STORAGE_FORMATS
+        .into_iter()
+        .filter(|&format| {
+            let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+            let _probe = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("aokit storage format probe"),
+                entries: &[crate::passes::bind::storage_texture(0, format)],
+            });
+            pollster::block_on(scope.pop()).is_some()
+        })
+        .collect()
+}
+
+/// Why `adapter` cannot run aokit's passes, or `None` when it can.
+fn unusable(adapter: &wgpu::Adapter) -> Option<String> {
+    let downlevel = adapter.get_downlevel_capabilities();
+    if !downlevel
+        .flags
+        .contains(wgpu::DownlevelFlags::COMPUTE_SHADERS)
+    {
+        return Some("no compute shaders".into());
+    }
+    let missing: Vec<String> = STORAGE_FORMATS
+        .iter()
+        .filter(|&&format| {
+            !adapter
+                .get_texture_format_features(format)
+                .flags
+                .contains(wgpu::TextureFormatFeatureFlags::STORAGE_WRITE_ONLY)
+        })
+        .map(|format| format!("{format:?}"))
+        .collect();
+    (!missing.is_empty()).then(|| format!("cannot write {} storage textures", missing.join(", ")))
 }
 
 /// Ranks adapters so that real GPUs win and software rasterisers are the last resort.
@@ -244,6 +308,23 @@ fn choose_adapter(
     adapters: Vec<wgpu::Adapter>,
     wanted_name: Option<String>,
 ) -> Result<wgpu::Adapter, Choice> {
+    let mut refused = Vec::new();
+    let adapters: Vec<wgpu::Adapter> = adapters
+        .into_iter()
+        .filter(|adapter| match unusable(adapter) {
+            Some(why) => {
+                let info = adapter.get_info();
+                refused.push(format!("{} ({:?}) {why}", info.name, info.backend));
+                false
+            }
+            None => true,
+        })
+        .collect();
+    if adapters.is_empty() && !refused.is_empty() {
+        return Err(Choice::NoneUsable {
+            found: refused.join("; "),
+        });
+    }
     if let Some(wanted) = wanted_name.filter(|w| !w.is_empty()) {
         let needle = wanted.to_lowercase();
         let found = adapters
@@ -685,5 +766,49 @@ mod half_tests {
         assert_eq!(f16_to_f32(0x0001), 2f32.powi(-24));
         assert_eq!(f16_to_f32(0x7c00), f32::INFINITY);
         assert!(f16_to_f32(0x7e00).is_nan());
+    }
+}
+
+#[cfg(test)]
+mod adapter_tests {
+    use super::{Choice, choose_adapter, unusable};
+    use crate::{AoError, AoPipeline, AoSettings};
+
+    /// The GL adapters of this machine (llvmpipe's, with Mesa's EGL installed).
+    fn gl_adapters() -> Vec<wgpu::Adapter> {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::GL,
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        });
+        pollster::block_on(instance.enumerate_adapters(wgpu::Backends::GL))
+    }
+
+    /// wgpu's GL backend cannot write `Rg32Float` storage textures: the headless context
+    /// refuses such an adapter with the reason, and a pipeline on a device from it fails with
+    /// wgpu's reason instead of a panic in wgpu's default error handler.
+    #[test]
+    fn an_adapter_without_the_storage_formats_is_refused_with_the_reason() {
+        let Some(adapter) = gl_adapters().into_iter().find(|a| unusable(a).is_some()) else {
+            eprintln!("skipped: no GL adapter lacking a storage format on this machine");
+            return;
+        };
+        let why = unusable(&adapter).unwrap();
+        assert!(why.contains("Rg32Float"), "{why}");
+        let (device, queue) =
+            pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
+                .expect("a GL device");
+        let err = AoPipeline::new(&device, &queue, &AoSettings::default())
+            .err()
+            .expect("the pipeline is refused");
+        assert!(
+            matches!(err, AoError::StorageFormats(ref formats)
+                if formats == &[wgpu::TextureFormat::Rg32Float]),
+            "{err}"
+        );
+        assert!(err.to_string().contains("Rg32Float"), "{err}");
+        match choose_adapter(vec![adapter], None) {
+            Err(Choice::NoneUsable { found }) => assert!(found.contains("(Gl)"), "{found}"),
+            _ => panic!("an unusable adapter was chosen"),
+        }
     }
 }

@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::error::AoError;
-use crate::gpu::{create_texture_2d, create_uniform_buffer};
+use crate::gpu::{create_texture_2d, create_uniform_buffer, missing_storage_formats};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
 use crate::passes::back_faces::{BackFacesPass, THICKNESS_FORMAT};
@@ -148,10 +148,14 @@ impl Targets {
     }
 }
 
-/// Validates `settings` and checks that `device` can run them: `depth_mips = fp16` writes
-/// R16Float storage textures.
+/// Validates `settings` and checks that `device` can run them: the passes write the storage
+/// formats of `gpu::STORAGE_FORMATS`, and `depth_mips = fp16` writes R16Float.
 fn check_settings(device: &wgpu::Device, settings: &AoSettings) -> Result<(), AoError> {
     settings.validate()?;
+    let missing = missing_storage_formats(device);
+    if !missing.is_empty() {
+        return Err(AoError::StorageFormats(missing));
+    }
     let fp16_storage = wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES;
     if atlas_format(settings) == Some(wgpu::TextureFormat::R16Float)
         && !device.features().contains(fp16_storage)
@@ -391,8 +395,9 @@ pub struct AoPipeline {
 
 impl AoPipeline {
     /// Compiles the passes the settings need. Fails, naming the field, when the settings are
-    /// out of range, and with [`AoError::Fp16DepthMipsUnsupported`] when they ask for an fp16
-    /// depth MIP chain the device cannot write.
+    /// out of range, with [`AoError::Fp16DepthMipsUnsupported`] when they ask for an fp16
+    /// depth MIP chain the device cannot write, and with [`AoError::StorageFormats`] on a
+    /// device that cannot write the storage textures the passes write (wgpu's GL backend).
     ///
     /// ```no_run
     /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::AoError> {
