@@ -84,10 +84,23 @@ impl OverrideArgs {
         for assignment in &self.set {
             set_path(&mut table, assignment)?;
         }
-        let settings = AoSettings::deserialize(toml::Value::Table(table))
-            .map_err(|e| anyhow!("invalid settings: {}", e.message()))?;
+        let settings =
+            AoSettings::deserialize(toml::Value::Table(table)).map_err(invalid_setting)?;
         settings.validate()?;
         Ok(settings)
+    }
+}
+
+/// A settings table that does not deserialise, named by the setting's path: toml's error tells
+/// the path only in its text, on a line `in `path``.
+fn invalid_setting(error: toml::de::Error) -> anyhow::Error {
+    let text = error.to_string();
+    let path = text
+        .lines()
+        .find_map(|line| line.strip_prefix("in `")?.strip_suffix('`'));
+    match path {
+        Some(path) => anyhow!("invalid setting `{path}`: {}", error.message()),
+        None => anyhow!("invalid settings: {}", error.message()),
     }
 }
 
@@ -221,7 +234,15 @@ mod tests {
             .resolve(None)
             .unwrap_err()
             .to_string();
-        assert!(err.contains("invalid"), "{err}");
+        assert!(err.contains("invalid setting `gtao.slice_count`"), "{err}");
+        let err = args(&["noise.kind=foo"])
+            .resolve(None)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("`noise.kind`") && err.contains("`ign`"),
+            "{err}"
+        );
         let err = args(&["radius=-1"]).resolve(None).unwrap_err().to_string();
         assert!(err.contains("radius"), "{err}");
         let err = args(&["gtao=1"]).resolve(None).unwrap_err().to_string();
