@@ -18,7 +18,7 @@
 @group(0) @binding(4) var depth_out: texture_storage_2d<r32float, write>;
 @group(0) @binding(5) var normals_out: texture_storage_2d<r32uint, write>;
 // In working texels (1x1 when unused).
-@group(0) @binding(6) var motion_out: texture_storage_2d<rg32float, write>;
+@group(0) @binding(6) var motion_out: pair_storage;
 
 // A DOWNSAMPLE_* code: which pixel of each block the working texel takes.
 override MODE: u32;

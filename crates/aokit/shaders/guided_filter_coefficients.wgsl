@@ -2,7 +2,7 @@
 // depth to each window's line, its slope a_k and its value c_k at the window's centre.
 
 @group(0) @binding(2) var ao_in: texture_2d<f32>;
-@group(0) @binding(4) var coefficients_out: texture_storage_2d<rg32float, write>;
+@group(0) @binding(4) var coefficients_out: pair_storage;
 
 // The AO, staged beside the log depth.
 fn load_values(pixel: vec2<i32>) -> vec2<f32> {

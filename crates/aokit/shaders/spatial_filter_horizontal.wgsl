@@ -8,7 +8,7 @@ const GROUP_HEIGHT: u32 = ACROSS;
 
 @group(0) @binding(3) var ao_in: texture_2d<f32>;
 @group(0) @binding(4) var depth_in: texture_2d<f32>;
-@group(0) @binding(5) var packed_out: texture_storage_2d<rg32float, write>;
+@group(0) @binding(5) var packed_out: pair_storage;
 
 fn load_ao_depth(pixel: vec2<u32>) -> vec2<f32> {
     return vec2<f32>(textureLoad(ao_in, pixel, 0).r, textureLoad(depth_in, pixel, 0).r);

@@ -42,7 +42,7 @@ const FLAG_FILTER_CURRENT: u32 = 4u;
 @group(0) @binding(5) var motion_vectors: texture_2d<f32>;
 @group(0) @binding(6) var point_clamp: sampler;
 @group(0) @binding(7) var ao_out: texture_storage_2d<r32float, write>;
-@group(0) @binding(8) var history_out: texture_storage_2d<rg32float, write>;
+@group(0) @binding(8) var history_out: pair_storage;
 // 1 where the history was rejected, for debug views.
 @group(0) @binding(9) var rejected_out: texture_storage_2d<r32float, write>;
 

@@ -40,7 +40,8 @@ pub enum AoError {
     )]
     Fp16DepthMipsUnsupported,
     /// The device cannot write storage textures of these formats, which aokit's passes write.
-    /// WebGPU's core has them all; wgpu's GL backend lacks `Rg32Float`.
+    /// WebGPU's core has them all, and so does wgpu's GL backend; it lacks `Rg32Float`, which
+    /// aokit replaces with `Rgba32Float` there ([`PairFormat`](crate::gpu::PairFormat)).
     #[error(
         "this device cannot write {} storage textures, which aokit's passes write; use a \
          Vulkan, Metal or DX12 device",

@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::error::AoError;
-use crate::gpu::{create_texture_2d, create_uniform_buffer, missing_storage_formats};
+use crate::gpu::{PairFormat, create_texture_2d, create_uniform_buffer, missing_storage_formats};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
 use crate::passes::back_faces::{BackFacesPass, THICKNESS_FORMAT};
@@ -15,11 +15,9 @@ use crate::passes::mask::MaskPass;
 use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
 use crate::passes::msvo::MsvoPass;
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
-use crate::passes::resample::{
-    DownsampleTargets, ResampleFrame, ResamplePass, WORKING_MOTION_FORMAT,
-};
+use crate::passes::resample::{DownsampleTargets, ResampleFrame, ResamplePass};
 use crate::passes::separable_hbao::SeparableHbaoPass;
-use crate::passes::spatial_filter::{PACKED_FORMAT, SpatialFilterPass};
+use crate::passes::spatial_filter::SpatialFilterPass;
 use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
 use crate::settings::{
     AoSettings, FilterResolution, Method, NormalEncoding, NormalSource, NormalSpace, SpatialKind,
@@ -97,7 +95,7 @@ struct SpatialTargets {
 }
 
 impl Targets {
-    fn new(device: &wgpu::Device, layout: Layout) -> Self {
+    fn new(device: &wgpu::Device, layout: Layout, pair: PairFormat) -> Self {
         let usage = wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
@@ -117,7 +115,7 @@ impl Targets {
                 normals: make("aokit working normals", working, NORMALS_FORMAT),
                 motion_vectors: layout
                     .working_motion
-                    .then(|| make("aokit working motion", working, WORKING_MOTION_FORMAT)),
+                    .then(|| make("aokit working motion", working, pair.texture_format())),
                 upsampled_ao: make("aokit upsampled ao", size, AO_FORMAT),
                 upsampled_bent_normals: bent
                     .then(|| make("aokit upsampled bent normals", size, BENT_NORMALS_FORMAT)),
@@ -125,7 +123,12 @@ impl Targets {
             ao: make("aokit ao", working, AO_FORMAT),
             bent_normals: bent.then(|| make("aokit bent normals", working, BENT_NORMALS_FORMAT)),
             spatial: layout.spatial.map(|size| SpatialTargets {
-                packed_view: make("aokit spatial filter ao and depth", size, PACKED_FORMAT).1,
+                packed_view: make(
+                    "aokit spatial filter ao and depth",
+                    size,
+                    pair.texture_format(),
+                )
+                .1,
                 ao: make("aokit spatially filtered ao", size, AO_FORMAT),
             }),
             masked_ao: layout
@@ -182,6 +185,8 @@ struct Denoiser {
     temporal: Option<TemporalFilterPass>,
     /// Each view's temporal history, by [`AoInputs::view_id`].
     histories: HashMap<u32, Option<History>>,
+    /// The format of the spatial filters' intermediate texture and the temporal histories.
+    pair: PairFormat,
 }
 
 impl Denoiser {
@@ -226,9 +231,9 @@ impl Denoiser {
             return (ao, None);
         }
         let history = self.histories.entry(frame.view_id).or_insert(None);
-        let temporal = self
-            .temporal
-            .get_or_insert_with(|| TemporalFilterPass::new(ctx.device, &settings.temporal));
+        let temporal = self.temporal.get_or_insert_with(|| {
+            TemporalFilterPass::new(ctx.device, &settings.temporal, self.pair)
+        });
         temporal.encode(
             ctx,
             queue,
@@ -397,7 +402,7 @@ impl AoPipeline {
     /// Compiles the passes the settings need. Fails, naming the field, when the settings are
     /// out of range, with [`AoError::Fp16DepthMipsUnsupported`] when they ask for an fp16
     /// depth MIP chain the device cannot write, and with [`AoError::StorageFormats`] on a
-    /// device that cannot write the storage textures the passes write (wgpu's GL backend).
+    /// device that cannot write the storage textures the passes write.
     ///
     /// ```no_run
     /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::AoError> {
@@ -416,6 +421,7 @@ impl AoPipeline {
         settings: &AoSettings,
     ) -> Result<Self, AoError> {
         check_settings(device, settings)?;
+        let pair = PairFormat::of(device);
         Ok(Self {
             settings: *settings,
             view_uniforms: create_uniform_buffer::<ViewUniforms>(device, "aokit view"),
@@ -433,10 +439,11 @@ impl AoPipeline {
             separable_hbao: None,
             msvo: None,
             denoiser: Denoiser {
-                spatial: SpatialFilterPass::new(device, queue, &settings.spatial),
-                guided: GuidedFilterPass::new(device, queue, &settings.spatial),
+                spatial: SpatialFilterPass::new(device, queue, &settings.spatial, pair),
+                guided: GuidedFilterPass::new(device, queue, &settings.spatial, pair),
                 temporal: None,
                 histories: HashMap::new(),
+                pair,
             },
             resample: None,
             depth_mips: None,
@@ -616,7 +623,7 @@ impl AoPipeline {
             back_faces,
         };
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
-            self.targets = Some(Targets::new(device, layout));
+            self.targets = Some(Targets::new(device, layout, self.denoiser.pair));
         }
         let targets = self.targets.as_ref().expect("targets were just created");
         let (projection, frame_index) = (&inputs.projection, inputs.frame_index);
@@ -702,7 +709,7 @@ impl AoPipeline {
         let resample = targets.working.as_ref().map(|working| {
             let pass = self
                 .resample
-                .get_or_insert_with(|| ResamplePass::new(device));
+                .get_or_insert_with(|| ResamplePass::new(device, self.denoiser.pair));
             pass.prepare(
                 device,
                 queue,

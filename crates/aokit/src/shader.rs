@@ -209,20 +209,44 @@ pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
     ],
 };
 
+/// The storage type of a two-channel float target, one part per [`PairFormat`](crate::gpu::PairFormat) in its order:
+/// a program that writes one declares it `pair_storage`.
+const PAIR_STORAGE: [&str; 2] = [
+    "alias pair_storage = texture_storage_2d<rg32float, write>;",
+    "alias pair_storage = texture_storage_2d<rgba32float, write>;",
+];
+
+/// One program per [`PairFormat`](crate::gpu::PairFormat), indexed by it: the parts with `pair_storage` declared.
+macro_rules! per_pair_format {
+    ($name:literal, [$($part:expr),*]) => {
+        [
+            ShaderSource {
+                name: $name,
+                parts: &[$($part,)* PAIR_STORAGE[0]],
+            },
+            ShaderSource {
+                name: $name,
+                parts: &[$($part,)* PAIR_STORAGE[1]],
+            },
+        ]
+    };
+}
+
 /// The spatial filter's tile, weights and entry point; each pass file adds its axis, workgroup
 /// shape and textures.
 const SPATIAL_FILTER: &str = include_str!("../shaders/spatial_filter.wgsl");
 
-/// First pass of the spatial filter: along rows, AO and linear depth in, both packed out.
-pub const SPATIAL_FILTER_HORIZONTAL: ShaderSource = ShaderSource {
-    name: "spatial_filter_horizontal",
-    parts: &[
+/// First pass of the spatial filter: along rows, AO and linear depth in, both packed out; per
+/// [`PairFormat`](crate::gpu::PairFormat).
+pub const SPATIAL_FILTER_HORIZONTAL: [ShaderSource; 2] = per_pair_format!(
+    "spatial_filter_horizontal",
+    [
         VIEW,
         ENCODING,
         SPATIAL_FILTER,
-        include_str!("../shaders/spatial_filter_horizontal.wgsl"),
-    ],
-};
+        include_str!("../shaders/spatial_filter_horizontal.wgsl")
+    ]
+);
 
 /// Second pass of the spatial filter: along columns, packed AO and depth in, AO out.
 pub const SPATIAL_FILTER_VERTICAL: ShaderSource = ShaderSource {
@@ -240,15 +264,15 @@ pub const SPATIAL_FILTER_VERTICAL: ShaderSource = ShaderSource {
 const GUIDED_FILTER: &str = include_str!("../shaders/guided_filter.wgsl");
 
 /// First pass of the guided filter: AO and linear depth in, each window's line (slope and value
-/// at its centre) out.
-pub const GUIDED_FILTER_COEFFICIENTS: ShaderSource = ShaderSource {
-    name: "guided_filter_coefficients",
-    parts: &[
+/// at its centre) out; per [`PairFormat`](crate::gpu::PairFormat).
+pub const GUIDED_FILTER_COEFFICIENTS: [ShaderSource; 2] = per_pair_format!(
+    "guided_filter_coefficients",
+    [
         VIEW,
         GUIDED_FILTER,
-        include_str!("../shaders/guided_filter_coefficients.wgsl"),
-    ],
-};
+        include_str!("../shaders/guided_filter_coefficients.wgsl")
+    ]
+);
 
 /// Second pass of the guided filter: the windows' lines and linear depth in, AO out.
 pub const GUIDED_FILTER_OUTPUT: ShaderSource = ShaderSource {
@@ -260,11 +284,11 @@ pub const GUIDED_FILTER_OUTPUT: ShaderSource = ShaderSource {
     ],
 };
 
-/// The temporal filter.
-pub const TEMPORAL_FILTER: ShaderSource = ShaderSource {
-    name: "temporal_filter",
-    parts: &[VIEW, include_str!("../shaders/temporal_filter.wgsl")],
-};
+/// The temporal filter, per [`PairFormat`](crate::gpu::PairFormat).
+pub const TEMPORAL_FILTER: [ShaderSource; 2] = per_pair_format!(
+    "temporal_filter",
+    [VIEW, include_str!("../shaders/temporal_filter.wgsl")]
+);
 
 /// The mask texture's weight in `apply_mask`, after [`FLOAT_INPUT`] or its multisampled form.
 const MASK_TEXTURE_WEIGHT: &str = "
@@ -343,12 +367,19 @@ pub const DEBUG_VIEW: ShaderSource = ShaderSource {
 const RESAMPLE: &str = include_str!("../shaders/resample.wgsl");
 
 /// Linear depth, normals and motion vectors from the input's resolution to the working one,
-/// per kind of depth input.
-pub const DOWNSAMPLE: [ShaderSource; 4] = per_depth_input!(
-    "downsample",
-    [VIEW, RESAMPLE],
-    [include_str!("../shaders/downsample.wgsl")]
-);
+/// per [`PairFormat`](crate::gpu::PairFormat) and kind of depth input.
+pub const DOWNSAMPLE: [[ShaderSource; 4]; 2] = [
+    per_depth_input!(
+        "downsample",
+        [VIEW, RESAMPLE, PAIR_STORAGE[0]],
+        [include_str!("../shaders/downsample.wgsl")]
+    ),
+    per_depth_input!(
+        "downsample",
+        [VIEW, RESAMPLE, PAIR_STORAGE[1]],
+        [include_str!("../shaders/downsample.wgsl")]
+    ),
+];
 
 /// AO and bent normals from the working resolution to the input's, guided by depth, per kind
 /// of depth input.
@@ -526,15 +557,22 @@ pub const ALL: &[ShaderSource] = &[
     DEPTH_MIPS_FP16,
     HBAO_ROWS,
     HBAO_COLUMNS,
-    SPATIAL_FILTER_HORIZONTAL,
+    SPATIAL_FILTER_HORIZONTAL[0],
+    SPATIAL_FILTER_HORIZONTAL[1],
     SPATIAL_FILTER_VERTICAL,
-    GUIDED_FILTER_COEFFICIENTS,
+    GUIDED_FILTER_COEFFICIENTS[0],
+    GUIDED_FILTER_COEFFICIENTS[1],
     GUIDED_FILTER_OUTPUT,
-    TEMPORAL_FILTER,
-    DOWNSAMPLE[0],
-    DOWNSAMPLE[1],
-    DOWNSAMPLE[2],
-    DOWNSAMPLE[3],
+    TEMPORAL_FILTER[0],
+    TEMPORAL_FILTER[1],
+    DOWNSAMPLE[0][0],
+    DOWNSAMPLE[0][1],
+    DOWNSAMPLE[0][2],
+    DOWNSAMPLE[0][3],
+    DOWNSAMPLE[1][0],
+    DOWNSAMPLE[1][1],
+    DOWNSAMPLE[1][2],
+    DOWNSAMPLE[1][3],
     UPSAMPLE[0],
     UPSAMPLE[1],
     UPSAMPLE[2],
@@ -617,7 +655,7 @@ impl ShaderSource {
     /// let [x, y, _] = shader::GTAO.workgroup_size()?;
     /// assert_eq!([1920u32.div_ceil(x), 1080u32.div_ceil(y)], [120, 68]);
     /// // The spatial filter's horizontal pass runs along rows, 64 pixels a workgroup.
-    /// assert_eq!(shader::SPATIAL_FILTER_HORIZONTAL.workgroup_size()?, [64, 1, 1]);
+    /// assert_eq!(shader::SPATIAL_FILTER_HORIZONTAL[0].workgroup_size()?, [64, 1, 1]);
     /// # Ok::<(), String>(())
     /// ```
     pub fn workgroup_size(&self) -> Result<[u32; 3], String> {
@@ -764,7 +802,7 @@ mod tests {
     #[test]
     fn only_aokits_own_programs_skip_loop_bounding() {
         assert!(ALL.iter().all(ShaderSource::is_own));
-        for program in [GTAO, method(Method::Vbao), SPATIAL_FILTER_HORIZONTAL] {
+        for program in [GTAO, method(Method::Vbao), SPATIAL_FILTER_HORIZONTAL[0]] {
             assert!(program.is_own(), "{}", program.name);
         }
         // A program of one's own under an aokit name, or aokit's parts with one more, is

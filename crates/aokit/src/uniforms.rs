@@ -477,7 +477,7 @@ mod tests {
             normal_power,
         });
         for pass in [
-            shader::SPATIAL_FILTER_HORIZONTAL,
+            shader::SPATIAL_FILTER_HORIZONTAL[0],
             shader::SPATIAL_FILTER_VERTICAL,
         ] {
             shader::check_layout(
@@ -494,7 +494,7 @@ mod tests {
     fn guided_uniforms_match_wgsl_in_both_passes() {
         let fields = crate::field_offsets!(GuidedUniforms { epsilon });
         for pass in [
-            shader::GUIDED_FILTER_COEFFICIENTS,
+            shader::GUIDED_FILTER_COEFFICIENTS[0],
             shader::GUIDED_FILTER_OUTPUT,
         ] {
             shader::check_layout(&pass, "GuidedUniforms", fields, size_of::<GuidedUniforms>())
@@ -515,13 +515,13 @@ mod tests {
             flags,
         });
         shader::check_layout(
-            &shader::TEMPORAL_FILTER,
+            &shader::TEMPORAL_FILTER[0],
             "TemporalUniforms",
             fields,
             size_of::<TemporalUniforms>(),
         )
         .unwrap();
-        let module = shader::TEMPORAL_FILTER.validate().unwrap();
+        let module = shader::TEMPORAL_FILTER[0].validate().unwrap();
         for (name, bit) in [
             ("FLAG_HISTORY", temporal_flags::HISTORY),
             ("FLAG_MOTION_VECTORS", temporal_flags::MOTION_VECTORS),
@@ -556,7 +556,7 @@ mod tests {
             )
             .unwrap();
         }
-        for pass in [shader::DOWNSAMPLE[0], shader::UPSAMPLE[0]] {
+        for pass in [shader::DOWNSAMPLE[0][0], shader::UPSAMPLE[0]] {
             let module = pass.validate().unwrap();
             let constant = |name: &str| shader::u32_constant(&module, name);
             for mode in crate::Downsample::ALL {

@@ -5,17 +5,11 @@
 use std::collections::HashMap;
 
 use super::method::AO_FORMAT;
-use super::spatial_filter::PACKED_FORMAT;
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::create_uniform_buffer;
+use crate::gpu::{PairFormat, create_uniform_buffer};
 use crate::settings::{SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::GuidedUniforms;
-
-/// Format of the first pass's output: each window's slope in r and the value of its line at the
-/// window's centre in g, both f32 like the AO. The bilateral kind's [`PACKED_FORMAT`], so the
-/// pipeline's one intermediate texture serves both kinds.
-pub const COEFFICIENTS_FORMAT: wgpu::TextureFormat = PACKED_FORMAT;
 
 /// The two kernels of the filter and its settings buffer.
 pub struct GuidedFilterPass {
@@ -25,16 +19,26 @@ pub struct GuidedFilterPass {
     /// The radius of the settings last given, when they select the guided kind.
     current: Option<u32>,
     uniforms: wgpu::Buffer,
+    /// The format of the first pass's output: each window's slope in r and the value of its
+    /// line at the window's centre in g, both f32 like the AO. The bilateral kind's, so the
+    /// pipeline's one intermediate texture serves both kinds.
+    pair: PairFormat,
 }
 
 impl GuidedFilterPass {
     /// Creates the settings buffer and uploads `settings`, compiling the kernels if they select
-    /// the guided kind.
-    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
+    /// the guided kind; the first pass writes `pair`.
+    pub fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        settings: &SpatialSettings,
+        pair: PairFormat,
+    ) -> Self {
         let mut pass = Self {
             kernels: HashMap::new(),
             current: None,
             uniforms: create_uniform_buffer::<GuidedUniforms>(device, "aokit guided settings"),
+            pair,
         };
         pass.set_settings(device, queue, settings);
         pass
@@ -68,8 +72,8 @@ impl GuidedFilterPass {
                 [
                     ComputeKernel::with_constants(
                         device,
-                        &shader::GUIDED_FILTER_COEFFICIENTS,
-                        &entries(COEFFICIENTS_FORMAT),
+                        &shader::GUIDED_FILTER_COEFFICIENTS[self.pair as usize],
+                        &entries(self.pair.texture_format()),
                         &constants,
                     ),
                     ComputeKernel::with_constants(
@@ -89,7 +93,7 @@ impl GuidedFilterPass {
     }
 
     /// Records both passes: every window's line fitted to `ao` against `linear_depth` into
-    /// `coefficients` ([`COEFFICIENTS_FORMAT`]), then each pixel's average of the lines of the
+    /// `coefficients` (the pass's [`PairFormat`]), then each pixel's average of the lines of the
     /// windows that hold it into `output` (`R32Float`, as the AO kernels write).
     ///
     /// # Panics
@@ -141,7 +145,8 @@ mod tests {
     #[test]
     fn constants_match_wgsl() {
         for pass in [
-            shader::GUIDED_FILTER_COEFFICIENTS,
+            shader::GUIDED_FILTER_COEFFICIENTS[0],
+            shader::GUIDED_FILTER_COEFFICIENTS[1],
             shader::GUIDED_FILTER_OUTPUT,
         ] {
             let module = pass.validate().unwrap();
@@ -155,7 +160,8 @@ mod tests {
 
     /// The filtered AO of `image`, from both passes on the GPU.
     fn filter(gpu: &GpuContext, settings: &SpatialSettings, image: &Image) -> Vec<f32> {
-        let pass = GuidedFilterPass::new(&gpu.device, &gpu.queue, settings);
+        let pair = PairFormat::of(&gpu.device);
+        let pass = GuidedFilterPass::new(&gpu.device, &gpu.queue, settings, pair);
         run_filter(gpu, image, |ctx, t| {
             pass.encode(ctx, &t.ao, &t.depth, &t.packed, &t.output);
         })

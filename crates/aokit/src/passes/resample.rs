@@ -8,16 +8,12 @@ use std::collections::HashMap;
 use super::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
 use super::temporal_filter::MOTION_VECTOR_FORMATS;
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_uniform_buffer, stand_in_view};
+use crate::gpu::{PairFormat, create_uniform_buffer, stand_in_view};
 use crate::passes::linear_depth::{DepthInput, LINEAR_DEPTH_FORMAT};
 use crate::passes::normals_from_depth::NORMALS_FORMAT;
 use crate::settings::{AoSettings, Downsample, Upsample};
 use crate::shader;
 use crate::uniforms::UpsampleUniforms;
-
-/// Format of the downsampled motion vectors: offsets in working texels, full precision as the
-/// temporal filter's history is.
-pub const WORKING_MOTION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
 
 /// Where the downsample writes, at working resolution. See [`ResamplePass::downsample`].
 pub struct DownsampleTargets<'a> {
@@ -25,8 +21,9 @@ pub struct DownsampleTargets<'a> {
     pub linear_depth: &'a wgpu::TextureView,
     /// oct32 normals ([`NORMALS_FORMAT`]) of the pixels the depth came from.
     pub normals: &'a wgpu::TextureView,
-    /// Motion vectors ([`WORKING_MOTION_FORMAT`]) of those pixels, when the temporal filter
-    /// runs at working resolution with motion vectors.
+    /// Motion vectors (the pass's [`PairFormat`]: offsets in working texels, full precision as
+    /// the temporal filter's history is) of those pixels, when the temporal filter runs at
+    /// working resolution with motion vectors.
     pub motion_vectors: Option<&'a wgpu::TextureView>,
 }
 
@@ -69,11 +66,14 @@ pub struct ResamplePass {
     bent_in_placeholder: wgpu::TextureView,
     bent_out_placeholder: wgpu::TextureView,
     linear_out_placeholder: wgpu::TextureView,
+    /// The format of the downsampled motion vectors.
+    pair: PairFormat,
 }
 
 impl ResamplePass {
-    /// Creates the buffers; the kernels compile as frames ask for them.
-    pub fn new(device: &wgpu::Device) -> Self {
+    /// Creates the buffers; the kernels compile as frames ask for them. The downsampled motion
+    /// vectors are written in `pair`.
+    pub fn new(device: &wgpu::Device, pair: PairFormat) -> Self {
         let placeholder = |label, format, usage| stand_in_view(device, label, format, usage);
         let read = wgpu::TextureUsages::TEXTURE_BINDING;
         let write = wgpu::TextureUsages::STORAGE_BINDING;
@@ -93,7 +93,7 @@ impl ResamplePass {
             ),
             motion_out_placeholder: placeholder(
                 "aokit working motion placeholder",
-                WORKING_MOTION_FORMAT,
+                pair.texture_format(),
                 write,
             ),
             bent_in_placeholder: placeholder(
@@ -111,6 +111,7 @@ impl ResamplePass {
                 LINEAR_DEPTH_FORMAT,
                 write,
             ),
+            pair,
         }
     }
 
@@ -145,7 +146,7 @@ impl ResamplePass {
         self.downsamples.entry(down).or_insert_with(|| {
             ComputeKernel::with_constants(
                 device,
-                &shader::DOWNSAMPLE[frame.input as usize],
+                &shader::DOWNSAMPLE[self.pair as usize][frame.input as usize],
                 &[
                     bind::uniform(0),
                     frame.input.layout_entry(1),
@@ -153,7 +154,7 @@ impl ResamplePass {
                     bind::texture(3, float),
                     bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
                     bind::storage_texture(5, NORMALS_FORMAT),
-                    bind::storage_texture(6, WORKING_MOTION_FORMAT),
+                    bind::storage_texture(6, self.pair.texture_format()),
                 ],
                 &[
                     ("MODE", f64::from(settings.downsample as u32)),
@@ -367,7 +368,7 @@ mod tests {
         let outputs = [
             target(gpu, working, LINEAR_DEPTH_FORMAT),
             target(gpu, working, NORMALS_FORMAT),
-            target(gpu, working, WORKING_MOTION_FORMAT),
+            target(gpu, working, wgpu::TextureFormat::Rg32Float),
         ];
         let views = outputs.each_ref().map(view);
         let uniforms = view_uniforms(gpu, settings.resolution.scale());
@@ -445,7 +446,7 @@ mod tests {
     #[test]
     fn each_downsample_takes_the_pixel_it_names_with_its_normal_and_motion() {
         let gpu = gpu();
-        let mut pass = ResamplePass::new(&gpu.device);
+        let mut pass = ResamplePass::new(&gpu.device, PairFormat::Rg32Float);
         // Random depths, a few repeated (ties), and sky in a sprinkling of pixels and in whole
         // blocks of the top rows.
         let depth: Vec<f32> = (0..SIZE[0] * SIZE[1])
@@ -610,7 +611,7 @@ mod tests {
     #[test]
     fn upsampling_keeps_each_side_of_a_depth_step_and_sky_stays_one() {
         let gpu = gpu();
-        let mut pass = ResamplePass::new(&gpu.device);
+        let mut pass = ResamplePass::new(&gpu.device, PairFormat::Rg32Float);
         let near_ao = 0.2;
         let far_ao = 0.8;
         for s in every_upsample() {
@@ -642,7 +643,7 @@ mod tests {
     #[test]
     fn constant_ao_and_bent_normals_upsample_to_themselves() {
         let gpu = gpu();
-        let mut pass = ResamplePass::new(&gpu.device);
+        let mut pass = ResamplePass::new(&gpu.device, PairFormat::Rg32Float);
         let constant = 0.37;
         for s in every_upsample() {
             let (ao, bent) = upsample(&gpu, &mut pass, &s, |_, _| constant);
@@ -671,7 +672,7 @@ mod tests {
     #[test]
     fn bilinear_upsampling_interpolates_between_texel_centres() {
         let gpu = gpu();
-        let mut pass = ResamplePass::new(&gpu.device);
+        let mut pass = ResamplePass::new(&gpu.device, PairFormat::Rg32Float);
         let gradient = |[x, y]: [u32; 2]| 0.3 + 0.01 * x as f32 + 0.005 * y as f32;
         for resolution in [Resolution::Half, Resolution::Quarter] {
             let scale = resolution.scale();

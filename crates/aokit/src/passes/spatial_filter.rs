@@ -6,17 +6,16 @@ use std::collections::HashMap;
 
 use super::method::AO_FORMAT;
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::create_uniform_buffer;
+use crate::gpu::{PairFormat, create_uniform_buffer};
 use crate::settings::{DepthWeight, SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::SpatialUniforms;
 
-/// Format of the horizontal pass's output: AO in r, linear depth in g, so that the vertical
-/// pass reads one texture. Two halves packed in an `R32Uint` (`Rg16Float` is no storage format
-/// in core WebGPU) scored the same to four decimals and would move 28 bytes a pixel instead of
-/// 36, but a half overflows past a depth of 65504 units, which scenes in millimetres reach
-/// (docs/denoise.md).
-pub const PACKED_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
+// The horizontal pass's output holds AO in r and linear depth in g, in the device's
+// `PairFormat`, so that the vertical pass reads one texture. Two halves packed in an `R32Uint`
+// (`Rg16Float` is no storage format in core WebGPU) scored the same to four decimals and would
+// move 28 bytes a pixel instead of 36, but a half overflows past a depth of 65504 units, which
+// scenes in millimetres reach (docs/denoise.md).
 
 /// What the kernels compile in (the shader's `override`s): the radius, the depth weight's kind
 /// and whether normals weigh in.
@@ -29,16 +28,24 @@ pub struct SpatialFilterPass {
     /// The variant of the settings last given, when they enable the filter.
     current: Option<Variant>,
     uniforms: wgpu::Buffer,
+    /// The format of the horizontal pass's output.
+    pair: PairFormat,
 }
 
 impl SpatialFilterPass {
     /// Creates the settings buffer and uploads `settings`, compiling the kernels if they
-    /// enable the bilateral kind.
-    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
+    /// enable the bilateral kind; the horizontal pass writes `pair`.
+    pub fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        settings: &SpatialSettings,
+        pair: PairFormat,
+    ) -> Self {
         let mut pass = Self {
             kernels: HashMap::new(),
             current: None,
             uniforms: create_uniform_buffer::<SpatialUniforms>(device, "aokit spatial settings"),
+            pair,
         };
         pass.set_settings(device, queue, settings);
         pass
@@ -75,14 +82,14 @@ impl SpatialFilterPass {
             ];
             let horizontal = [
                 bind::texture(4, wgpu::TextureSampleType::Float { filterable: false }),
-                bind::storage_texture(5, PACKED_FORMAT),
+                bind::storage_texture(5, self.pair.texture_format()),
             ];
             let vertical = [bind::storage_texture(4, AO_FORMAT)];
             self.kernels.entry(variant).or_insert_with(|| {
                 [
                     ComputeKernel::with_constants(
                         device,
-                        &shader::SPATIAL_FILTER_HORIZONTAL,
+                        &shader::SPATIAL_FILTER_HORIZONTAL[self.pair as usize],
                         &[&shared[..], &horizontal].concat(),
                         &constants,
                     ),
@@ -103,7 +110,7 @@ impl SpatialFilterPass {
     }
 
     /// Records both passes: `ao` and `linear_depth` (with `normals`, oct32, for the normal
-    /// weight) filtered along rows into `packed` ([`PACKED_FORMAT`]), then along columns into
+    /// weight) filtered along rows into `packed` (the pass's [`PairFormat`]), then along columns into
     /// `output` (`R32Float`, as the AO kernels write).
     ///
     /// # Panics
@@ -165,7 +172,8 @@ pub(crate) mod tests {
     #[test]
     fn constants_match_wgsl() {
         for pass in [
-            shader::SPATIAL_FILTER_HORIZONTAL,
+            shader::SPATIAL_FILTER_HORIZONTAL[0],
+            shader::SPATIAL_FILTER_HORIZONTAL[1],
             shader::SPATIAL_FILTER_VERTICAL,
         ] {
             let module = pass.validate().unwrap();
@@ -181,7 +189,7 @@ pub(crate) mod tests {
             );
         }
         assert_eq!(
-            shader::SPATIAL_FILTER_HORIZONTAL.workgroup_size(),
+            shader::SPATIAL_FILTER_HORIZONTAL[0].workgroup_size(),
             Ok([64, 1, 1])
         );
         assert_eq!(
@@ -257,6 +265,7 @@ pub(crate) mod tests {
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
         let output = create_texture_2d(device, "output", SIZE, AO_FORMAT, usage);
+        let pair = PairFormat::of(device);
         let textures = Textures {
             ao: upload(
                 "ao",
@@ -273,7 +282,7 @@ pub(crate) mod tests {
                 wgpu::TextureFormat::R32Uint,
                 bytemuck::cast_slice(&packed_normals),
             ),
-            packed: create_texture_2d(device, "packed", SIZE, PACKED_FORMAT, usage)
+            packed: create_texture_2d(device, "packed", SIZE, pair.texture_format(), usage)
                 .create_view(&Default::default()),
             output: output.create_view(&Default::default()),
         };
@@ -301,7 +310,8 @@ pub(crate) mod tests {
 
     /// The filtered AO of `image`, from both passes on the GPU.
     fn filter(gpu: &GpuContext, settings: &SpatialSettings, image: &Image) -> Vec<f32> {
-        let pass = SpatialFilterPass::new(&gpu.device, &gpu.queue, settings);
+        let pair = PairFormat::of(&gpu.device);
+        let pass = SpatialFilterPass::new(&gpu.device, &gpu.queue, settings, pair);
         run_filter(gpu, image, |ctx, t| {
             pass.encode(ctx, &t.ao, &t.depth, &t.normals, &t.packed, &t.output);
         })

@@ -4,16 +4,13 @@
 use glam::Mat4;
 
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d, create_uniform_buffer, stand_in_view};
+use crate::gpu::{PairFormat, create_texture_2d, create_uniform_buffer, stand_in_view};
 use crate::passes::method::AO_FORMAT;
 use crate::projection::Projection;
 use crate::settings::TemporalSettings;
 use crate::shader;
 use crate::uniforms::TemporalUniforms;
 
-/// Format of the history: AO and linear depth, full precision so depth comparisons after many
-/// frames still tell surfaces apart.
-pub const HISTORY_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg32Float;
 /// Format of the motion vectors a renderer may hand in: pixels from a pixel to where its surface
 /// was in the previous frame.
 pub const MOTION_VECTOR_FORMATS: [wgpu::TextureFormat; 2] = [
@@ -38,7 +35,9 @@ pub struct History {
 }
 
 impl History {
-    fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
+    /// The history holds AO and linear depth in `pair`, full precision so depth comparisons
+    /// after many frames still tell surfaces apart.
+    fn new(device: &wgpu::Device, size: [u32; 2], pair: PairFormat) -> Self {
         let usage = wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::TEXTURE_BINDING
             | wgpu::TextureUsages::COPY_SRC;
@@ -50,8 +49,8 @@ impl History {
         Self {
             size,
             textures: [
-                make("aokit history a", HISTORY_FORMAT),
-                make("aokit history b", HISTORY_FORMAT),
+                make("aokit history a", pair.texture_format()),
+                make("aokit history b", pair.texture_format()),
             ],
             latest: 0,
             camera: None,
@@ -92,15 +91,17 @@ pub struct TemporalFilterPass {
     point_clamp: wgpu::Sampler,
     /// Bound in place of motion vectors when there are none: never read.
     motion_placeholder: wgpu::TextureView,
+    /// The format of the histories.
+    pair: PairFormat,
 }
 
 impl TemporalFilterPass {
-    /// Compiles the kernel.
-    pub fn new(device: &wgpu::Device, settings: &TemporalSettings) -> Self {
+    /// Compiles the kernel, for histories in `pair`.
+    pub fn new(device: &wgpu::Device, settings: &TemporalSettings, pair: PairFormat) -> Self {
         let float = wgpu::TextureSampleType::Float { filterable: false };
         let kernel = ComputeKernel::new(
             device,
-            &shader::TEMPORAL_FILTER,
+            &shader::TEMPORAL_FILTER[pair as usize],
             &[
                 bind::uniform(0),
                 bind::uniform(1),
@@ -110,7 +111,7 @@ impl TemporalFilterPass {
                 bind::texture(5, float),
                 bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
                 bind::storage_texture(7, AO_FORMAT),
-                bind::storage_texture(8, HISTORY_FORMAT),
+                bind::storage_texture(8, pair.texture_format()),
                 bind::storage_texture(9, AO_FORMAT),
             ],
         );
@@ -128,6 +129,7 @@ impl TemporalFilterPass {
                 MOTION_VECTOR_FORMATS[0],
                 wgpu::TextureUsages::TEXTURE_BINDING,
             ),
+            pair,
         }
     }
 
@@ -148,7 +150,7 @@ impl TemporalFilterPass {
         linear_depth: &wgpu::TextureView,
     ) {
         if history.as_ref().map(|h| h.size) != Some(ctx.size) {
-            *history = Some(History::new(ctx.device, ctx.size));
+            *history = Some(History::new(ctx.device, ctx.size, self.pair));
         }
         let history = history.as_mut().expect("history was just made");
         let previous = history.camera.filter(|_| !frame.reset);
