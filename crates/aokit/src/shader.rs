@@ -209,14 +209,16 @@ pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
     ],
 };
 
-/// The storage type of a two-channel float target, one part per [`PairFormat`](crate::gpu::PairFormat) in its order:
-/// a program that writes one declares it `pair_storage`.
+/// The storage type of a two-channel float target, one part per
+/// [`PairFormat`](crate::gpu::PairFormat) in its order: a program that writes one declares it
+/// `pair_storage`.
 const PAIR_STORAGE: [&str; 2] = [
     "alias pair_storage = texture_storage_2d<rg32float, write>;",
     "alias pair_storage = texture_storage_2d<rgba32float, write>;",
 ];
 
-/// One program per [`PairFormat`](crate::gpu::PairFormat), indexed by it: the parts with `pair_storage` declared.
+/// One program per [`PairFormat`](crate::gpu::PairFormat), indexed by it: the parts with
+/// `pair_storage` declared.
 macro_rules! per_pair_format {
     ($name:literal, [$($part:expr),*]) => {
         [

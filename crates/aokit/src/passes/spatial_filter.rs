@@ -110,8 +110,8 @@ impl SpatialFilterPass {
     }
 
     /// Records both passes: `ao` and `linear_depth` (with `normals`, oct32, for the normal
-    /// weight) filtered along rows into `packed` (the pass's [`PairFormat`]), then along columns into
-    /// `output` (`R32Float`, as the AO kernels write).
+    /// weight) filtered along rows into `packed` (the pass's [`PairFormat`]), then along
+    /// columns into `output` (`R32Float`, as the AO kernels write).
     ///
     /// # Panics
     /// When the settings last given do not enable the bilateral kind.
