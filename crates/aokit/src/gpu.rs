@@ -354,7 +354,7 @@ fn choose_adapter(
         .filter(|adapter| match unusable(adapter) {
             Some(why) => {
                 let info = adapter.get_info();
-                refused.push(format!("{} ({:?}) {why}", info.name, info.backend));
+                refused.push(format!("{} ({:?}): {why}", info.name, info.backend));
                 false
             }
             None => true,
@@ -367,9 +367,11 @@ fn choose_adapter(
     }
     if let Some(wanted) = wanted_name.filter(|w| !w.is_empty()) {
         let needle = wanted.to_lowercase();
+        // The adapters passed over too, with why: the one wanted may be among them.
         let found = adapters
             .iter()
             .map(|a| a.get_info().name)
+            .chain(refused.iter().map(|why| format!("{why} (passed over)")))
             .collect::<Vec<_>>()
             .join(", ");
         return adapters
