@@ -28,7 +28,9 @@ fn coarser_at(t: vec2<u32>, level: u32, depth: f32) -> f32 {
         let corner = vec2<f32>(f32(i & 1u), f32(i >> 1u));
         let texel = clamp(vec2<i32>(base + corner), vec2<i32>(0), dims - 1);
         let bilinear = mix(1.0 - f.x, f.x, corner.x) * mix(1.0 - f.y, f.y, corner.y);
-        let z = textureLoad(linear_depth, texel, level + 1u).r;
+        // Levels as i32: naga's GLSL output checks a load against textureSize(image, level), which
+        // takes no u32 (wgpu's GL backend).
+        let z = textureLoad(linear_depth, texel, i32(level + 1u)).r;
         if z == NO_SURFACE {
             continue;
         }
@@ -45,7 +47,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let level = output_level();
-    let depth = textureLoad(linear_depth, id.xy, level).r;
+    let depth = textureLoad(linear_depth, id.xy, i32(level)).r;
     var value = 1.0;
     if depth != NO_SURFACE {
         value = textureLoad(finer, id.xy, 0).r * coarser_at(id.xy, level, depth);

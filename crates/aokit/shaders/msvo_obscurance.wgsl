@@ -39,7 +39,9 @@ fn disocclusion(sample_depth: f32, center: f32, half_chord: f32) -> f32 {
 // filled. 1 where there is nothing to sample, and where a finer level's disc already covers the
 // AO radius, so that each scale counts once.
 fn level_visibility(t: vec2<u32>, level: u32) -> f32 {
-    let depth = textureLoad(linear_depth, t, level).r;
+    // Levels as i32: naga's GLSL output checks a load against textureSize(image, level), which
+    // takes no u32 (wgpu's GL backend).
+    let depth = textureLoad(linear_depth, t, i32(level)).r;
     if depth == NO_SURFACE || depth * ao.fade_mul + ao.fade_add <= 0.0 {
         return 1.0;
     }
@@ -80,8 +82,10 @@ fn level_visibility(t: vec2<u32>, level: u32) -> f32 {
         // whole-texel offsets sample the disc's area evenly, each standing for a column.
         let thickness = sqrt(1.0 - reach * reach);
         let half_chord = sphere * thickness;
-        let da = disocclusion(textureLoad(linear_depth, vec2<u32>(a), level).r, mid, half_chord);
-        let db = disocclusion(textureLoad(linear_depth, vec2<u32>(b), level).r, mid, half_chord);
+        let depth_a = textureLoad(linear_depth, vec2<u32>(a), i32(level)).r;
+        let depth_b = textureLoad(linear_depth, vec2<u32>(b), i32(level)).r;
+        let da = disocclusion(depth_a, mid, half_chord);
+        let db = disocclusion(depth_b, mid, half_chord);
         // A sample more than `msvo.thickness` chords in front of the sphere is rejected: the
         // pair then counts its mirror as unoccluded too (MiniEngine's pair test), since an
         // occluder that far in front is thin, and may hide the open space behind it.

@@ -39,7 +39,9 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         let level = u32(clamp(steps_out - LOG_MAX_OFFSET, 0, coarsest));
         // An odd side leaves the last pixels past the coarser level's last texel.
         let texel = min(vec2<u32>(tap) >> vec2<u32>(level), textureDimensions(linear_depth, level) - 1u);
-        let depth = textureLoad(linear_depth, texel, level).r;
+        // Levels as i32: naga's GLSL output checks a load against textureSize(image, level), which
+        // takes no u32 (wgpu's GL backend).
+        let depth = textureLoad(linear_depth, texel, i32(level)).r;
         if depth == NO_SURFACE {
             continue;
         }

@@ -55,7 +55,9 @@ fn pair_sample(s: Surface, offset: vec2<i32>, distance: f32, coarsest: i32) -> S
     let level = u32(clamp(steps_out - LOG_MAX_OFFSET, 0, coarsest));
     // An odd side leaves the last pixels past the coarser level's last texel.
     let texel = min(vec2<u32>(tap) >> vec2<u32>(level), textureDimensions(linear_depth, level) - 1u);
-    let depth = textureLoad(linear_depth, texel, level).r;
+    // Levels as i32: naga's GLSL output checks a load against textureSize(image, level), which
+    // takes no u32 (wgpu's GL backend).
+    let depth = textureLoad(linear_depth, texel, i32(level)).r;
     // Placed at the sample's own pixel, as the seed's ReconstructCSPos(AbsL, ScreenSpacePosL):
     // the two samples stay mirrored about the pixel at every level.
     return Sample(view_position(vec2<f32>(tap) + 0.5, depth), depth != NO_SURFACE);
