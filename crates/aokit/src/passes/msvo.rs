@@ -6,7 +6,7 @@
 
 use super::method::{MethodPass, layout};
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{create_texture_2d_mips, mip_view};
+use crate::gpu::create_texture_2d;
 use crate::settings::MSVO_MAX_LEVELS;
 use crate::shader;
 
@@ -35,10 +35,48 @@ const MERGE_PASS_NAMES: [&str; MSVO_MAX_LEVELS as usize - 1] = [
 pub struct MsvoPass {
     obscurance: ComputeKernel,
     merge: ComputeKernel,
-    /// Each level's own obscurance, the chain's size and levels, when there are two or more
-    /// (one level alone is written straight into the method's AO); and the merged levels 1
-    /// and up, from half the chain's size (level 0's merge writes the method's AO).
-    targets: Option<(Option<wgpu::Texture>, Option<wgpu::Texture>)>,
+    /// Made for the chain's size and level count of the last frame.
+    targets: Option<LevelTargets>,
+}
+
+/// The intermediate textures for one size and level count of the depth chain: a texture per
+/// level, not the levels of one texture, since wgpu's GL backend emulates a view of one MIP
+/// level with its texture's base level, which two views of one texture bound at once (a
+/// level's obscurance and the next one's, in the merge) cannot both have.
+struct LevelTargets {
+    size: [u32; 2],
+    levels: u32,
+    /// Each level's own obscurance, when there are two or more levels (one level alone is
+    /// written straight into the method's AO).
+    own: Vec<wgpu::TextureView>,
+    /// The merged levels 1 to `levels - 2`: level 0's merge writes the method's AO, and the
+    /// coarsest level's merged obscurance is its own.
+    merged: Vec<wgpu::TextureView>,
+}
+
+impl LevelTargets {
+    fn new(device: &wgpu::Device, size: [u32; 2], levels: u32) -> Self {
+        // Levels `range` of a chain of `size`, as MIP levels are sized.
+        let textures = |label, range: std::ops::Range<u32>| -> Vec<wgpu::TextureView> {
+            let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
+            range
+                .map(|level| {
+                    let level_size = size.map(|side| (side >> level).max(1));
+                    create_texture_2d(device, label, level_size, LEVEL_FORMAT, usage)
+                        .create_view(&Default::default())
+                })
+                .collect()
+        };
+        Self {
+            size,
+            levels,
+            own: textures(
+                "aokit msvo obscurance",
+                if levels > 1 { 0..levels } else { 0..0 },
+            ),
+            merged: textures("aokit msvo merged", 1..levels.saturating_sub(1)),
+        }
+    }
 }
 
 impl MsvoPass {
@@ -77,35 +115,19 @@ impl MsvoPass {
     ) {
         let levels = levels.min(chain.mip_level_count());
         let size = [chain.width(), chain.height()];
-        // A texture of `mips` levels from `size` where `wanted`, and none elsewhere.
-        let stale = |texture: &Option<wgpu::Texture>, size: [u32; 2], mips: u32, wanted: bool| {
-            match texture {
-                Some(t) => {
-                    !wanted || [t.width(), t.height()] != size || t.mip_level_count() != mips
-                }
-                None => wanted,
-            }
-        };
-        if self.targets.as_ref().is_none_or(|(own, merged)| {
-            stale(own, size, levels, levels > 1)
-                || stale(merged, half(size), levels.saturating_sub(2), levels > 2)
-        }) {
-            let own = (levels > 1)
-                .then(|| level_texture(ctx.device, "aokit msvo obscurance", size, levels));
-            let merged = (levels > 2)
-                .then(|| level_texture(ctx.device, "aokit msvo merged", half(size), levels - 2));
-            self.targets = Some((own, merged));
+        if self
+            .targets
+            .as_ref()
+            .is_none_or(|t| t.size != size || t.levels != levels)
+        {
+            self.targets = Some(LevelTargets::new(ctx.device, size, levels));
         }
-        let (own, merged) = self.targets.as_ref().expect("made just above");
+        let LevelTargets { own, merged, .. } = self.targets.as_ref().expect("made just above");
         let chain_view = chain.create_view(&Default::default());
         // One level alone is the method's AO; otherwise each level's obscurance is kept for
         // its merge.
-        let own_levels: Vec<wgpu::TextureView> = own
-            .iter()
-            .flat_map(|own| (0..levels).map(|l| mip_view(own, l)))
-            .collect();
         for level in 0..levels {
-            let target = own_levels.get(level as usize).unwrap_or(ao);
+            let target = own.get(level as usize).unwrap_or(ao);
             self.dispatch(
                 ctx,
                 &self.obscurance,
@@ -118,22 +140,16 @@ impl MsvoPass {
                 OBSCURANCE_PASS_NAMES[level as usize],
             );
         }
-        // Merged level l (1 <= l <= levels - 2) is mip l - 1 of `merged`; the coarsest level's
-        // merged obscurance is its own.
-        let merged_levels: Vec<wgpu::TextureView> = merged
-            .iter()
-            .flat_map(|m| (0..levels - 2).map(|l| mip_view(m, l)))
-            .collect();
         for level in (0..levels.saturating_sub(1)).rev() {
             let coarser = if level + 1 == levels - 1 {
-                &own_levels[level as usize + 1]
+                &own[level as usize + 1]
             } else {
-                &merged_levels[level as usize]
+                &merged[level as usize]
             };
             let target = if level == 0 {
                 ao
             } else {
-                &merged_levels[level as usize - 1]
+                &merged[level as usize - 1]
             };
             self.dispatch(
                 ctx,
@@ -143,7 +159,7 @@ impl MsvoPass {
                 normals,
                 target,
                 &[
-                    wgpu::BindingResource::TextureView(&own_levels[level as usize]),
+                    wgpu::BindingResource::TextureView(&own[level as usize]),
                     wgpu::BindingResource::TextureView(coarser),
                 ],
                 level,
@@ -175,15 +191,4 @@ impl MsvoPass {
         let timestamps = ctx.timer.as_mut().and_then(|timer| timer.pass(name));
         kernel.dispatch(ctx.device, ctx.encoder, &resources, size, timestamps);
     }
-}
-
-/// Half of `size`, as the next MIP level's: rounded down, at least 1.
-fn half(size: [u32; 2]) -> [u32; 2] {
-    size.map(|side| (side / 2).max(1))
-}
-
-/// A texture of `levels` MIP levels from `size`, written as storage and read as a texture.
-fn level_texture(device: &wgpu::Device, label: &str, size: [u32; 2], levels: u32) -> wgpu::Texture {
-    let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
-    create_texture_2d_mips(device, label, size, levels, LEVEL_FORMAT, usage)
 }
