@@ -602,6 +602,9 @@ pub fn read_texture(
     } else {
         wgpu::TextureAspect::All
     };
+    // A copy the device refuses (wgpu's GL backend copies no depth texture to a buffer) is an
+    // error of this call, not a panic in wgpu's default handler.
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
     let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
         label: Some("aokit readback"),
     });
@@ -626,7 +629,14 @@ pub fn read_texture(
             depth_or_array_layers: 1,
         },
     );
-    queue.submit([encoder.finish()]);
+    let commands = encoder.finish();
+    if let Some(error) = pollster::block_on(scope.pop()) {
+        return Err(GpuError::Readback(format!(
+            "{:?} texture: {error}",
+            texture.format()
+        )));
+    }
+    queue.submit([commands]);
     let slice = buffer.slice(..);
     let (sender, receiver) = std::sync::mpsc::channel();
     slice.map_async(wgpu::MapMode::Read, move |result| {
