@@ -1,5 +1,6 @@
 //! wgpu's GL backend (llvmpipe's GL with Mesa's EGL in CI): the frames Vulkan renders, with
-//! every two-channel target in `Rgba32Float`, since GL has no `Rg32Float` storage textures.
+//! every two-channel target in `Rgba32Float`, since GL has no `Rg32Float` storage textures, and
+//! every method.
 //!
 //! Skipped (with a notice) where no GL adapter exists, unless `AOKIT_REQUIRE_GL` is set, as CI
 //! sets it.
@@ -92,5 +93,26 @@ fn gl_renders_the_frames_vulkan_renders() {
                 "{name}, frame {i}: {mean}, {near}"
             );
         }
+    }
+}
+
+/// Every method at `high` on `stairs`: SAO, UE4's SSAO and MSVO read levels of the depth chain
+/// (naga's GLSL output needed their levels as i32, and MSVO a texture per level).
+#[test]
+fn every_method_renders_on_gl_as_on_vulkan() {
+    let Some(gl) = gl_gpu() else { return };
+    let vulkan = gpu();
+    let scene = Builtin::Stairs.build();
+    for method in Method::ALL {
+        let settings = scene_settings(&scene, method, Preset::High);
+        let [a, b] = [&gl, &vulkan].map(|gpu| {
+            aokit_scene::Renderer::new(gpu, &scene, &settings)
+                .unwrap()
+                .render(gpu, &scene.cameras[0], SIZE, 0)
+                .unwrap()
+        });
+        let mean = mean_abs_difference(&a.ao, &b.ao);
+        eprintln!("{}: mean |GL - Vulkan| {mean:.2e}", method.name());
+        assert!(mean < 1e-3, "{}: {mean}", method.name());
     }
 }
