@@ -5,6 +5,8 @@
 
 use std::fmt;
 
+use crate::passes::{ComputeKernel, bind};
+
 /// How an adapter was found, for the one-line notice tools print.
 ///
 /// ```no_run
@@ -259,7 +261,7 @@ fn writes_storage(device: &wgpu::Device, format: wgpu::TextureFormat) -> bool {
     let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
     let _probe = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("aokit storage format probe"),
-        entries: &[crate::passes::bind::storage_texture(0, format)],
+        entries: &[bind::storage_texture(0, format)],
     });
     pollster::block_on(scope.pop()).is_none()
 }
@@ -569,9 +571,48 @@ fn texel_size(format: wgpu::TextureFormat) -> Result<u32, GpuError> {
         })
 }
 
+/// `texture`'s depth in an `R32Float` texture of its size, copied by a compute pass.
+fn depth_to_float(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+) -> wgpu::Texture {
+    let size = [texture.width(), texture.height()];
+    let format = wgpu::TextureFormat::R32Float;
+    let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC;
+    let copy = create_texture_2d(device, "aokit depth copy", size, format, usage);
+    let kernel = ComputeKernel::new(
+        device,
+        &crate::shader::DEPTH_TO_FLOAT,
+        &[
+            bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+            bind::storage_texture(1, format),
+        ],
+    );
+    let depth = texture.create_view(&wgpu::TextureViewDescriptor {
+        aspect: wgpu::TextureAspect::DepthOnly,
+        ..Default::default()
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    kernel.dispatch(
+        device,
+        &mut encoder,
+        &[
+            wgpu::BindingResource::TextureView(&depth),
+            wgpu::BindingResource::TextureView(&copy.create_view(&Default::default())),
+        ],
+        size,
+        None,
+    );
+    queue.submit([encoder.finish()]);
+    copy
+}
+
 /// Copies mip level 0 of a 2D texture to the CPU, tightly packed, row by row.
 ///
-/// Blocks until the GPU has finished. Depth textures return their depth aspect.
+/// Blocks until the GPU has finished. Depth textures return their depth aspect (on a device that
+/// copies no depth texture to a buffer, wgpu's GL backend, an f32 depth texture made with
+/// `TEXTURE_BINDING` through a compute copy).
 ///
 /// ```no_run
 /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, normals: &wgpu::Texture,
@@ -602,8 +643,9 @@ pub fn read_texture(
     } else {
         wgpu::TextureAspect::All
     };
-    // A copy the device refuses (wgpu's GL backend copies no depth texture to a buffer) is an
-    // error of this call, not a panic in wgpu's default handler.
+    // A copy the device refuses is an error of this call, not a panic in wgpu's default
+    // handler; wgpu's GL backend refuses depth textures, whose f32 depth a compute pass then
+    // copies into an R32Float texture first.
     let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
     let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
         label: Some("aokit readback"),
@@ -631,6 +673,17 @@ pub fn read_texture(
     );
     let commands = encoder.finish();
     if let Some(error) = pollster::block_on(scope.pop()) {
+        let float_depth = matches!(
+            texture.format(),
+            wgpu::TextureFormat::Depth32Float | wgpu::TextureFormat::Depth32FloatStencil8
+        );
+        if float_depth
+            && texture
+                .usage()
+                .contains(wgpu::TextureUsages::TEXTURE_BINDING)
+        {
+            return read_texture(device, queue, &depth_to_float(device, queue, texture));
+        }
         return Err(GpuError::Readback(format!(
             "{:?} texture: {error}",
             texture.format()

@@ -532,6 +532,13 @@ pub const OCCLUSION_FUNCTIONS: ShaderSource = ShaderSource {
     parts: &[OCCLUSION],
 };
 
+/// A depth texture into an `R32Float` one, for [`read_texture`](crate::gpu::read_texture) on a
+/// device that copies no depth texture to a buffer.
+pub const DEPTH_TO_FLOAT: ShaderSource = ShaderSource {
+    name: "depth_to_float",
+    parts: &[include_str!("../shaders/depth_to_float.wgsl")],
+};
+
 /// Every program the library compiles or validates.
 pub const ALL: &[ShaderSource] = &[
     LINEAR_DEPTH[0],
@@ -579,6 +586,7 @@ pub const ALL: &[ShaderSource] = &[
     UPSAMPLE[1],
     UPSAMPLE[2],
     UPSAMPLE[3],
+    DEPTH_TO_FLOAT,
     APPLY_MASK_TEXTURE,
     APPLY_MASK_TEXTURE_MULTISAMPLED,
     APPLY_MASK_STENCIL,
