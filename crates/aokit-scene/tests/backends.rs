@@ -10,7 +10,7 @@ mod common;
 use aokit::gpu::PairFormat;
 use aokit::{AoSettings, GpuContext, Method, Preset, Resolution, SpatialKind};
 use aokit_scene::{Builtin, CameraPath, Frame, Scene};
-use common::{gpu, mean_abs_difference, scene_settings};
+use common::{gpu, mean_abs_difference, render_frame, scene_settings};
 
 const SIZE: [u32; 2] = [96, 64];
 
@@ -105,12 +105,8 @@ fn every_method_renders_on_gl_as_on_vulkan() {
     let scene = Builtin::Stairs.build();
     for method in Method::ALL {
         let settings = scene_settings(&scene, method, Preset::High);
-        let [a, b] = [&gl, &vulkan].map(|gpu| {
-            aokit_scene::Renderer::new(gpu, &scene, &settings)
-                .unwrap()
-                .render(gpu, &scene.cameras[0], SIZE, 0)
-                .unwrap()
-        });
+        let [a, b] =
+            [&gl, &vulkan].map(|gpu| render_frame(gpu, &scene, &scene.cameras[0], &settings, SIZE));
         let mean = mean_abs_difference(&a.ao, &b.ao);
         eprintln!("{}: mean |GL - Vulkan| {mean:.2e}", method.name());
         assert!(mean < 1e-3, "{}: {mean}", method.name());
@@ -126,12 +122,8 @@ fn back_faces_render_and_read_back_on_gl() {
     let scene = Builtin::Stairs.build();
     let mut settings = scene_settings(&scene, Method::Vbao, Preset::High);
     settings.vbao.back_faces = true;
-    let [a, b] = [&gl, &vulkan].map(|gpu| {
-        aokit_scene::Renderer::new(gpu, &scene, &settings)
-            .unwrap()
-            .render(gpu, &scene.cameras[0], SIZE, 0)
-            .unwrap()
-    });
+    let [a, b] =
+        [&gl, &vulkan].map(|gpu| render_frame(gpu, &scene, &scene.cameras[0], &settings, SIZE));
     let mean = mean_abs_difference(&a.ao, &b.ao);
     let (back_a, back_b) = (a.back_depth.unwrap(), b.back_depth.unwrap());
     let scale = back_b.iter().sum::<f32>() / back_b.len() as f32;
