@@ -185,7 +185,7 @@ struct Denoiser {
     temporal: Option<TemporalFilterPass>,
     /// Each view's temporal history, by [`AoInputs::view_id`].
     histories: HashMap<u32, Option<History>>,
-    /// The format of the spatial filters' intermediate texture and the temporal histories.
+    /// The format of the temporal histories, for the pass compiled on first use.
     pair: PairFormat,
 }
 
@@ -396,6 +396,8 @@ pub struct AoPipeline {
     depth_mips: Option<DepthMipsPass>,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
+    /// How this device stores the two-channel targets, probed once.
+    pair: PairFormat,
 }
 
 impl AoPipeline {
@@ -449,6 +451,7 @@ impl AoPipeline {
             depth_mips: None,
             targets: None,
             timer: None,
+            pair,
         })
     }
 
@@ -623,7 +626,7 @@ impl AoPipeline {
             back_faces,
         };
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
-            self.targets = Some(Targets::new(device, layout, self.denoiser.pair));
+            self.targets = Some(Targets::new(device, layout, self.pair));
         }
         let targets = self.targets.as_ref().expect("targets were just created");
         let (projection, frame_index) = (&inputs.projection, inputs.frame_index);
@@ -709,7 +712,7 @@ impl AoPipeline {
         let resample = targets.working.as_ref().map(|working| {
             let pass = self
                 .resample
-                .get_or_insert_with(|| ResamplePass::new(device, self.denoiser.pair));
+                .get_or_insert_with(|| ResamplePass::new(device, self.pair));
             pass.prepare(
                 device,
                 queue,

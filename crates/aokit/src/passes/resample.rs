@@ -368,7 +368,7 @@ mod tests {
         let outputs = [
             target(gpu, working, LINEAR_DEPTH_FORMAT),
             target(gpu, working, NORMALS_FORMAT),
-            target(gpu, working, wgpu::TextureFormat::Rg32Float),
+            target(gpu, working, PairFormat::Rg32Float.texture_format()),
         ];
         let views = outputs.each_ref().map(view);
         let uniforms = view_uniforms(gpu, settings.resolution.scale());
