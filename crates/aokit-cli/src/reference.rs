@@ -4,14 +4,14 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Result, anyhow};
 use aokit_eval::{write_exr, write_grey_png};
-use aokit_reference::{AoOptions, Falloff, ReferenceImage};
+use aokit_reference::{AoOptions, Falloff, ReferenceImage, Tracer};
 use aokit_scene::{Camera, Scene};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
 
 use crate::camera_args::CameraArgs;
-use crate::export::{create_dir, write_gbuffer, write_json};
+use crate::export::{create_dir, write_back_depth, write_gbuffer, write_json};
 use crate::render::parse_size;
 
 #[derive(Args, Debug)]
@@ -81,10 +81,23 @@ pub fn trace(
     size: [u32; 2],
     options: &AoOptions,
 ) -> Result<ReferenceImage> {
+    trace_on(&scene_tracer(scene)?, scene, camera, size, options)
+}
+
+fn scene_tracer(scene: &Scene) -> Result<Tracer> {
+    aokit_scene::reference::tracer(scene).map_err(|e| anyhow!("{}: {e}", scene.name))
+}
+
+/// [`trace`] with the scene's tracer built.
+fn trace_on(
+    tracer: &Tracer,
+    scene: &Scene,
+    camera: &Camera,
+    size: [u32; 2],
+    options: &AoOptions,
+) -> Result<ReferenceImage> {
     options.validate()?;
     camera.validate().map_err(|e| anyhow!(e))?;
-    let tracer =
-        aokit_scene::reference::tracer(scene).map_err(|e| anyhow!("{}: {e}", scene.name))?;
     let pixel_camera = aokit_scene::reference::pixel_camera(scene, camera, size);
     let bar = ProgressBar::new(u64::from(size[1])).with_style(
         ProgressStyle::with_template("tracing {msg} [{bar:30}] {pos}/{len} rows, {eta} left")
@@ -109,8 +122,13 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         falloff: args.falloff,
     };
     let started = std::time::Instant::now();
-    let image = trace(&scene, &camera, args.size, &options)?;
+    let tracer = scene_tracer(&scene)?;
+    let image = trace_on(&tracer, &scene, &camera, args.size, &options)?;
     let elapsed = started.elapsed();
+    // For `vbao.back_faces` when the directory is scored with `aokit compare --inputs`, as
+    // `aokit render` writes it from the rasteriser.
+    let pixel_camera = aokit_scene::reference::pixel_camera(&scene, &camera, args.size);
+    let back_depth = tracer.back_depth(&pixel_camera)?;
 
     let out = &args.out;
     create_dir(out)?;
@@ -129,11 +147,12 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         &projection,
         camera.view_from_world(),
     )?;
+    let back = write_back_depth(out, image.size, &back_depth)?;
     write_json(&out.join("reference.json"), &ReferenceInfo::new(&options))?;
     let rays = f64::from(image.size[0]) * f64::from(image.size[1]) * f64::from(options.spp);
     println!(
         "traced `{}` from camera `{}` at {}x{}, {} rays per pixel, radius {}, falloff {} in {:.1} s \
-         ({:.2} M rays/s): wrote reference.exr, reference.png, {}, reference.json to {}",
+         ({:.2} M rays/s): wrote reference.exr, reference.png, {}, {back}, reference.json to {}",
         scene.name,
         camera.name,
         image.size[0],

@@ -59,6 +59,7 @@ fn reference_writes_the_ground_truth_and_the_gbuffer_deterministically() {
         "depth.exr",
         "normal.exr",
         "camera.json",
+        "back_depth.exr",
         "reference.json",
     ] {
         assert!(d.join("a").join(file).is_file(), "{file} missing");
@@ -474,6 +475,35 @@ fn compare_on_exported_passes_scores_like_compare_on_the_scene() {
             "{method}: --inputs MAE {a}, scene MAE {b}"
         );
     }
+
+    // The traced back faces stand in for the rasterised ones: VBAO measuring its occluders
+    // from them scores the same, and differently from its constant thickness.
+    let back_faces = ["--methods", "vbao", "--set", "vbao.back_faces=true"];
+    let with = |source: &[&str], out: &str| {
+        let mut args = vec!["compare", "--presets", "medium", "--out", out];
+        args.extend(source);
+        args.extend(back_faces);
+        ok(d, &args);
+        maes(&format!("{out}/metrics.json"))[0].1
+    };
+    let inputs = with(&["--inputs", "ref"], "in-back");
+    let scene = with(
+        &["--scene", "stairs", "--size", "64x40", "--spp", "64"],
+        "sc-back",
+    );
+    assert!(
+        (inputs - scene).abs() < 0.005,
+        "vbao.back_faces: --inputs MAE {inputs}, scene MAE {scene}"
+    );
+    let constant = maes("in/metrics.json")
+        .into_iter()
+        .find(|(method, _)| method == "vbao")
+        .unwrap()
+        .1;
+    assert!(
+        (inputs - constant).abs() > 1e-4,
+        "back faces changed nothing: {inputs} against {constant}"
+    );
 }
 
 #[test]

@@ -129,4 +129,45 @@ impl Tracer {
             normals: pixels.iter().map(|p| p.normal).collect(),
         })
     }
+
+    /// Linear view depth of the closest back face through each of `camera`'s pixels
+    /// ([`Tracer::closest_back_face`]), 0 where there is none: what a rasteriser culling front
+    /// faces draws, the input `vbao.back_faces` reads. Row by row from the top-left pixel.
+    ///
+    /// ```
+    /// use aokit_reference::{Lens, PixelCamera, Tracer};
+    /// use glam::{Mat4, Vec3};
+    /// // A square 5 units in front of the eye, facing it: no back face behind it.
+    /// let square = [Vec3::new(-1.0, -1.0, -5.0), Vec3::new(1.0, -1.0, -5.0),
+    ///               Vec3::new(1.0, 1.0, -5.0), Vec3::new(-1.0, 1.0, -5.0)];
+    /// let camera = PixelCamera {
+    ///     size: [3, 3],
+    ///     lens: Lens::Perspective { fov_y: 0.5 },
+    ///     view_from_world: Mat4::IDENTITY,
+    ///     near: 0.1,
+    ///     far: None,
+    /// };
+    /// let facing = Tracer::new(&square, &[0, 1, 2, 0, 2, 3])?;
+    /// assert!(facing.back_depth(&camera)?.iter().all(|&d| d == 0.0));
+    /// // Wound the other way it shows its back, at the depth of its plane.
+    /// let away = Tracer::new(&square, &[0, 2, 1, 0, 3, 2])?;
+    /// assert!(away.back_depth(&camera)?.iter().all(|&d| (d - 5.0).abs() < 1e-5));
+    /// # Ok::<(), aokit_reference::ReferenceError>(())
+    /// ```
+    pub fn back_depth(&self, camera: &PixelCamera) -> Result<Vec<f32>, ReferenceError> {
+        let [width, height] = camera.size;
+        if width == 0 || height == 0 {
+            return Err(ReferenceError::Size(width, height));
+        }
+        Ok((0..height)
+            .into_par_iter()
+            .flat_map_iter(|y| {
+                (0..width).map(move |x| {
+                    let ray = camera.ray(x, y);
+                    self.closest_back_face(ray.origin, ray.direction, ray.t_min, ray.t_max)
+                        .map_or(0.0, |t| t * ray.depth_per_t)
+                })
+            })
+            .collect())
+    }
 }

@@ -182,6 +182,52 @@ impl Tracer {
         })
     }
 
+    /// Distance to the closest back face along `origin + t * direction` with `t` in
+    /// `[t_min, t_max]`: the closest triangle whose front side (counter-clockwise winding, as
+    /// a rasteriser sees it by default) faces away from the ray, the surface a rasteriser
+    /// culling front faces keeps. `direction` must be a unit vector.
+    ///
+    /// ```
+    /// use aokit_reference::Tracer;
+    /// use glam::Vec3;
+    /// // A slab one unit thick: its top faces +y, its bottom -y.
+    /// let quad = |y: f32, up: bool| {
+    ///     let q = [Vec3::new(-5.0, y, -5.0), Vec3::new(5.0, y, -5.0),
+    ///              Vec3::new(5.0, y, 5.0), Vec3::new(-5.0, y, 5.0)];
+    ///     if up { [q[0], q[2], q[1]] } else { [q[0], q[1], q[2]] }
+    /// };
+    /// let tracer = Tracer::new(&[quad(1.0, true), quad(0.0, false)].concat(),
+    ///                          &[0, 1, 2, 3, 4, 5])?;
+    /// let down = Vec3::NEG_Y;
+    /// let origin = Vec3::new(1.0, 3.0, -1.0);
+    /// assert_eq!(tracer.closest_hit(origin, down, 0.0, f32::INFINITY).unwrap().t, 2.0);
+    /// assert_eq!(tracer.closest_back_face(origin, down, 0.0, f32::INFINITY), Some(3.0));
+    /// # Ok::<(), aokit_reference::ReferenceError>(())
+    /// ```
+    pub fn closest_back_face(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        t_min: f32,
+        t_max: f32,
+    ) -> Option<f32> {
+        let ray = Ray::new(origin.into(), direction.into(), t_min, t_max);
+        let shear = Shear::new(origin, direction);
+        let toward = Vec3A::from(direction);
+        let mut hit = RayHit::none();
+        self.bvh
+            .ray_traverse(ray, &mut hit, |ray, i| {
+                let triangle = &self.triangles[i];
+                let normal = (triangle.v1 - triangle.v0).cross(triangle.v2 - triangle.v0);
+                if normal.dot(toward) > 0.0 {
+                    shear.intersect(triangle, ray)
+                } else {
+                    f32::INFINITY
+                }
+            })
+            .then_some(hit.t)
+    }
+
     /// Distance to the first surface within `t_max` along the unit `direction`, or `None`.
     ///
     /// ```

@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use aokit::{AoSettings, GpuContext};
+use aokit::{AoSettings, GpuContext, Method, Preset};
 use aokit_reference::{AoOptions, PixelCamera, Tracer};
 use aokit_scene::{Builtin, Camera, Lens, Renderer, Scene, reference};
 
@@ -29,6 +29,14 @@ fn depth_through(tracer: &Tracer, camera: &PixelCamera, px: f64, py: f64) -> f32
         .map_or(0.0, |hit| hit.t * ray.depth_per_t)
 }
 
+/// Linear depth of the first back face through image point `(px, py)`, 0 for none.
+fn back_depth_through(tracer: &Tracer, camera: &PixelCamera, px: f64, py: f64) -> f32 {
+    let ray = camera.ray_through(px, py);
+    tracer
+        .closest_back_face(ray.origin, ray.direction, ray.t_min, ray.t_max)
+        .map_or(0.0, |t| t * ray.depth_per_t)
+}
+
 /// Checks the depths of `scene` at `time` of a sequence, seen by `camera`.
 fn check_at(gpu: &GpuContext, scene: &Scene, camera: &Camera, time: f32) {
     let view = format!("{} / {} at time {time}", scene.name, camera.name);
@@ -42,13 +50,22 @@ fn check_at(gpu: &GpuContext, scene: &Scene, camera: &Camera, time: f32) {
         ..Default::default()
     };
     let traced = tracer.render(&pixel_camera, &options, &|_| {}).unwrap();
+    let covered = compare_depths(&view, &frame.linear_depth, &traced.linear_depth, |x, y| {
+        depth_through(&tracer, &pixel_camera, x, y)
+    });
+    assert!(covered > 1000, "{view}: only {covered} pixels drawn");
+}
+
+/// Checks the raster's depth image against the traced one, pixel by pixel; `through(px, py)`
+/// traces the depth through any point of the image. Returns how many pixels the raster drew.
+fn compare_depths(
+    view: &str,
+    raster: &[f32],
+    traced: &[f32],
+    through: impl Fn(f64, f64) -> f32,
+) -> usize {
     let (mut covered, mut subpixel) = (0, 0);
-    for (i, (&raster, &ray)) in frame
-        .linear_depth
-        .iter()
-        .zip(&traced.linear_depth)
-        .enumerate()
-    {
+    for (i, (&raster, &ray)) in raster.iter().zip(traced).enumerate() {
         covered += usize::from(raster > 0.0);
         if close(raster, ray) {
             continue;
@@ -61,7 +78,7 @@ fn check_at(gpu: &GpuContext, scene: &Scene, camera: &Camera, time: f32) {
             .map(|k| {
                 let angle = f64::from(k) * std::f64::consts::FRAC_PI_4;
                 let (dy, dx) = angle.sin_cos();
-                depth_through(&tracer, &pixel_camera, x + dx * SUBPIXEL, y + dy * SUBPIXEL)
+                through(x + dx * SUBPIXEL, y + dy * SUBPIXEL)
             })
             .collect();
         let hits = around.iter().copied().filter(|&d| d > 0.0);
@@ -83,11 +100,11 @@ fn check_at(gpu: &GpuContext, scene: &Scene, camera: &Camera, time: f32) {
         subpixel += 1;
     }
     eprintln!("{view}: {covered} pixels drawn, {subpixel} differ within sub-pixel snapping");
-    assert!(covered > 1000, "{view}: only {covered} pixels drawn");
     assert!(
         subpixel * 1000 <= covered,
         "{view}: {subpixel} pixels differ"
     );
+    covered
 }
 
 fn check(gpu: &GpuContext, scene: &Scene, camera: &Camera) {
@@ -162,4 +179,38 @@ fn raster_and_tracer_agree_on_depth_in_sponza() {
     for camera in &scene.cameras {
         check(&gpu, &scene, camera);
     }
+    let covered = check_back_faces(&gpu, &scene);
+    assert!(covered > 20_000, "only {covered} back-face pixels drawn");
+}
+
+/// Checks the back faces' depth of `scene` through each of its cameras; returns how many
+/// pixels the raster drew.
+fn check_back_faces(gpu: &GpuContext, scene: &Scene) -> usize {
+    // The renderer draws the back faces for VBAO measuring its occluders from them.
+    let mut settings = AoSettings::preset(Method::Vbao, Preset::High);
+    settings.vbao.back_faces = true;
+    let tracer = reference::tracer(scene).unwrap();
+    let mut covered = 0;
+    for camera in &scene.cameras {
+        let view = format!("{} / {} back faces", scene.name, camera.name);
+        let mut renderer = Renderer::new(gpu, scene, &settings).unwrap();
+        let frame = renderer.render(gpu, camera, SIZE, 0).unwrap();
+        let pixel_camera = reference::pixel_camera(scene, camera, SIZE);
+        let traced = tracer.back_depth(&pixel_camera).unwrap();
+        covered += compare_depths(&view, &frame.back_depth.unwrap(), &traced, |x, y| {
+            back_depth_through(&tracer, &pixel_camera, x, y)
+        });
+    }
+    covered
+}
+
+#[test]
+fn raster_and_tracer_agree_on_back_face_depth_in_every_builtin_view() {
+    let gpu = GpuContext::headless().unwrap();
+    let covered: usize = Builtin::ALL
+        .iter()
+        .map(|builtin| check_back_faces(&gpu, &builtin.build()))
+        .sum();
+    // Most views see the insides of closed solids' far walls behind their front ones.
+    assert!(covered > 20_000, "only {covered} back-face pixels drawn");
 }
