@@ -89,6 +89,30 @@ impl Mesh {
         self.indices.len() / 3
     }
 
+    /// Number of triangles with a nonzero area: the ones a rasteriser draws and a ray can hit.
+    ///
+    /// ```
+    /// use aokit_scene::mesh::Mesh;
+    /// use glam::Vec3;
+    /// let mesh = Mesh {
+    ///     positions: vec![Vec3::ZERO, Vec3::X, Vec3::Y, 2.0 * Vec3::X],
+    ///     normals: vec![Vec3::Z; 4],
+    ///     albedo: vec![Vec3::ONE; 4],
+    ///     // The second triangle's corners lie on one line.
+    ///     indices: vec![0, 1, 2, 0, 1, 3],
+    /// };
+    /// assert_eq!((mesh.triangle_count(), mesh.area_triangle_count()), (2, 1));
+    /// ```
+    pub fn area_triangle_count(&self) -> usize {
+        self.indices
+            .chunks_exact(3)
+            .filter(|t| {
+                let [a, b, c] = [t[0], t[1], t[2]].map(|i| self.positions[i as usize]);
+                (b - a).cross(c - a) != Vec3::ZERO
+            })
+            .count()
+    }
+
     /// Bounds of all vertices, `None` for an empty mesh.
     ///
     /// ```

@@ -68,8 +68,8 @@ pub enum SceneError {
         /// What went wrong.
         reason: String,
     },
-    /// The file holds no triangles.
-    #[error("`{}` contains no triangles", .0.display())]
+    /// The file holds no triangles, or none with any area.
+    #[error("`{}` contains no triangles with a nonzero area", .0.display())]
     Empty(PathBuf),
     /// `--camera` named no camera of the scene.
     #[error("scene `{scene}` has no camera `{wanted}` (cameras: {available})")]
@@ -174,7 +174,8 @@ impl Scene {
             Some("obj") => load::obj::load(path)?,
             _ => return Err(SceneError::Extension(path.to_path_buf())),
         };
-        if scene.mesh.triangle_count() == 0 {
+        // Triangles without area draw nothing, and all of one point leave no view to frame.
+        if scene.mesh.area_triangle_count() == 0 {
             return Err(SceneError::Empty(path.to_path_buf()));
         }
         Ok(scene)

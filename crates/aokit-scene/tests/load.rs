@@ -156,6 +156,7 @@ fn malformed_files_are_refused_with_their_name() {
     let cases = [
         ("bad.obj", "v 0 0 0\nf 1 2 3\n"),
         ("empty.obj", "# nothing\n"),
+        ("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n"),
         ("bad.gltf", "{\"asset\": "),
         ("bad.glb", "glTF but not really"),
         ("notes.txt", "hello"),
