@@ -608,6 +608,24 @@ fn depth_to_float(
     copy
 }
 
+/// Maps `slice` of a `MAP_READ` buffer, blocking until the GPU has finished with it.
+pub(crate) fn map_for_reading(
+    device: &wgpu::Device,
+    slice: &wgpu::BufferSlice<'_>,
+) -> Result<(), GpuError> {
+    let (sender, receiver) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |result| {
+        let _ = sender.send(result);
+    });
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    receiver
+        .recv()
+        .map_err(|e| GpuError::Readback(e.to_string()))?
+        .map_err(|e| GpuError::Readback(e.to_string()))
+}
+
 /// Copies mip level 0 of a 2D texture to the CPU, tightly packed, row by row.
 ///
 /// Blocks until the GPU has finished. Depth textures return their depth aspect (on a device that
@@ -691,17 +709,7 @@ pub fn read_texture(
     }
     queue.submit([commands]);
     let slice = buffer.slice(..);
-    let (sender, receiver) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |result| {
-        let _ = sender.send(result);
-    });
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| GpuError::Readback(e.to_string()))?;
-    receiver
-        .recv()
-        .map_err(|e| GpuError::Readback(e.to_string()))?
-        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    map_for_reading(device, &slice)?;
     let mapped = slice
         .get_mapped_range()
         .map_err(|e| GpuError::Readback(e.to_string()))?;

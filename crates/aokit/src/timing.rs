@@ -1,6 +1,6 @@
 //! GPU timestamps around each pass, where the device has `TIMESTAMP_QUERY`.
 
-use crate::gpu::GpuError;
+use crate::gpu::{GpuError, map_for_reading};
 
 /// Most passes one frame can time; aokit's longest chain (`msvo`: its nine passes, the depth
 /// MIP chain's four and the filters) stays well below this.
@@ -119,17 +119,7 @@ impl PassTimer {
             return Ok(Vec::new());
         }
         let slice = self.readback.slice(..count * 8);
-        let (sender, receiver) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |result| {
-            let _ = sender.send(result);
-        });
-        device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
-        receiver
-            .recv()
-            .map_err(|e| GpuError::Readback(e.to_string()))?
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        map_for_reading(device, &slice)?;
         let ticks: Vec<u64> = {
             let mapped = slice
                 .get_mapped_range()
