@@ -444,3 +444,49 @@ fn every_kind_of_depth_is_read_below_full_resolution_without_a_linear_depth_pass
         }
     }
 }
+
+#[test]
+fn a_one_pixel_image_runs_below_full_resolution_as_at_full() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let frame = frames(&gpu, &scene, CameraPath::Orbit, 1, [1, 1]).remove(0);
+    assert!(frame.linear_depth[0] > 0.0, "the pixel shows the room");
+    let inputs = Inputs::new(&gpu, frame, None);
+    let outputs = |settings: AoSettings| {
+        let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
+        let frame = AoInputs {
+            normals: Some(&inputs.normals),
+            ..AoInputs::new(&inputs.depth, inputs.frame.projection)
+        };
+        encode_frame(&gpu, &mut pipeline, &frame, |outputs| {
+            let read = |texture| read_texture_f32(&gpu.device, &gpu.queue, texture).unwrap();
+            (
+                read(outputs.ao),
+                read(outputs.linear_depth),
+                outputs.working_size,
+            )
+        })
+    };
+    let filtered = |settings: AoSettings| AoSettings {
+        spatial: aokit::SpatialSettings {
+            enabled: true,
+            ..settings.spatial
+        },
+        temporal: aokit::TemporalSettings {
+            enabled: true,
+            ..settings.temporal
+        },
+        ..settings
+    };
+    let full = outputs(filtered(AoSettings::default()));
+    // No coarser grid than one texel: every resolution is the image itself, where the frame
+    // once skipped its linear depth (AO 1 and depth 0) or panicked with the filters after the
+    // upsample.
+    for settings in every_combination() {
+        let name = format!("{:?} {:?}", settings.resolution, settings.filter_resolution);
+        let (ao, depth, working) = outputs(filtered(settings));
+        assert_eq!(working, [1, 1], "{name}");
+        assert_eq!(depth, full.1, "{name}: linear depth");
+        assert_eq!(ao, full.0, "{name}: AO");
+    }
+}

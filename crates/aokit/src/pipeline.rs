@@ -603,8 +603,13 @@ impl AoPipeline {
         if back_faces && inputs.back_depth.is_none() {
             return Err(AoError::MissingBackDepth);
         }
-        let scale = settings.resolution.scale();
         let working = settings.resolution.working_size(size);
+        // A 1x1 image is its own working image at any resolution: it runs as at full.
+        let scale = if working == size {
+            1
+        } else {
+            settings.resolution.scale()
+        };
         // Below full resolution the filters run before the upsample, at working resolution,
         // unless the settings move them after it.
         let filter_full = scale > 1 && settings.filter_resolution == FilterResolution::Full;
