@@ -187,8 +187,7 @@ fn raster_and_tracer_agree_on_depth_in_sponza() {
 /// pixels the raster drew.
 fn check_back_faces(gpu: &GpuContext, scene: &Scene) -> usize {
     // The renderer draws the back faces for VBAO measuring its occluders from them.
-    let mut settings = AoSettings::preset(Method::Vbao, Preset::High);
-    settings.vbao.back_faces = true;
+    let settings = AoSettings::preset_with_back_faces(Method::Vbao, Preset::High);
     let tracer = reference::tracer(scene).unwrap();
     let mut covered = 0;
     for camera in &scene.cameras {
