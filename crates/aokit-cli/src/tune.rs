@@ -58,6 +58,12 @@ pub struct TuneArgs {
     /// ends (docs/tuning.md).
     #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=10))]
     pub rounds: u32,
+    /// Tune `vbao` for the lowest mean error alone. By default its search is held to GTAO's
+    /// error at the same preset on every view (GTAO's in this run when it is tuned too, its
+    /// preset's otherwise): VBAO is GTAO's height field given a thickness, and a thickness
+    /// that loses a view to GTAO is a trade the user did not ask for (docs/tuning.md).
+    #[arg(long)]
+    pub unbounded: bool,
     /// Where references are cached (default: $AOKIT_CACHE, $XDG_CACHE_HOME/aokit or ~/.cache/aokit).
     #[arg(long, value_name = "DIR")]
     pub cache: Option<PathBuf>,
@@ -82,6 +88,38 @@ const STEP_POWERS: &[f32] = &[1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0];
 
 /// Final powers of the sweep that measures what the power alone does to the error.
 const POWER_SWEEP: [f32; 9] = [0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.4, 1.6];
+
+/// How well a candidate does: its mean squared error over the views, and by how much it exceeds
+/// a bound on each view's RMSE (the sum over the views of the excess; 0 without a bound).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Fit {
+    mse: f64,
+    excess: f64,
+}
+
+impl Fit {
+    /// `rmse` (one per view) held to `bound` (the same views' largest allowed RMSE), if any.
+    fn of(rmse: &[f64], bound: Option<&[f64]>) -> Self {
+        let mse = rmse.iter().map(|r| r * r).sum::<f64>() / rmse.len() as f64;
+        let excess = bound.map_or(0.0, |bound| {
+            rmse.iter().zip(bound).map(|(r, b)| (r - b).max(0.0)).sum()
+        });
+        Self { mse, excess }
+    }
+
+    /// Whether the search should move from `self` to `other`: a candidate within the bound
+    /// beats one outside it; outside, the smaller excess wins; inside, the lower error. A move
+    /// must gain at least 0.01%, so ties keep the current value.
+    fn improved_by(&self, other: &Fit) -> bool {
+        const GAIN: f64 = 1.0 - 1e-4;
+        match (self.excess > 0.0, other.excess > 0.0) {
+            (true, false) => true,
+            (false, true) => false,
+            (true, true) => other.excess < self.excess * GAIN,
+            (false, false) => other.mse < self.mse * GAIN,
+        }
+    }
+}
 
 /// One point of the search.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -236,7 +274,12 @@ fn dimensions(method: Method, back_faces: bool, at: &Candidate, samples: u32) ->
         // Measured from the back faces, solids are as thick as they are, and the knob is the
         // least thickness, for poles and fences whose back faces lie closer or were not seen.
         Method::Vbao if back_faces => &[0.05, 0.1, 0.15, 0.2, 0.3, 0.45, 0.6],
-        Method::Vbao => &[0.2, 0.3, 0.45, 0.6, 0.8, 1.0, 1.3],
+        // Finer between 0.4 and 0.7, where the views trade: boxes and steps want it thick, the
+        // pillars and fences of `thin` thin, and the bound on each view (TuneArgs::unbounded)
+        // leaves a narrow band.
+        Method::Vbao => &[
+            0.2, 0.3, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.8, 1.0, 1.3,
+        ],
         // Unity's slider runs from 1 to 10; below 1 rejects occluders of a plain crease.
         Method::Msvo => &[0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0],
     };
@@ -363,6 +406,12 @@ struct Tuned {
     tuned_rmse: f64,
     /// Each view's RMSE with the tuned candidate.
     views_rmse: Vec<f64>,
+    /// Each view's largest RMSE the search allowed, when it was held to one (`vbao`, by
+    /// GTAO's), and by how much the start and the tuned candidate exceed it, summed over the
+    /// views (0 when within it everywhere).
+    bound: Option<Vec<f64>>,
+    start_excess: f64,
+    tuned_excess: f64,
 }
 
 /// What tune.json holds.
@@ -387,13 +436,16 @@ struct PowerSweep {
 
 /// Coordinate descent from the preset's own values (those of
 /// `AoSettings::preset_with_back_faces` when `back_faces`); `split`, when given, replaces the
-/// preset's split of the samples and is kept (hbao-plus takes hbao's).
+/// preset's split of the samples and is kept (hbao-plus takes hbao's). With a `bound` (each
+/// view's largest allowed RMSE) the search first brings every view within it, then lowers the
+/// mean error without leaving it (see [`Fit::improved_by`]).
 fn tune_one(
     evaluator: &mut Evaluator<'_>,
     (method, back_faces): (Method, bool),
     preset: Preset,
     rounds: u32,
     split: Option<[u32; 2]>,
+    bound: Option<&[f64]>,
 ) -> Result<Tuned> {
     let base = if back_faces {
         AoSettings::preset_with_back_faces(method, preset)
@@ -405,27 +457,33 @@ fn tune_one(
     if let Some(split) = split {
         start.split = split;
     }
-    let (start_mse, _) = evaluator.score(&base, preset, &start)?;
-    let mut best = (start, start_mse);
+    let (_, start_rmse) = evaluator.score(&base, preset, &start)?;
+    let start_fit = Fit::of(&start_rmse, bound);
+    let mut best = (start, start_fit);
     for _ in 0..rounds {
-        let before = best.1;
+        let before = best.0;
         for dimension in dimensions(method, back_faces, &best.0, samples) {
             for candidate in &dimension.values {
-                let (mse, _) = evaluator.score(&base, preset, candidate)?;
-                // Ties keep the current value, so the search only moves for a real gain.
-                if mse < best.1 * (1.0 - 1e-4) {
-                    best = (*candidate, mse);
+                let (_, rmse) = evaluator.score(&base, preset, candidate)?;
+                let fit = Fit::of(&rmse, bound);
+                if best.1.improved_by(&fit) {
+                    best = (*candidate, fit);
                 }
             }
             eprintln!(
-                "tune: {} {} after {}: RMSE {:.4}",
+                "tune: {} {} after {}: RMSE {:.4}{}",
                 subject(method, back_faces),
                 preset.name(),
                 dimension.name,
-                best.1.sqrt()
+                best.1.mse.sqrt(),
+                if best.1.excess > 0.0 {
+                    format!(", {:.4} over the bound", best.1.excess)
+                } else {
+                    String::new()
+                }
             );
         }
-        if best.1 >= before {
+        if best.0 == before {
             break;
         }
     }
@@ -437,11 +495,31 @@ fn tune_one(
         samples_per_pixel: samples,
         knob: knob_name(method),
         start,
-        start_rmse: start_mse.sqrt(),
+        start_rmse: start_fit.mse.sqrt(),
         tuned: best.0,
-        tuned_rmse: best.1.sqrt(),
+        tuned_rmse: best.1.mse.sqrt(),
         views_rmse,
+        bound: bound.map(<[f64]>::to_vec),
+        start_excess: start_fit.excess,
+        tuned_excess: best.1.excess,
     })
+}
+
+/// What this run tuned for `method` at `preset` (the variant without back faces).
+fn tuned_at(tuned: &[Tuned], method: Method, preset: Preset) -> Option<&Tuned> {
+    tuned
+        .iter()
+        .find(|t| t.method == method.name() && t.preset == preset.name() && !t.back_faces)
+}
+
+/// GTAO's RMSE on each view at `preset`: as this run tuned it, or its preset's when GTAO is not
+/// tuned here.
+fn gtao_rmse(evaluator: &mut Evaluator<'_>, tuned: &[Tuned], preset: Preset) -> Result<Vec<f64>> {
+    if let Some(t) = tuned_at(tuned, Method::Gtao, preset) {
+        return Ok(t.views_rmse.clone());
+    }
+    let gtao = AoSettings::preset(Method::Gtao, preset);
+    Ok(evaluator.score(&gtao, preset, &Candidate::of(&gtao))?.1)
 }
 
 /// How the progress lines and evaluations.csv name what is tuned.
@@ -506,13 +584,20 @@ fn markdown(
         args.rounds
     ));
     md.push_str(
-        "| method | preset | samples | split | step_power | falloff | knob | power | radius_multiplier | RMSE before | after |\n\
-         |---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n",
+        "| method | preset | samples | split | step_power | falloff | knob | power | radius_multiplier | RMSE before | after | over GTAO's |\n\
+         |---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n",
     );
     for t in tuned {
         let c = &t.tuned;
+        // Where the search was held to GTAO's error on every view, by how much it ended
+        // above it (summed over the views).
+        let over = match &t.bound {
+            None => String::new(),
+            Some(_) if t.tuned_excess == 0.0 => "0".to_string(),
+            Some(_) => format!("{:.4}", t.tuned_excess),
+        };
         md.push_str(&format!(
-            "| `{}`{} | {} | {} | {}x{} | {} | {} | `{}` = {} | {} | {} | {:.4} | {:.4} |\n",
+            "| `{}`{} | {} | {} | {}x{} | {} | {} | `{}` = {} | {} | {} | {:.4} | {:.4} | {} |\n",
             t.method,
             if t.back_faces { " + back faces" } else { "" },
             t.preset,
@@ -526,7 +611,8 @@ fn markdown(
             c.power,
             c.radius_multiplier,
             t.start_rmse,
-            t.tuned_rmse
+            t.tuned_rmse,
+            over
         ));
     }
     if !sweep.is_empty() {
@@ -575,35 +661,31 @@ pub fn run(args: &TuneArgs) -> Result<()> {
             mse.push(evaluator.score(&high, Preset::High, &candidate)?.0);
         }
         sweep.push((method, mse));
-        for &preset in &args.presets {
-            let split = (method == Method::HbaoPlus)
-                .then(|| {
-                    tuned
-                        .iter()
-                        .find(|t: &&Tuned| {
-                            t.method == Method::Hbao.name() && t.preset == preset.name()
-                        })
-                        .map(|t| t.tuned.split)
-                })
-                .flatten();
-            tuned.push(tune_one(
-                &mut evaluator,
-                (method, false),
-                preset,
-                args.rounds,
-                split,
-            )?);
-        }
-        // vbao again, measuring its occluders from the back faces: presets of their own.
-        if method == Method::Vbao {
+        // vbao is tuned twice: as it is, and measuring its occluders from the back faces.
+        let variants: &[bool] = if method == Method::Vbao {
+            &[false, true]
+        } else {
+            &[false]
+        };
+        for &back_faces in variants {
             for &preset in &args.presets {
-                tuned.push(tune_one(
+                let split = (method == Method::HbaoPlus)
+                    .then(|| tuned_at(&tuned, Method::Hbao, preset).map(|t| t.tuned.split))
+                    .flatten();
+                let bound = if method == Method::Vbao && !args.unbounded {
+                    Some(gtao_rmse(&mut evaluator, &tuned, preset)?)
+                } else {
+                    None
+                };
+                let result = tune_one(
                     &mut evaluator,
-                    (method, true),
+                    (method, back_faces),
                     preset,
                     args.rounds,
-                    None,
-                )?);
+                    split,
+                    bound.as_deref(),
+                )?;
+                tuned.push(result);
             }
         }
     }
@@ -664,4 +746,33 @@ pub fn run(args: &TuneArgs) -> Result<()> {
         out.display()
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Fit;
+
+    #[test]
+    fn a_bounded_search_gets_within_its_bound_first_then_lowers_the_error() {
+        let bound = [0.05, 0.10];
+        let fit = |rmse: [f64; 2]| Fit::of(&rmse, Some(&bound));
+        // Over on the first view by 0.01, under on the second: only the excess counts.
+        let over = fit([0.06, 0.02]);
+        assert!((over.excess - 0.01).abs() < 1e-12);
+        assert!((over.mse - (0.06f64.powi(2) + 0.02f64.powi(2)) / 2.0).abs() < 1e-12);
+        let within = fit([0.05, 0.09]);
+        assert_eq!(within.excess, 0.0);
+        // Within the bound wins over a lower error outside it, and is never given up for one.
+        assert!(over.improved_by(&within));
+        assert!(!within.improved_by(&over));
+        // Outside, the smaller excess wins whatever the error; inside, the lower error.
+        assert!(over.improved_by(&fit([0.055, 0.09])));
+        assert!(!over.improved_by(&fit([0.07, 0.0])));
+        assert!(within.improved_by(&fit([0.04, 0.09])));
+        assert!(!within.improved_by(&fit([0.05, 0.09])));
+        // Without a bound nothing is in excess, and only the error decides.
+        let free = Fit::of(&[0.2, 0.2], None);
+        assert_eq!(free.excess, 0.0);
+        assert!(free.improved_by(&Fit::of(&[0.1, 0.2], None)));
+    }
 }

@@ -51,11 +51,31 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
         (&Value::Bool(false), &Value::Bool(true))
     );
     for r in results {
-        let (start, tuned) = (
-            r["start_rmse"].as_f64().unwrap(),
-            r["tuned_rmse"].as_f64().unwrap(),
-        );
-        assert!(tuned <= start && tuned > 0.0, "{r}");
+        let value = |key: &str| r[key].as_f64().unwrap();
+        let (start, tuned) = (value("start_rmse"), value("tuned_rmse"));
+        let (start_excess, tuned_excess) = (value("start_excess"), value("tuned_excess"));
+        // A search held to a bound never ends further outside it, and from within it never
+        // ends with a higher error.
+        assert!(tuned_excess <= start_excess, "{r}");
+        assert!(tuned > 0.0, "{r}");
+        if start_excess == 0.0 {
+            assert!(tuned <= start, "{r}");
+        }
+    }
+    // vbao, both ways, is held to GTAO's error on each view, as this run tuned it.
+    assert!(results[0]["bound"].is_null());
+    for r in &results[3..] {
+        assert_eq!(r["bound"], results[0]["views_rmse"], "{r}");
+        if r["tuned_excess"].as_f64().unwrap() == 0.0 {
+            let rmse = r["views_rmse"].as_array().unwrap();
+            let bound = r["bound"].as_array().unwrap();
+            assert!(
+                rmse.iter()
+                    .zip(bound)
+                    .all(|(r, b)| r.as_f64().unwrap() <= b.as_f64().unwrap()),
+                "{r}"
+            );
+        }
     }
     // hbao-plus runs on hbao's directions and steps.
     assert_eq!(results[2]["tuned"]["split"], results[1]["tuned"]["split"]);
@@ -65,6 +85,51 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
     let md = std::fs::read_to_string(t.join("tune.md")).unwrap();
     assert!(md.contains("| `gtao` | low |"), "{md}");
     assert!(md.contains("| `vbao` + back faces | low |"), "{md}");
+}
+
+#[test]
+fn unbounded_tunes_vbao_for_its_mean_error_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
+        .args([
+            "tune",
+            "--view",
+            "room",
+            "--size",
+            "48x27",
+            "--spp",
+            "8",
+            "--methods",
+            "vbao",
+            "--presets",
+            "low",
+            "--rounds",
+            "1",
+            "--unbounded",
+            "--out",
+            "t",
+            "--cache",
+            "cache",
+        ])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("t/tune.json")).unwrap())
+            .unwrap();
+    let results = json["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    for r in results {
+        assert!(r["bound"].is_null(), "{r}");
+        assert_eq!(r["tuned_excess"], 0.0, "{r}");
+    }
+    let md = std::fs::read_to_string(dir.path().join("t/tune.md")).unwrap();
+    assert!(md.contains("| over GTAO's |"), "{md}");
 }
 
 #[test]
