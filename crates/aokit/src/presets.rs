@@ -82,9 +82,9 @@ pub(crate) fn preset_values(method: Method, preset: Preset) -> Tuned {
         (Method::Gtao, Preset::Medium) => tuned([2, 2], 1.0, 0.0, 0.0, 1.0, 1.1),
         (Method::Gtao, Preset::High) => tuned([3, 3], 1.25, 0.0, 0.1, 1.1, 1.1),
         (Method::Gtao, Preset::Ultra) => tuned([3, 9], 1.0, 0.1, 0.0, 1.1, 0.8),
-        (Method::Vbao, Preset::Low) => tuned([2, 1], 1.0, 0.0, 0.45, 1.25, 1.2),
-        (Method::Vbao, Preset::Medium) => tuned([2, 2], 1.25, 0.0, 0.45, 1.1, 1.2),
-        (Method::Vbao, Preset::High) => tuned([3, 3], 1.5, 0.0, 0.45, 1.1, 1.1),
+        (Method::Vbao, Preset::Low) => tuned([2, 1], 1.0, 0.0, 0.65, 1.1, 1.35),
+        (Method::Vbao, Preset::Medium) => tuned([2, 2], 1.0, 0.0, 0.5, 1.0, 1.2),
+        (Method::Vbao, Preset::High) => tuned([3, 3], 1.0, 0.0, 0.45, 1.1, 1.1),
         (Method::Vbao, Preset::Ultra) => tuned([3, 9], 1.75, 0.0, 0.2, 1.0, 1.1),
     }
 }
@@ -94,8 +94,8 @@ pub(crate) fn preset_values(method: Method, preset: Preset) -> Tuned {
 /// faces lie closer than that or were not seen.
 pub(crate) fn vbao_back_faces_values(preset: Preset) -> Tuned {
     match preset {
-        Preset::Low => tuned([2, 1], 1.0, 0.0, 0.2, 1.4, 1.2),
-        Preset::Medium => tuned([2, 2], 1.25, 0.0, 0.15, 1.25, 1.2),
+        Preset::Low => tuned([2, 1], 1.0, 0.0, 0.6, 1.1, 1.35),
+        Preset::Medium => tuned([2, 2], 1.0, 0.0, 0.3, 1.1, 1.2),
         Preset::High => tuned([3, 3], 1.5, 0.0, 0.1, 1.25, 1.2),
         Preset::Ultra => tuned([3, 9], 1.75, 0.0, 0.05, 1.0, 1.1),
     }
