@@ -7,20 +7,15 @@ use std::process::Command;
 use aokit::{AoSettings, Method, Preset};
 use serde_json::Value;
 
-#[test]
-fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
+/// Runs `aokit tune` on the built-in room, one round at the `low` preset, with `args` added,
+/// in a fresh directory; returns the directory and its tune.json.
+fn tune_room(args: &[&str]) -> (tempfile::TempDir, Value) {
     let dir = tempfile::tempdir().unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
         .args([
             "tune",
             "--view",
             "room",
-            "--size",
-            "64x36",
-            "--spp",
-            "16",
-            "--methods",
-            "gtao,hbao,hbao-plus,vbao",
             "--presets",
             "low",
             "--rounds",
@@ -30,6 +25,7 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
             "--cache",
             "cache",
         ])
+        .args(args)
         .current_dir(dir.path())
         .output()
         .unwrap();
@@ -38,9 +34,22 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+    let json = std::fs::read_to_string(dir.path().join("t/tune.json")).unwrap();
+    let json = serde_json::from_str(&json).unwrap();
+    (dir, json)
+}
+
+#[test]
+fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
+    let (dir, json) = tune_room(&[
+        "--size",
+        "64x36",
+        "--spp",
+        "16",
+        "--methods",
+        "gtao,hbao,hbao-plus,vbao",
+    ]);
     let t = dir.path().join("t");
-    let json: Value =
-        serde_json::from_str(&std::fs::read_to_string(t.join("tune.json")).unwrap()).unwrap();
     let results = json["results"].as_array().unwrap();
     // vbao is tuned twice: assuming its occluders' thickness, and measuring it from the back
     // faces.
@@ -89,39 +98,15 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
 
 #[test]
 fn unbounded_tunes_vbao_for_its_mean_error_alone() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .args([
-            "tune",
-            "--view",
-            "room",
-            "--size",
-            "48x27",
-            "--spp",
-            "8",
-            "--methods",
-            "vbao",
-            "--presets",
-            "low",
-            "--rounds",
-            "1",
-            "--unbounded",
-            "--out",
-            "t",
-            "--cache",
-            "cache",
-        ])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let json: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.path().join("t/tune.json")).unwrap())
-            .unwrap();
+    let (dir, json) = tune_room(&[
+        "--size",
+        "48x27",
+        "--spp",
+        "8",
+        "--methods",
+        "vbao",
+        "--unbounded",
+    ]);
     let results = json["results"].as_array().unwrap();
     assert_eq!(results.len(), 2);
     for r in results {
