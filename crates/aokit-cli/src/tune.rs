@@ -7,7 +7,8 @@
 //! each method's own bias or thickness) and the split of the samples between directions and
 //! steps. It is a coordinate descent: one parameter at a time over its candidate values, the
 //! others held, best kept, round after round until one gains nothing, starting from the
-//! current preset.
+//! current preset. `vbao` is held to GTAO's error on every view; where that search stalls
+//! outside the bound it also moves two parameters at once.
 
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -319,6 +320,21 @@ fn dimensions(method: Method, back_faces: bool, at: &Candidate, samples: u32) ->
     dims
 }
 
+/// Every candidate that differs from `at` in two of the search's parameters at once.
+fn pair_moves(method: Method, back_faces: bool, at: &Candidate, samples: u32) -> Vec<Candidate> {
+    let dims = dimensions(method, back_faces, at, samples);
+    let mut moves = Vec::new();
+    for (i, first) in dims.iter().enumerate() {
+        for moved in first.values.iter().filter(|c| *c != at) {
+            // The dimensions are the same list around any candidate of the same method.
+            for second in &dimensions(method, back_faces, moved, samples)[i + 1..] {
+                moves.extend(second.values.iter().filter(|c| *c != moved));
+            }
+        }
+    }
+    moves
+}
+
 /// A view ready for scoring: its G-buffer, the reference and the pixels with a surface.
 struct View {
     name: String,
@@ -460,28 +476,40 @@ fn tune_one(
     let (_, start_rmse) = evaluator.score(&base, preset, &start)?;
     let start_fit = Fit::of(&start_rmse, bound);
     let mut best = (start, start_fit);
+    let progress = |step: &str, best: &(Candidate, Fit)| {
+        eprintln!(
+            "tune: {} {} after {step}: RMSE {:.4}{}",
+            subject(method, back_faces),
+            preset.name(),
+            best.1.mse.sqrt(),
+            if best.1.excess > 0.0 {
+                format!(", {:.4} over the bound", best.1.excess)
+            } else {
+                String::new()
+            }
+        );
+    };
     for _ in 0..rounds {
         let before = best.0;
         for dimension in dimensions(method, back_faces, &best.0, samples) {
             for candidate in &dimension.values {
-                let (_, rmse) = evaluator.score(&base, preset, candidate)?;
-                let fit = Fit::of(&rmse, bound);
+                let fit = Fit::of(&evaluator.score(&base, preset, candidate)?.1, bound);
                 if best.1.improved_by(&fit) {
                     best = (*candidate, fit);
                 }
             }
-            eprintln!(
-                "tune: {} {} after {}: RMSE {:.4}{}",
-                subject(method, back_faces),
-                preset.name(),
-                dimension.name,
-                best.1.mse.sqrt(),
-                if best.1.excess > 0.0 {
-                    format!(", {:.4} over the bound", best.1.excess)
-                } else {
-                    String::new()
+            progress(dimension.name, &best);
+        }
+        // One parameter at a time the search can stall outside the bound where points within
+        // it exist (vbao `low`, docs/tuning.md): there it moves two parameters at once.
+        if best.0 == before && best.1.excess > 0.0 {
+            for candidate in pair_moves(method, back_faces, &best.0, samples) {
+                let fit = Fit::of(&evaluator.score(&base, preset, &candidate)?.1, bound);
+                if best.1.improved_by(&fit) {
+                    best = (candidate, fit);
                 }
-            );
+            }
+            progress("pairs of parameters", &best);
         }
         if best.0 == before {
             break;
@@ -750,7 +778,41 @@ pub fn run(args: &TuneArgs) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use super::Fit;
+    use super::{Candidate, Fit, pair_moves};
+    use aokit::{AoSettings, Method, Preset};
+
+    /// Which of a candidate's parameters differ from `at`'s, by name.
+    fn changed(at: &Candidate, c: &Candidate) -> Vec<&'static str> {
+        [
+            ("power", at.power != c.power),
+            ("falloff", at.falloff != c.falloff),
+            ("step_power", at.step_power != c.step_power),
+            (
+                "radius_multiplier",
+                at.radius_multiplier != c.radius_multiplier,
+            ),
+            ("knob", at.knob != c.knob),
+            ("split", at.split != c.split),
+        ]
+        .into_iter()
+        .filter_map(|(name, differs)| differs.then_some(name))
+        .collect()
+    }
+
+    #[test]
+    fn pair_moves_change_exactly_two_parameters_and_every_pair_of_them() {
+        let settings = AoSettings::preset(Method::Gtao, Preset::High);
+        let at = Candidate::of(&settings);
+        let moves = pair_moves(Method::Gtao, false, &at, settings.samples_per_pixel());
+        let mut pairs = std::collections::BTreeSet::new();
+        for c in &moves {
+            let names = changed(&at, c);
+            assert_eq!(names.len(), 2, "{c:?} changes {names:?}");
+            pairs.insert(names);
+        }
+        // gtao searches all six parameters: 15 pairs.
+        assert_eq!(pairs.len(), 15, "{pairs:?}");
+    }
 
     #[test]
     fn a_bounded_search_gets_within_its_bound_first_then_lowers_the_error() {
