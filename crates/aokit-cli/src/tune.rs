@@ -663,7 +663,10 @@ fn markdown(
 }
 
 pub fn run(args: &TuneArgs) -> Result<()> {
-    let methods = methods(&args.methods)?;
+    let mut methods = methods(&args.methods)?;
+    // hbao-plus takes hbao's split and vbao is held to GTAO's error, each as this run tuned
+    // them: those two go after the others, whatever order --methods names them in.
+    methods.sort_by_key(|m| matches!(m, Method::HbaoPlus | Method::Vbao));
     if methods.is_empty() || args.presets.is_empty() {
         bail!("--methods and --presets need at least one entry each");
     }
