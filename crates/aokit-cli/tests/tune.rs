@@ -186,6 +186,12 @@ fn the_presets_are_the_tuning_table() {
             method.name(),
             preset.name()
         );
+        // The shipped vbao presets hold issue 4's target on the views they were tuned on:
+        // within GTAO's error on every one.
+        if method == Method::Vbao {
+            assert!(r["bound"].is_array(), "{what}: not held to GTAO's error");
+            assert_eq!(r["tuned_excess"], 0.0, "{what}: above GTAO's error");
+        }
         assert_eq!(s.power, value("power"), "{what}: power");
         assert_eq!(s.falloff, value("falloff"), "{what}: falloff");
         assert_eq!(s.step_power, value("step_power"), "{what}: step_power");
