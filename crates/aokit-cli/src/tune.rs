@@ -350,21 +350,21 @@ struct Evaluator<'a> {
     gpu: &'a GpuContext,
     views: Vec<View>,
     pipeline: AoPipeline,
-    /// Mean squared error over the views, and each view's RMSE, by method, back faces and
-    /// candidate.
-    scores: HashMap<(Method, bool, String), (f64, Vec<f64>)>,
+    /// Each view's RMSE, by method, back faces and candidate.
+    scores: HashMap<(Method, bool, String), Vec<f64>>,
     /// Every evaluation in order, for evaluations.csv: the subject (method, and whether it
     /// measures back faces), the preset, the candidate and its mean squared error.
     log: Vec<(Method, bool, Preset, Candidate, f64)>,
 }
 
 impl Evaluator<'_> {
+    /// Each view's RMSE with `candidate`.
     fn score(
         &mut self,
         base: &AoSettings,
         preset: Preset,
         candidate: &Candidate,
-    ) -> Result<(f64, Vec<f64>)> {
+    ) -> Result<Vec<f64>> {
         let back_faces = base.method == Method::Vbao && base.vbao.back_faces;
         let key = (base.method, back_faces, candidate.key());
         if let Some(scored) = self.scores.get(&key) {
@@ -398,11 +398,11 @@ impl Evaluator<'_> {
             let metrics = score(view.reference.size, &ao, &view.reference.ao, &view.surface);
             rmse.push(metrics.rmse);
         }
-        let mse = rmse.iter().map(|r| r * r).sum::<f64>() / rmse.len() as f64;
+        let mse = Fit::of(&rmse, None).mse;
         self.log
             .push((base.method, back_faces, preset, *candidate, mse));
-        self.scores.insert(key, (mse, rmse.clone()));
-        Ok((mse, rmse))
+        self.scores.insert(key, rmse.clone());
+        Ok(rmse)
     }
 }
 
@@ -473,8 +473,7 @@ fn tune_one(
     if let Some(split) = split {
         start.split = split;
     }
-    let (_, start_rmse) = evaluator.score(&base, preset, &start)?;
-    let start_fit = Fit::of(&start_rmse, bound);
+    let start_fit = Fit::of(&evaluator.score(&base, preset, &start)?, bound);
     let mut best = (start, start_fit);
     let progress = |step: &str, best: &(Candidate, Fit)| {
         eprintln!(
@@ -493,7 +492,7 @@ fn tune_one(
         let before = best.0;
         for dimension in dimensions(method, back_faces, &best.0, samples) {
             for candidate in &dimension.values {
-                let fit = Fit::of(&evaluator.score(&base, preset, candidate)?.1, bound);
+                let fit = Fit::of(&evaluator.score(&base, preset, candidate)?, bound);
                 if best.1.improved_by(&fit) {
                     best = (*candidate, fit);
                 }
@@ -504,7 +503,7 @@ fn tune_one(
         // it exist (vbao `low`, docs/tuning.md): there it moves two parameters at once.
         if best.0 == before && best.1.excess > 0.0 {
             for candidate in pair_moves(method, back_faces, &best.0, samples) {
-                let fit = Fit::of(&evaluator.score(&base, preset, &candidate)?.1, bound);
+                let fit = Fit::of(&evaluator.score(&base, preset, &candidate)?, bound);
                 if best.1.improved_by(&fit) {
                     best = (candidate, fit);
                 }
@@ -515,7 +514,7 @@ fn tune_one(
             break;
         }
     }
-    let (_, views_rmse) = evaluator.score(&base, preset, &best.0)?;
+    let views_rmse = evaluator.score(&base, preset, &best.0)?;
     Ok(Tuned {
         method: method.name(),
         back_faces,
@@ -547,7 +546,7 @@ fn gtao_rmse(evaluator: &mut Evaluator<'_>, tuned: &[Tuned], preset: Preset) -> 
         return Ok(t.views_rmse.clone());
     }
     let gtao = AoSettings::preset(Method::Gtao, preset);
-    Ok(evaluator.score(&gtao, preset, &Candidate::of(&gtao))?.1)
+    evaluator.score(&gtao, preset, &Candidate::of(&gtao))
 }
 
 /// How the progress lines and evaluations.csv name what is tuned.
@@ -689,7 +688,7 @@ pub fn run(args: &TuneArgs) -> Result<()> {
                 power,
                 ..Candidate::of(&high)
             };
-            mse.push(evaluator.score(&high, Preset::High, &candidate)?.0);
+            mse.push(Fit::of(&evaluator.score(&high, Preset::High, &candidate)?, None).mse);
         }
         sweep.push((method, mse));
         // vbao is tuned twice: as it is, and measuring its occluders from the back faces.
