@@ -33,8 +33,15 @@ const FLAG_HISTORY: u32 = 1u;
 const FLAG_MOTION_VECTORS: u32 = 2u;
 const FLAG_FILTER_CURRENT: u32 = 4u;
 
+// The current AO and its depth come packed in one texture (ao_in's r and g), as the spatial
+// filter's vertical pass writes them, or in two (ao_in's r, linear_depth). Packed, the 3x3
+// neighbourhood takes 10 loads a pixel rather than 19, in a pass that runs at about its
+// texture-fetch floor on an H100 (docs/performance.md).
+override PACKED_INPUT: bool;
+
 @group(0) @binding(1) var<uniform> temporal: TemporalUniforms;
 @group(0) @binding(2) var ao_in: texture_2d<f32>;
+// Unread with PACKED_INPUT.
 @group(0) @binding(3) var linear_depth: texture_2d<f32>;
 // (AO, linear depth) of the previous frame.
 @group(0) @binding(4) var history_in: texture_2d<f32>;
@@ -45,6 +52,14 @@ const FLAG_FILTER_CURRENT: u32 = 4u;
 @group(0) @binding(8) var history_out: pair_storage;
 // 1 where the history was rejected, for debug views.
 @group(0) @binding(9) var rejected_out: texture_storage_2d<r32float, write>;
+
+// The current (AO, linear depth) at `pixel`.
+fn current_at(pixel: vec2<i32>) -> vec2<f32> {
+    if PACKED_INPUT {
+        return textureLoad(ao_in, pixel, 0).rg;
+    }
+    return vec2<f32>(textureLoad(ao_in, pixel, 0).r, textureLoad(linear_depth, pixel, 0).r);
+}
 
 fn same_surface(a: f32, b: f32) -> bool {
     return a > 0.0 && b > 0.0 && abs(a - b) <= temporal.depth_threshold * min(a, b);
@@ -82,26 +97,27 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let pixel = vec2<i32>(id.xy);
-    let depth = textureLoad(linear_depth, pixel, 0).r;
+    let own = current_at(pixel);
+    let depth = own.y;
     if depth == NO_SURFACE {
         store(id.xy, 1.0, NO_SURFACE, false);
         return;
     }
 
     // The spread of the 3x3 neighbours on the same surface, for the clip box. Loaded one texel
-    // at a time: the same neighbourhood from four gathers per texture (10 fetches a pixel where
-    // these are 22) took the pass from 0.21 to 0.15 of a GTAO `high` frame on lavapipe, but
-    // from 0.061 to 0.107 ms at 1920x1080 on an H100, where these loads run at 1.1 to 1.2
-    // times their texel-rate floor (docs/performance.md).
+    // at a time: the same neighbourhood from four gathers per texture (when AO and depth came
+    // in two textures always) took the pass from 0.21 to 0.15 of a GTAO `high` frame on
+    // lavapipe, but from 0.061 to 0.107 ms at 1920x1080 on an H100, where the loads ran at 1.1
+    // to 1.2 times their texel-rate floor (docs/performance.md).
     let last = vec2<i32>(view.size) - 1;
     var sum = 0.0;
     var sum_squares = 0.0;
     var count = 0.0;
     for (var dy = -1; dy <= 1; dy++) {
         for (var dx = -1; dx <= 1; dx++) {
-            let q = clamp(pixel + vec2<i32>(dx, dy), vec2<i32>(0), last);
-            if same_surface(textureLoad(linear_depth, q, 0).r, depth) {
-                let a = textureLoad(ao_in, q, 0).r;
+            let neighbour = current_at(clamp(pixel + vec2<i32>(dx, dy), vec2<i32>(0), last));
+            if same_surface(neighbour.y, depth) {
+                let a = neighbour.x;
                 sum += a;
                 sum_squares += a * a;
                 count += 1.0;
@@ -110,7 +126,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     let mean = sum / count;
     let spread = sqrt(max(sum_squares / count - mean * mean, 0.0));
-    let current = select(textureLoad(ao_in, pixel, 0).r, mean,
+    let current = select(own.x, mean,
                          (temporal.flags & FLAG_FILTER_CURRENT) != 0u);
 
     if (temporal.flags & FLAG_HISTORY) == 0u {

@@ -17,8 +17,8 @@ use crate::passes::msvo::MsvoPass;
 use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
 use crate::passes::resample::{DownsampleTargets, ResampleFrame, ResamplePass};
 use crate::passes::separable_hbao::SeparableHbaoPass;
-use crate::passes::spatial_filter::SpatialFilterPass;
-use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass};
+use crate::passes::spatial_filter::{SpatialFilterPass, SpatialOutput};
+use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass, TemporalInput};
 use crate::settings::{
     AoSettings, FilterResolution, Method, NormalEncoding, NormalSource, NormalSpace, SpatialKind,
 };
@@ -38,6 +38,9 @@ struct Layout {
     bent_normals: bool,
     /// Size of the spatial filter's textures, when it is on.
     spatial: Option<[u32; 2]>,
+    /// Whether the spatial filter hands the temporal filter its AO and depth packed in one
+    /// texture (the bilateral kind with the temporal filter on).
+    spatial_packed: bool,
     /// Whether the downsample writes motion vectors, for a temporal filter at working
     /// resolution.
     working_motion: bool,
@@ -88,7 +91,8 @@ struct WorkingTargets {
 }
 
 /// The spatial filter's AO and depth after the bilateral kind's horizontal pass (or the guided
-/// kind's window lines, in the same format), and its filtered AO.
+/// kind's window lines, in the same format), and its filtered AO: `R32Float`, or with
+/// `Layout::spatial_packed` the AO and depth in the pair format.
 struct SpatialTargets {
     packed_view: wgpu::TextureView,
     ao: Target,
@@ -129,7 +133,15 @@ impl Targets {
                     pair.texture_format(),
                 )
                 .1,
-                ao: make("aokit spatially filtered ao", size, AO_FORMAT),
+                ao: if layout.spatial_packed {
+                    make(
+                        "aokit spatially filtered ao and depth",
+                        size,
+                        pair.texture_format(),
+                    )
+                } else {
+                    make("aokit spatially filtered ao", size, AO_FORMAT)
+                },
             }),
             masked_ao: layout
                 .mask
@@ -168,6 +180,12 @@ fn check_settings(device: &wgpu::Device, settings: &AoSettings) -> Result<(), Ao
     Ok(())
 }
 
+/// Whether the spatial filter, when on, hands the temporal filter AO and depth packed in one
+/// texture: the bilateral kind does, for a temporal filter that is on.
+fn spatial_packed(settings: &AoSettings) -> bool {
+    settings.spatial.kind == SpatialKind::Bilateral && settings.temporal.enabled
+}
+
 /// What the filters read, at the resolution they run at: `ao` may be what they return.
 struct FilterInputs<'t, 'f> {
     ao: &'t Target,
@@ -202,6 +220,7 @@ impl Denoiser {
         spatial: Option<&'t SpatialTargets>,
         input: FilterInputs<'t, '_>,
     ) -> (&'t Target, Option<&'t wgpu::Texture>) {
+        let packed = spatial.is_some() && spatial_packed(settings);
         let ao = match spatial {
             Some(targets) => {
                 match settings.spatial.kind {
@@ -211,7 +230,11 @@ impl Denoiser {
                         input.linear_depth,
                         input.normals,
                         &targets.packed_view,
-                        &targets.ao.1,
+                        if packed {
+                            SpatialOutput::AoAndDepth(&targets.ao.1)
+                        } else {
+                            SpatialOutput::Ao(&targets.ao.1)
+                        },
                     ),
                     SpatialKind::Guided => self.guided.encode(
                         ctx,
@@ -244,8 +267,14 @@ impl Denoiser {
                 motion_vectors: input.motion_vectors,
                 reset: frame.reset_history,
             },
-            &ao.1,
-            input.linear_depth,
+            if packed {
+                TemporalInput::Packed(&ao.1)
+            } else {
+                TemporalInput::Separate {
+                    ao: &ao.1,
+                    linear_depth: input.linear_depth,
+                }
+            },
         );
         let history = history
             .as_ref()
@@ -621,6 +650,7 @@ impl AoPipeline {
                 .spatial
                 .enabled
                 .then_some(if filter_full { size } else { working }),
+            spatial_packed: settings.spatial.enabled && spatial_packed(&settings),
             working_motion: scale > 1
                 && !filter_full
                 && settings.temporal.enabled

@@ -250,16 +250,17 @@ pub const SPATIAL_FILTER_HORIZONTAL: [ShaderSource; 2] = per_pair_format!(
     ]
 );
 
-/// Second pass of the spatial filter: along columns, packed AO and depth in, AO out.
-pub const SPATIAL_FILTER_VERTICAL: ShaderSource = ShaderSource {
-    name: "spatial_filter_vertical",
-    parts: &[
+/// Second pass of the spatial filter: along columns, packed AO and depth in, AO (or AO and
+/// depth packed, for the temporal filter) out; per [`PairFormat`](crate::gpu::PairFormat).
+pub const SPATIAL_FILTER_VERTICAL: [ShaderSource; 2] = per_pair_format!(
+    "spatial_filter_vertical",
+    [
         VIEW,
         ENCODING,
         SPATIAL_FILTER,
-        include_str!("../shaders/spatial_filter_vertical.wgsl"),
-    ],
-};
+        include_str!("../shaders/spatial_filter_vertical.wgsl")
+    ]
+);
 
 /// The guided filter's settings, tile and indexing; each pass file adds its textures and entry
 /// point.
@@ -568,7 +569,8 @@ pub const ALL: &[ShaderSource] = &[
     HBAO_COLUMNS,
     SPATIAL_FILTER_HORIZONTAL[0],
     SPATIAL_FILTER_HORIZONTAL[1],
-    SPATIAL_FILTER_VERTICAL,
+    SPATIAL_FILTER_VERTICAL[0],
+    SPATIAL_FILTER_VERTICAL[1],
     GUIDED_FILTER_COEFFICIENTS[0],
     GUIDED_FILTER_COEFFICIENTS[1],
     GUIDED_FILTER_OUTPUT,

@@ -478,7 +478,7 @@ mod tests {
         });
         for pass in [
             shader::SPATIAL_FILTER_HORIZONTAL[0],
-            shader::SPATIAL_FILTER_VERTICAL,
+            shader::SPATIAL_FILTER_VERTICAL[0],
         ] {
             shader::check_layout(
                 &pass,

@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use super::method::AO_FORMAT;
 use super::{ComputeKernel, PassContext, bind};
-use crate::gpu::{PairFormat, create_uniform_buffer};
+use crate::gpu::{PairFormat, create_uniform_buffer, stand_in_view};
 use crate::settings::{DepthWeight, SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::SpatialUniforms;
@@ -21,15 +21,32 @@ use crate::uniforms::SpatialUniforms;
 /// and whether normals weigh in.
 type Variant = (u32, DepthWeight, bool);
 
-/// The two kernels of the filter and its settings buffer.
+/// Where the vertical pass writes the filtered AO.
+#[derive(Clone, Copy, Debug)]
+pub enum SpatialOutput<'a> {
+    /// The AO alone, `R32Float`, as the AO kernels write it.
+    Ao(&'a wgpu::TextureView),
+    /// The AO in r and the linear depth in g, in the pass's [`PairFormat`]: what the temporal
+    /// filter reads in one load (`TemporalInput::Packed`).
+    ///
+    /// [`TemporalInput::Packed`]: crate::passes::temporal_filter::TemporalInput::Packed
+    AoAndDepth(&'a wgpu::TextureView),
+}
+
+/// The kernels of the filter and its settings buffer.
 pub struct SpatialFilterPass {
-    /// Per variant, compiled the first time settings that enable the filter ask for it.
-    kernels: HashMap<Variant, [ComputeKernel; 2]>,
+    /// Per variant, compiled the first time settings that enable the filter ask for it: the
+    /// horizontal pass, and the vertical pass writing `SpatialOutput::Ao` and
+    /// `SpatialOutput::AoAndDepth`.
+    kernels: HashMap<Variant, [ComputeKernel; 3]>,
     /// The variant of the settings last given, when they enable the filter.
     current: Option<Variant>,
     uniforms: wgpu::Buffer,
-    /// The format of the horizontal pass's output.
+    /// The format of the horizontal pass's output and of `SpatialOutput::AoAndDepth`.
     pair: PairFormat,
+    /// Bound in place of the vertical pass's output it does not write.
+    ao_stand_in: wgpu::TextureView,
+    packed_stand_in: wgpu::TextureView,
 }
 
 impl SpatialFilterPass {
@@ -41,11 +58,17 @@ impl SpatialFilterPass {
         settings: &SpatialSettings,
         pair: PairFormat,
     ) -> Self {
+        let stand_in = |format| {
+            let usage = wgpu::TextureUsages::STORAGE_BINDING;
+            stand_in_view(device, "aokit spatial filter stand-in", format, usage)
+        };
         let mut pass = Self {
             kernels: HashMap::new(),
             current: None,
             uniforms: create_uniform_buffer::<SpatialUniforms>(device, "aokit spatial settings"),
             pair,
+            ao_stand_in: stand_in(AO_FORMAT),
+            packed_stand_in: stand_in(pair.texture_format()),
         };
         pass.set_settings(device, queue, settings);
         pass
@@ -84,21 +107,31 @@ impl SpatialFilterPass {
                 bind::texture(4, wgpu::TextureSampleType::Float { filterable: false }),
                 bind::storage_texture(5, self.pair.texture_format()),
             ];
-            let vertical = [bind::storage_texture(4, AO_FORMAT)];
+            // Both outputs are bound, the one not written to a stand-in.
+            let vertical = [
+                bind::storage_texture(4, AO_FORMAT),
+                bind::storage_texture(5, self.pair.texture_format()),
+            ];
+            let pair = self.pair as usize;
             self.kernels.entry(variant).or_insert_with(|| {
+                let vertical = |packed_output: bool| {
+                    let packed = ("PACKED_OUTPUT", f64::from(u8::from(packed_output)));
+                    ComputeKernel::with_constants(
+                        device,
+                        &shader::SPATIAL_FILTER_VERTICAL[pair],
+                        &[&shared[..], &vertical].concat(),
+                        &[&constants[..], &[packed]].concat(),
+                    )
+                };
                 [
                     ComputeKernel::with_constants(
                         device,
-                        &shader::SPATIAL_FILTER_HORIZONTAL[self.pair as usize],
+                        &shader::SPATIAL_FILTER_HORIZONTAL[pair],
                         &[&shared[..], &horizontal].concat(),
                         &constants,
                     ),
-                    ComputeKernel::with_constants(
-                        device,
-                        &shader::SPATIAL_FILTER_VERTICAL,
-                        &[&shared[..], &vertical].concat(),
-                        &constants,
-                    ),
+                    vertical(false),
+                    vertical(true),
                 ]
             });
         }
@@ -111,7 +144,7 @@ impl SpatialFilterPass {
 
     /// Records both passes: `ao` and `linear_depth` (with `normals`, oct32, for the normal
     /// weight) filtered along rows into `packed` (the pass's [`PairFormat`]), then along
-    /// columns into `output` (`R32Float`, as the AO kernels write).
+    /// columns into `output`.
     ///
     /// # Panics
     /// When the settings last given do not enable the bilateral kind.
@@ -124,12 +157,16 @@ impl SpatialFilterPass {
         linear_depth: &wgpu::TextureView,
         normals: &wgpu::TextureView,
         packed: &wgpu::TextureView,
-        output: &wgpu::TextureView,
+        output: SpatialOutput<'_>,
     ) {
-        let [horizontal, vertical] = self
+        let [horizontal, to_ao, to_pair] = self
             .current
             .map(|variant| &self.kernels[&variant])
             .expect("the spatial filter runs only with settings that enable it");
+        let (vertical, ao_out, packed_out) = match output {
+            SpatialOutput::Ao(ao) => (to_ao, ao, &self.packed_stand_in),
+            SpatialOutput::AoAndDepth(pair) => (to_pair, &self.ao_stand_in, pair),
+        };
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
             horizontal,
@@ -147,7 +184,8 @@ impl SpatialFilterPass {
                 self.uniforms.as_entire_binding(),
                 view(normals),
                 view(packed),
-                view(output),
+                view(ao_out),
+                view(packed_out),
             ],
         );
     }
@@ -158,7 +196,7 @@ pub(crate) mod tests {
     use glam::Vec3;
 
     use super::*;
-    use crate::gpu::{create_texture_2d, read_texture_f32, upload_texture_2d};
+    use crate::gpu::{create_texture_2d, read_texture, read_texture_f32, upload_texture_2d};
     use crate::normals::pack_oct32;
     use crate::settings::{DepthWeight, MAX_SPATIAL_RADIUS};
     use crate::uniforms::ViewUniforms;
@@ -174,7 +212,8 @@ pub(crate) mod tests {
         for pass in [
             shader::SPATIAL_FILTER_HORIZONTAL[0],
             shader::SPATIAL_FILTER_HORIZONTAL[1],
-            shader::SPATIAL_FILTER_VERTICAL,
+            shader::SPATIAL_FILTER_VERTICAL[0],
+            shader::SPATIAL_FILTER_VERTICAL[1],
         ] {
             let module = pass.validate().unwrap();
             let constant = |name| shader::u32_constant(&module, name);
@@ -193,7 +232,7 @@ pub(crate) mod tests {
             Ok([64, 1, 1])
         );
         assert_eq!(
-            shader::SPATIAL_FILTER_VERTICAL.workgroup_size(),
+            shader::SPATIAL_FILTER_VERTICAL[0].workgroup_size(),
             Ok([4, 64, 1])
         );
     }
@@ -313,7 +352,8 @@ pub(crate) mod tests {
         let pair = PairFormat::of(&gpu.device);
         let pass = SpatialFilterPass::new(&gpu.device, &gpu.queue, settings, pair);
         run_filter(gpu, image, |ctx, t| {
-            pass.encode(ctx, &t.ao, &t.depth, &t.normals, &t.packed, &t.output);
+            let output = SpatialOutput::Ao(&t.output);
+            pass.encode(ctx, &t.ao, &t.depth, &t.normals, &t.packed, output);
         })
     }
 
@@ -353,6 +393,31 @@ pub(crate) mod tests {
         let n = values.clone().count() as f32;
         let mean = values.clone().sum::<f32>() / n;
         (values.map(|v| (v - mean) * (v - mean)).sum::<f32>() / n).sqrt()
+    }
+
+    #[test]
+    fn the_packed_output_holds_the_same_ao_and_the_depth() {
+        let gpu = gpu();
+        let noisy = image(|near, x, y| if near { 0.2 } else { 0.7 } + 0.1 * hash(x, y));
+        let pair = PairFormat::of(&gpu.device);
+        let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        for settings in settings() {
+            let ao = filter(&gpu, &settings, &noisy);
+            let pass = SpatialFilterPass::new(&gpu.device, &gpu.queue, &settings, pair);
+            let packed = create_texture_2d(&gpu.device, "out", SIZE, pair.texture_format(), usage);
+            let packed_view = packed.create_view(&Default::default());
+            run_filter(&gpu, &noisy, |ctx, t| {
+                let output = SpatialOutput::AoAndDepth(&packed_view);
+                pass.encode(ctx, &t.ao, &t.depth, &t.normals, &t.packed, output);
+            });
+            let bytes = read_texture(&gpu.device, &gpu.queue, &packed).unwrap();
+            let texels: &[f32] = bytemuck::cast_slice(&bytes);
+            let channels = texels.len() / ao.len();
+            for (i, texel) in texels.chunks(channels).enumerate() {
+                assert_eq!(texel[0], ao[i], "{settings:?}: AO of pixel {i}");
+                assert_eq!(texel[1], noisy.depth[i], "{settings:?}: depth of pixel {i}");
+            }
+        }
     }
 
     #[test]

@@ -83,10 +83,28 @@ pub struct FrameMotion<'a> {
     pub reset: bool,
 }
 
+/// The current frame's AO and linear depth, as the temporal filter reads them.
+#[derive(Clone, Copy, Debug)]
+pub enum TemporalInput<'a> {
+    /// The AO (`R32Float`) and the linear depth (`R32Float`) in two textures.
+    Separate {
+        /// The AO.
+        ao: &'a wgpu::TextureView,
+        /// The linear depth.
+        linear_depth: &'a wgpu::TextureView,
+    },
+    /// Both in one texture of the pass's [`PairFormat`], AO in r and depth in g, as the spatial
+    /// filter writes them for it (`SpatialOutput::AoAndDepth`): half the loads.
+    ///
+    /// [`PairFormat`]: crate::gpu::PairFormat
+    Packed(&'a wgpu::TextureView),
+}
+
 /// Runs the temporal filter.
 pub struct TemporalFilterPass {
     settings: TemporalSettings,
-    kernel: ComputeKernel,
+    /// For [`TemporalInput::Separate`] and [`TemporalInput::Packed`].
+    kernels: [ComputeKernel; 2],
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
     /// Bound in place of motion vectors when there are none: never read.
@@ -99,25 +117,29 @@ impl TemporalFilterPass {
     /// Compiles the kernel, for histories in `pair`.
     pub fn new(device: &wgpu::Device, settings: &TemporalSettings, pair: PairFormat) -> Self {
         let float = wgpu::TextureSampleType::Float { filterable: false };
-        let kernel = ComputeKernel::new(
-            device,
-            &shader::TEMPORAL_FILTER[pair as usize],
-            &[
-                bind::uniform(0),
-                bind::uniform(1),
-                bind::texture(2, float),
-                bind::texture(3, float),
-                bind::texture(4, float),
-                bind::texture(5, float),
-                bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
-                bind::storage_texture(7, AO_FORMAT),
-                bind::storage_texture(8, pair.texture_format()),
-                bind::storage_texture(9, AO_FORMAT),
-            ],
-        );
+        let layout = [
+            bind::uniform(0),
+            bind::uniform(1),
+            bind::texture(2, float),
+            bind::texture(3, float),
+            bind::texture(4, float),
+            bind::texture(5, float),
+            bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
+            bind::storage_texture(7, AO_FORMAT),
+            bind::storage_texture(8, pair.texture_format()),
+            bind::storage_texture(9, AO_FORMAT),
+        ];
+        let kernel = |packed: bool| {
+            ComputeKernel::with_constants(
+                device,
+                &shader::TEMPORAL_FILTER[pair as usize],
+                &layout,
+                &[("PACKED_INPUT", f64::from(u8::from(packed)))],
+            )
+        };
         Self {
             settings: *settings,
-            kernel,
+            kernels: [kernel(false), kernel(true)],
             uniforms: create_uniform_buffer::<TemporalUniforms>(device, "aokit temporal settings"),
             point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
                 label: Some("aokit temporal point clamp"),
@@ -138,16 +160,15 @@ impl TemporalFilterPass {
         self.settings = *settings;
     }
 
-    /// Filters `ao` into `history` (made or remade when missing or of another size), using and
-    /// then replacing the history's previous frame.
+    /// Filters `input` into `history` (made or remade when missing or of another size), using
+    /// and then replacing the history's previous frame.
     pub fn encode(
         &self,
         ctx: &mut PassContext<'_>,
         queue: &wgpu::Queue,
         history: &mut Option<History>,
         frame: &FrameMotion<'_>,
-        ao: &wgpu::TextureView,
-        linear_depth: &wgpu::TextureView,
+        input: TemporalInput<'_>,
     ) {
         if history.as_ref().map(|h| h.size) != Some(ctx.size) {
             *history = Some(History::new(ctx.device, ctx.size, self.pair));
@@ -163,8 +184,13 @@ impl TemporalFilterPass {
         );
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
         let (read, write) = (history.latest, 1 - history.latest);
+        // Packed, the depth binding is not read: the packed texture stands in for it.
+        let (kernel, ao, linear_depth) = match input {
+            TemporalInput::Separate { ao, linear_depth } => (&self.kernels[0], ao, linear_depth),
+            TemporalInput::Packed(packed) => (&self.kernels[1], packed, packed),
+        };
         ctx.dispatch(
-            &self.kernel,
+            kernel,
             &[
                 self.uniforms.as_entire_binding(),
                 wgpu::BindingResource::TextureView(ao),
@@ -194,7 +220,102 @@ fn prev_view_from_view(previous_view_from_world: Mat4, view_from_world: Mat4) ->
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gpu::{read_texture_f32, upload_texture_2d};
+    use crate::passes::spatial_filter::tests::{Image, SIZE, gpu, hash, image};
+    use crate::uniforms::ViewUniforms;
     use glam::Vec3;
+
+    /// The spatial filter's test image with noise that changes every frame.
+    fn frame_image(frame: u32) -> Image {
+        image(|near, x, y| (if near { 0.3 } else { 0.6 }) + 0.2 * hash(x + 7 * frame, y))
+    }
+
+    /// Three frames of a camera sliding sideways over the spatial filter's test image with fresh
+    /// noise each frame, filtered from `input(frame)`: the AO each frame wrote.
+    fn filter_frames(
+        gpu: &crate::GpuContext,
+        input: impl Fn(&[f32], &[f32]) -> (wgpu::TextureView, wgpu::TextureView, bool),
+    ) -> Vec<Vec<f32>> {
+        let (device, queue) = (&gpu.device, &gpu.queue);
+        let pass =
+            TemporalFilterPass::new(device, &TemporalSettings::default(), PairFormat::of(device));
+        let projection = Projection::perspective(1.0, SIZE[0] as f32 / SIZE[1] as f32, 0.1, None);
+        let view_uniforms = create_uniform_buffer::<ViewUniforms>(device, "view");
+        let mut history = None;
+        let mut frames = Vec::new();
+        for frame in 0..3u32 {
+            let noisy = frame_image(frame);
+            let (ao, second, packed) = input(&noisy.ao, &noisy.depth);
+            let eye = Vec3::new(0.05 * frame as f32, 0.0, 0.0);
+            let view_from_world = glam::camera::rh::view::look_to_mat4(eye, Vec3::NEG_Z, Vec3::Y);
+            queue.write_buffer(
+                &view_uniforms,
+                0,
+                bytemuck::bytes_of(&ViewUniforms::new(&projection, SIZE, frame)),
+            );
+            let mut encoder = device.create_command_encoder(&Default::default());
+            let input = if packed {
+                TemporalInput::Packed(&ao)
+            } else {
+                TemporalInput::Separate {
+                    ao: &ao,
+                    linear_depth: &second,
+                }
+            };
+            pass.encode(
+                &mut PassContext {
+                    device,
+                    encoder: &mut encoder,
+                    view_uniforms: &view_uniforms,
+                    size: SIZE,
+                    timer: None,
+                },
+                queue,
+                &mut history,
+                &FrameMotion {
+                    view_from_world,
+                    projection,
+                    motion_vectors: None,
+                    reset: false,
+                },
+                input,
+            );
+            queue.submit([encoder.finish()]);
+            let filtered = &history.as_ref().unwrap().ao().0;
+            frames.push(read_texture_f32(device, queue, filtered).unwrap());
+        }
+        frames
+    }
+
+    #[test]
+    fn packed_and_separate_inputs_filter_alike() {
+        let gpu = gpu();
+        let (device, queue) = (&gpu.device, &gpu.queue);
+        let upload = |label, format, texels: &[f32]| {
+            let bytes = bytemuck::cast_slice(texels);
+            upload_texture_2d(device, queue, label, SIZE, format, bytes)
+                .unwrap()
+                .create_view(&Default::default())
+        };
+        let r32 = wgpu::TextureFormat::R32Float;
+        let separate = filter_frames(&gpu, |ao, depth| {
+            (upload("ao", r32, ao), upload("depth", r32, depth), false)
+        });
+        let pair = PairFormat::of(device).texture_format();
+        let channels = (pair.block_copy_size(None).unwrap() / 4) as usize;
+        let packed = filter_frames(&gpu, |ao, depth| {
+            let mut texels = vec![0.0; ao.len() * channels];
+            for (i, texel) in texels.chunks_mut(channels).enumerate() {
+                (texel[0], texel[1]) = (ao[i], depth[i]);
+            }
+            let view = upload("packed", pair, &texels);
+            (view.clone(), view, true)
+        });
+        assert_eq!(separate, packed);
+        // The history did take part: later frames are not the current frame's AO alone.
+        let current = frame_image(2).ao;
+        assert!(separate[2].iter().zip(&current).any(|(a, b)| a != b));
+    }
 
     #[test]
     fn a_still_camera_maps_view_space_to_itself() {
