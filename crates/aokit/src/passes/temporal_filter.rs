@@ -94,7 +94,7 @@ pub enum TemporalInput<'a> {
         linear_depth: &'a wgpu::TextureView,
     },
     /// Both in one texture of the pass's [`PairFormat`], AO in r and depth in g, as the spatial
-    /// filter writes them for it (`SpatialOutput::AoAndDepth`): half the loads.
+    /// filter writes them for it (`SpatialOutput::AoAndDepth`): 10 loads a pixel, not 19.
     ///
     /// [`PairFormat`]: crate::gpu::PairFormat
     Packed(&'a wgpu::TextureView),
@@ -114,7 +114,7 @@ pub struct TemporalFilterPass {
 }
 
 impl TemporalFilterPass {
-    /// Compiles the kernel, for histories in `pair`.
+    /// Compiles the kernel for each [`TemporalInput`], for histories in `pair`.
     pub fn new(device: &wgpu::Device, settings: &TemporalSettings, pair: PairFormat) -> Self {
         let float = wgpu::TextureSampleType::Float { filterable: false };
         let layout = [
