@@ -1,5 +1,6 @@
-"""Summarises the runs of scripts/ab.sh: per configuration, the wall time and each pass, each
-build's median over the rounds of its per-run median, and its ratio to the first build.
+"""Summarises the runs of scripts/ab.sh: per configuration, the wall time and each pass (and
+with --compare the wall time over the first configuration's), each build's median over the
+rounds of its per-run value, and its ratio to the first build.
 
     python3 scripts/ab_summary.py OUT BUILD_A BUILD_B ...
 """
@@ -22,8 +23,13 @@ def runs(out, build):
 
 
 def timings(configuration):
-    """Name to median ms: the wall time, then each pass's GPU time."""
+    """Name to median ms: the wall time, then each pass's GPU time; with --compare, also the
+    run's ratio to its first configuration (of the total GPU time, or on a software adapter of
+    the wall time), which drift of the machine between runs leaves alone."""
     times = {"wall": configuration["wall_ms"]["median"]}
+    if "ratio_to_first" in configuration:
+        basis = configuration["ratio_of"].removesuffix("_ms")
+        times[f"{basis} / first config."] = configuration["ratio_to_first"]
     for p in configuration["passes"]:
         times[p["name"]] = p["gpu_ms"]["median"]
     return times
