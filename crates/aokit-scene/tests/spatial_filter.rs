@@ -12,9 +12,10 @@ use glam::Vec3;
 
 const SIZE: [u32; 2] = [160, 96];
 
-/// The weight of a neighbour `offset` pixels from the centre, as `spatial_filter.wgsl` computes
-/// it: 0 without a surface, else the spatial Gaussian times the depth weight of the relative
-/// depth difference, times the normal weight when `normal_power` is above 0.
+/// The weight of a neighbour `offset` pixels from the centre that `spatial_filter.wgsl` computes
+/// (there as one exp2 of the factors' summed logarithms): 0 without a surface, else the spatial
+/// Gaussian times the depth weight of the relative depth difference, times the normal weight
+/// when `normal_power` is above 0.
 fn weight(s: &SpatialSettings, offset: i32, depth: f32, centre: f32, n: Vec3, n0: Vec3) -> f32 {
     if depth == 0.0 {
         return 0.0;
