@@ -488,26 +488,26 @@ fn tune_one(
             }
         );
     };
+    // Scores each of `candidates` and moves `best` to every one that improves on it.
+    let mut search = |candidates: &[Candidate], best: &mut (Candidate, Fit)| -> Result<()> {
+        for candidate in candidates {
+            let fit = Fit::of(&evaluator.score(&base, preset, candidate)?, bound);
+            if best.1.improved_by(&fit) {
+                *best = (*candidate, fit);
+            }
+        }
+        Ok(())
+    };
     for _ in 0..rounds {
         let before = best.0;
         for dimension in dimensions(method, back_faces, &best.0, samples) {
-            for candidate in &dimension.values {
-                let fit = Fit::of(&evaluator.score(&base, preset, candidate)?, bound);
-                if best.1.improved_by(&fit) {
-                    best = (*candidate, fit);
-                }
-            }
+            search(&dimension.values, &mut best)?;
             progress(dimension.name, &best);
         }
         // One parameter at a time the search can stall outside the bound where points within
         // it exist (vbao `low`, docs/tuning.md): there it moves two parameters at once.
         if best.0 == before && best.1.excess > 0.0 {
-            for candidate in pair_moves(method, back_faces, &best.0, samples) {
-                let fit = Fit::of(&evaluator.score(&base, preset, &candidate)?, bound);
-                if best.1.improved_by(&fit) {
-                    best = (candidate, fit);
-                }
-            }
+            search(&pair_moves(method, back_faces, &best.0, samples), &mut best)?;
             progress("pairs of parameters", &best);
         }
         if best.0 == before {

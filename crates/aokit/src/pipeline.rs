@@ -92,10 +92,11 @@ struct WorkingTargets {
 
 /// The spatial filter's AO and depth after the bilateral kind's horizontal pass (or the guided
 /// kind's window lines, in the same format), and its filtered AO: `R32Float`, or with
-/// `Layout::spatial_packed` the AO and depth in the pair format.
+/// `ao_and_depth` (`Layout::spatial_packed`) the AO and depth in the pair format.
 struct SpatialTargets {
     packed_view: wgpu::TextureView,
     ao: Target,
+    ao_and_depth: bool,
 }
 
 impl Targets {
@@ -142,6 +143,7 @@ impl Targets {
                 } else {
                     make("aokit spatially filtered ao", size, AO_FORMAT)
                 },
+                ao_and_depth: layout.spatial_packed,
             }),
             masked_ao: layout
                 .mask
@@ -180,12 +182,6 @@ fn check_settings(device: &wgpu::Device, settings: &AoSettings) -> Result<(), Ao
     Ok(())
 }
 
-/// Whether the spatial filter, when on, hands the temporal filter AO and depth packed in one
-/// texture: the bilateral kind does, for a temporal filter that is on.
-fn spatial_packed(settings: &AoSettings) -> bool {
-    settings.spatial.kind == SpatialKind::Bilateral && settings.temporal.enabled
-}
-
 /// What the filters read, at the resolution they run at: `ao` may be what they return.
 struct FilterInputs<'t, 'f> {
     ao: &'t Target,
@@ -220,7 +216,7 @@ impl Denoiser {
         spatial: Option<&'t SpatialTargets>,
         input: FilterInputs<'t, '_>,
     ) -> (&'t Target, Option<&'t wgpu::Texture>) {
-        let packed = spatial.is_some() && spatial_packed(settings);
+        let packed = spatial.is_some_and(|targets| targets.ao_and_depth);
         let ao = match spatial {
             Some(targets) => {
                 match settings.spatial.kind {
@@ -650,7 +646,9 @@ impl AoPipeline {
                 .spatial
                 .enabled
                 .then_some(if filter_full { size } else { working }),
-            spatial_packed: settings.spatial.enabled && spatial_packed(&settings),
+            spatial_packed: settings.spatial.enabled
+                && settings.spatial.kind == SpatialKind::Bilateral
+                && settings.temporal.enabled,
             working_motion: scale > 1
                 && !filter_full
                 && settings.temporal.enabled

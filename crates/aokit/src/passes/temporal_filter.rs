@@ -231,10 +231,11 @@ mod tests {
     }
 
     /// Three frames of a camera sliding sideways over the spatial filter's test image with fresh
-    /// noise each frame, filtered from `input(frame)`: the AO each frame wrote.
+    /// noise each frame, filtered from what `upload` makes of each frame's AO and depth: one
+    /// texture and, for separate input, the depth's. The AO each frame wrote.
     fn filter_frames(
         gpu: &crate::GpuContext,
-        input: impl Fn(&[f32], &[f32]) -> (wgpu::TextureView, wgpu::TextureView, bool),
+        upload: impl Fn(&[f32], &[f32]) -> (wgpu::TextureView, Option<wgpu::TextureView>),
     ) -> Vec<Vec<f32>> {
         let (device, queue) = (&gpu.device, &gpu.queue);
         let pass =
@@ -245,7 +246,7 @@ mod tests {
         let mut frames = Vec::new();
         for frame in 0..3u32 {
             let noisy = frame_image(frame);
-            let (ao, second, packed) = input(&noisy.ao, &noisy.depth);
+            let (ao, depth) = upload(&noisy.ao, &noisy.depth);
             let eye = Vec3::new(0.05 * frame as f32, 0.0, 0.0);
             let view_from_world = glam::camera::rh::view::look_to_mat4(eye, Vec3::NEG_Z, Vec3::Y);
             queue.write_buffer(
@@ -254,13 +255,12 @@ mod tests {
                 bytemuck::bytes_of(&ViewUniforms::new(&projection, SIZE, frame)),
             );
             let mut encoder = device.create_command_encoder(&Default::default());
-            let input = if packed {
-                TemporalInput::Packed(&ao)
-            } else {
-                TemporalInput::Separate {
+            let input = match &depth {
+                None => TemporalInput::Packed(&ao),
+                Some(linear_depth) => TemporalInput::Separate {
                     ao: &ao,
-                    linear_depth: &second,
-                }
+                    linear_depth,
+                },
             };
             pass.encode(
                 &mut PassContext {
@@ -299,7 +299,7 @@ mod tests {
         };
         let r32 = wgpu::TextureFormat::R32Float;
         let separate = filter_frames(&gpu, |ao, depth| {
-            (upload("ao", r32, ao), upload("depth", r32, depth), false)
+            (upload("ao", r32, ao), Some(upload("depth", r32, depth)))
         });
         let pair = PairFormat::of(device).texture_format();
         let channels = (pair.block_copy_size(None).unwrap() / 4) as usize;
@@ -308,8 +308,7 @@ mod tests {
             for (i, texel) in texels.chunks_mut(channels).enumerate() {
                 (texel[0], texel[1]) = (ao[i], depth[i]);
             }
-            let view = upload("packed", pair, &texels);
-            (view.clone(), view, true)
+            (upload("packed", pair, &texels), None)
         });
         assert_eq!(separate, packed);
         // The history did take part: later frames are not the current frame's AO alone.
