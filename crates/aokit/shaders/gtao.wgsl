@@ -7,6 +7,9 @@
 // Highest horizon cosine on one side of a slice (side = +1 or -1), starting from the normal
 // hemisphere's edge `low_cos`.
 fn search_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32) -> f32 {
+    if LEAN {
+        return march_horizon(s, slice, side, jitter, low_cos);
+    }
     var horizon_cos = low_cos;
     for (var step = 0u; step < ao.steps; step++) {
         let sample = side_sample(s, slice, side, step_distance(step, ao.steps, jitter, s.radius_px));
@@ -25,6 +28,25 @@ fn search_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32
         // as if the occluder that raised it were only about as thick as it is wide.
         horizon_cos = select(mix(horizon_cos, sample_cos, ao.thickness), sample_cos,
                              sample_cos >= horizon_cos);
+    }
+    return horizon_cos;
+}
+
+// search_horizon on the lean march: the same samples and the same horizon, with STEPS literal
+// steps and no branch (a sample with nothing to learn leaves the horizon as it was).
+fn march_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32) -> f32 {
+    let m = begin_side(s, slice, side);
+    var horizon_cos = low_cos;
+    for (var step = 0u; step < STEPS; step++) {
+        let distance_px = step_distance(step, STEPS, jitter, s.radius_px);
+        let sample = march_sample(s, m, slice.tangent, distance_px);
+        let inverse_distance = inverseSqrt(dot(sample.xyz, sample.xyz));
+        let distance = dot(sample.xyz, sample.xyz) * inverse_distance;
+        let sample_cos = mix(low_cos, dot(sample.xyz, s.v) * inverse_distance,
+                             falloff_weight(s, distance));
+        let raised = select(mix(horizon_cos, sample_cos, ao.thickness), sample_cos,
+                            sample_cos >= horizon_cos);
+        horizon_cos = select(horizon_cos, raised, sample.w > 0.0);
     }
     return horizon_cos;
 }
@@ -52,8 +74,9 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     var visible = 0.0;
     var unoccluded = 0.0;
     var bent = vec3<f32>(0.0);
-    for (var i = 0u; i < ao.count; i++) {
-        let slice = make_slice(surface, (f32(i) + noise.x) * PI / f32(ao.count));
+    let slices = select(ao.count, SLICES, LEAN);
+    for (var i = 0u; i < slices; i++) {
+        let slice = make_slice(surface, (f32(i) + noise.x) * PI / f32(slices));
         let n = slice.angle_n;
         // Horizons start at the edge of the normal's hemisphere: cos(n + pi/2) = -sin(n) on the
         // +omega side, cos(n - pi/2) = sin(n) on the other.
@@ -68,7 +91,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         visible += slice.n_len * (arc_integral(h_neg, n) + arc_integral(h_pos, n));
         // The same slice with nothing in it, h = n -+ pi/2: |n_p| (cos n + n sin n).
         unoccluded += slice.n_len * (cos(n) + n * sin_n);
-        if (ao.flags & FLAG_BENT_NORMALS) != 0u {
+        if BENT_NORMALS {
             // Only the occluded part's direction is taken from the slice; see open_bent below.
             let b = bent_in_slice(h_neg, h_pos, n) - bent_in_slice(n - HALF_PI, n + HALF_PI, n);
             bent += slice.n_len * (b.x * surface.v + b.y * slice.tangent);
@@ -81,7 +104,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     // the same slices removes that noise; the estimate stays consistent because both sums
     // converge to their means. Backfacing normals make that sum small, where the plain average is
     // the safer estimate.
-    let count = f32(ao.count);
+    let count = f32(slices);
     let use_ratio = (ao.flags & FLAG_NORMALIZE_SLICES) != 0u && unoccluded > 0.1 * count;
     let visibility = select(visible / count, visible / unoccluded, use_ratio);
     return Estimate(visibility, bent + open_bent(surface.n, unoccluded));

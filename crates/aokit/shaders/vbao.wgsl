@@ -111,7 +111,7 @@ fn side_bits(s: Surface, slice: Slice, side: f32, jitter: f32, lo: f32) -> u32 {
 }
 
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
-    let bent_wanted = (ao.flags & FLAG_BENT_NORMALS) != 0u;
+    let bent_wanted = BENT_NORMALS;
 
     var visible = 0.0;
     var unoccluded = 0.0;

@@ -38,7 +38,7 @@ pub use settings::{
     AoSettings, DepthMips, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings,
     HbaoVariant, MSVO_MAX_LEVELS, Method, MsvoSettings, NoiseKind, NoiseSettings, NormalEncoding,
     NormalSource, NormalSpace, NormalsSettings, Preset, Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX,
-    SampleDepth, SettingsError, SpatialKind, SpatialSettings, SsaoSettings, TemporalOffset,
-    TemporalSettings, Ue4SsaoSettings, Upsample, VbaoSettings,
+    SampleDepth, SettingsError, SliceMarch, SpatialKind, SpatialSettings, SsaoSettings,
+    TemporalOffset, TemporalSettings, Ue4SsaoSettings, Upsample, VbaoSettings,
 };
 pub use timing::PassTime;

@@ -9,6 +9,7 @@ use crate::passes::PassContext;
 use crate::passes::back_faces::{BackFacesPass, THICKNESS_FORMAT};
 use crate::passes::decode_normals::DecodeNormalsPass;
 use crate::passes::depth_mips::{DepthMipsPass, DepthReduction, atlas_format};
+use crate::passes::edge_filter::EdgeFilterPass;
 use crate::passes::guided_filter::GuidedFilterPass;
 use crate::passes::linear_depth::{DepthInput, LINEAR_DEPTH_FORMAT, LinearDepthPass};
 use crate::passes::mask::MaskPass;
@@ -195,6 +196,7 @@ struct FilterInputs<'t, 'f> {
 struct Denoiser {
     spatial: SpatialFilterPass,
     guided: GuidedFilterPass,
+    edges: EdgeFilterPass,
     /// Compiled the first time the temporal filter is on.
     temporal: Option<TemporalFilterPass>,
     /// Each view's temporal history, by [`AoInputs::view_id`].
@@ -237,6 +239,13 @@ impl Denoiser {
                         &input.ao.1,
                         input.linear_depth,
                         &targets.packed_view,
+                        &targets.ao.1,
+                    ),
+                    SpatialKind::Edges => self.edges.encode(
+                        ctx,
+                        &input.ao.1,
+                        input.linear_depth,
+                        input.normals,
                         &targets.ao.1,
                     ),
                 }
@@ -468,6 +477,7 @@ impl AoPipeline {
             denoiser: Denoiser {
                 spatial: SpatialFilterPass::new(device, queue, &settings.spatial, pair),
                 guided: GuidedFilterPass::new(device, queue, &settings.spatial, pair),
+                edges: EdgeFilterPass::new(device, queue, &settings.spatial),
                 temporal: None,
                 histories: HashMap::new(),
                 pair,
@@ -574,6 +584,9 @@ impl AoPipeline {
             .set_settings(device, queue, &settings.spatial);
         self.denoiser
             .guided
+            .set_settings(device, queue, &settings.spatial);
+        self.denoiser
+            .edges
             .set_settings(device, queue, &settings.spatial);
         if let Some(temporal) = &mut self.denoiser.temporal {
             temporal.set_settings(&settings.temporal);

@@ -435,6 +435,10 @@ named_enum! {
         /// linear model of AO against depth in every `(2 guided_radius + 1)^2` window
         /// (`guided_radius`, `guided_epsilon`).
         Guided = "guided",
+        /// One pass over each pixel's 3x3 neighbourhood with the bilateral kind's weights
+        /// (`sigma`, `depth_weight`, `depth_sigma`, `normal_power`; `radius` does not apply):
+        /// the shape of XeGTAO's denoiser, nine texels a pixel and no workgroup tile.
+        Edges = "edges",
     }
 }
 
@@ -763,6 +767,34 @@ named_enum! {
         /// exact on a plane; the nearest texel across a depth edge. A gather and about half a
         /// sample's arithmetic more, for slightly lower error (docs/methods.md#sample-depth).
         Interpolated = "interpolated",
+    }
+}
+
+named_enum! {
+    /// How `gtao` marches its slices. Both take the same samples and give the same AO to
+    /// rounding; they differ in cost. The lean march applies to the nearest read
+    /// ([`SampleDepth::Nearest`]); with [`SampleDepth::Interpolated`] the general one runs.
+    ///
+    /// ```
+    /// use aokit::{AoSettings, Method, Preset, SliceMarch};
+    /// // Time the general march against the lean one (`aokit bench --compare`).
+    /// let general = AoSettings {
+    ///     slice_march: SliceMarch::General,
+    ///     ..AoSettings::preset(Method::Gtao, Preset::High)
+    /// };
+    /// general.validate()?;
+    /// # Ok::<(), aokit::SettingsError>(())
+    /// ```
+    pub enum SliceMarch ("slice march") {
+        /// Each side of a slice set up once: the view ray through a sample is affine in its
+        /// distance along the slice, so a sample costs one fetch through the clamping sampler
+        /// and a few multiply-adds, with the slice and step counts compiled in and validity
+        /// folded into a select instead of branches.
+        #[default]
+        Lean = "lean",
+        /// Every sample placed from scratch (`side_sample` in common/slice.wgsl), with a
+        /// branch for each way it can fail: the march every slice method shares.
+        General = "general",
     }
 }
 
@@ -1311,6 +1343,8 @@ pub struct AoSettings {
     pub depth_mip_offset: f32,
     /// How the slice methods' samples read the depth where they land.
     pub sample_depth: SampleDepth,
+    /// How `gtao` marches its slices: lean or general, the same AO at different cost.
+    pub slice_march: SliceMarch,
 }
 
 impl Default for AoSettings {
@@ -1421,6 +1455,7 @@ impl AoSettings {
             // 0.001 (docs/depth-mips.md).
             depth_mip_offset: 3.0,
             sample_depth: SampleDepth::default(),
+            slice_march: SliceMarch::default(),
         }
     }
 

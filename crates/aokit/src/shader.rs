@@ -262,6 +262,13 @@ pub const SPATIAL_FILTER_VERTICAL: [ShaderSource; 2] = per_pair_format!(
     ]
 );
 
+/// The spatial filter's `edges` kind: one 3x3 edge-aware pass, AO, linear depth and normals in,
+/// AO out.
+pub const EDGE_FILTER: ShaderSource = ShaderSource {
+    name: "edge_filter",
+    parts: &[VIEW, ENCODING, include_str!("../shaders/edge_filter.wgsl")],
+};
+
 /// The guided filter's settings, tile and indexing; each pass file adds its textures and entry
 /// point.
 const GUIDED_FILTER: &str = include_str!("../shaders/guided_filter.wgsl");
@@ -574,6 +581,7 @@ pub const ALL: &[ShaderSource] = &[
     GUIDED_FILTER_COEFFICIENTS[0],
     GUIDED_FILTER_COEFFICIENTS[1],
     GUIDED_FILTER_OUTPUT,
+    EDGE_FILTER,
     TEMPORAL_FILTER[0],
     TEMPORAL_FILTER[1],
     DOWNSAMPLE[0][0],

@@ -93,12 +93,11 @@ pub(crate) struct AoUniforms {
     pub mip_scale: f32,
 }
 
-/// `AoUniforms::flags` bits, mirrored as constants in `common/ao.wgsl`.
+/// `AoUniforms::flags` bits, mirrored as constants in `common/ao.wgsl`. Bent normals are the
+/// kernels' `BENT_NORMALS` override instead (passes/method.rs).
 pub(crate) mod flags {
     /// Divide slice integrals by their unoccluded integrals (GTAO).
     pub const NORMALIZE_SLICES: u32 = 1;
-    /// Write bent normals.
-    pub const BENT_NORMALS: u32 = 2;
     /// `ue4-ssao`: the normal version rather than the depth-only one.
     pub const UE4_SSAO_NORMALS: u32 = 4;
     /// `vbao`: occluder thickness from the back faces' depth.
@@ -164,9 +163,6 @@ impl AoUniforms {
         let mut bits = 0;
         if settings.gtao.normalize_slices {
             bits |= flags::NORMALIZE_SLICES;
-        }
-        if settings.bent_normals {
-            bits |= flags::BENT_NORMALS;
         }
         if settings.ue4_ssao.use_normals {
             bits |= flags::UE4_SSAO_NORMALS;
@@ -412,7 +408,6 @@ mod tests {
         let module = shader::UE4_SSAO.validate().unwrap();
         for (name, bit) in [
             ("FLAG_NORMALIZE_SLICES", flags::NORMALIZE_SLICES),
-            ("FLAG_BENT_NORMALS", flags::BENT_NORMALS),
             ("FLAG_UE4_SSAO_NORMALS", flags::UE4_SSAO_NORMALS),
         ] {
             assert_eq!(shader::u32_constant(&module, name), Some(bit), "{name}");

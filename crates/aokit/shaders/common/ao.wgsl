@@ -39,14 +39,18 @@ struct AoUniforms {
 }
 
 const FLAG_NORMALIZE_SLICES: u32 = 1u;
-const FLAG_BENT_NORMALS: u32 = 2u;
+
+// AoSettings::bent_normals, compiled in rather than a flag: a kernel without bent normals holds
+// none of their code. The per-pixel kernels get it from the settings (passes/method.rs); the
+// others have no bent normals.
+override BENT_NORMALS: bool = false;
 
 @group(0) @binding(1) var<uniform> ao: AoUniforms;
 @group(0) @binding(2) var linear_depth: texture_2d<f32>;
 @group(0) @binding(3) var normals: texture_2d<u32>;
 @group(0) @binding(4) var ao_out: texture_storage_2d<r32float, write>;
 @group(0) @binding(5) var point_clamp: sampler;
-// View-space bent normal in xyz and AO in w, when FLAG_BENT_NORMALS is set (a 1x1 stand-in
+// View-space bent normal in xyz and AO in w, with BENT_NORMALS (a 1x1 stand-in
 // otherwise, never written).
 @group(0) @binding(6) var bent_out: texture_storage_2d<rgba16float, write>;
 // The noise tile of `blue` and `white` noise, two values per texel, repeated over the image (a
@@ -273,7 +277,7 @@ fn shape_ao(visibility: f32, depth: f32) -> f32 {
 fn store_ao(s: Surface, visibility: f32, bent: vec3<f32>) {
     let value = shape_ao(visibility, s.depth);
     textureStore(ao_out, s.pixel, vec4<f32>(value, 0.0, 0.0, 0.0));
-    if (ao.flags & FLAG_BENT_NORMALS) != 0u {
+    if BENT_NORMALS {
         let b = select(s.n, normalize(bent), dot(bent, bent) > 1e-12);
         textureStore(bent_out, s.pixel, vec4<f32>(b, value));
     }
@@ -282,7 +286,7 @@ fn store_ao(s: Surface, visibility: f32, bent: vec3<f32>) {
 // AO 1 and the normal as bent normal, for pixels with nothing to sample.
 fn store_unoccluded(s: Surface) {
     textureStore(ao_out, s.pixel, vec4<f32>(1.0, 0.0, 0.0, 0.0));
-    if (ao.flags & FLAG_BENT_NORMALS) != 0u {
+    if BENT_NORMALS {
         let n = select(vec3<f32>(0.0), s.n, s.depth != NO_SURFACE);
         textureStore(bent_out, s.pixel, vec4<f32>(n, 1.0));
     }

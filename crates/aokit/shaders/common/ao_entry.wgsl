@@ -10,6 +10,12 @@ struct Estimate {
     bent: vec3<f32>,
 }
 
+// The noise kind and its offset over frames (`ao.noise_kind`, `ao.noise_temporal`), compiled
+// in so that the kernel holds the code of one kind only: a switch on a uniform is code every
+// pixel runs on a SIMD CPU adapter (lavapipe), whatever the value.
+override NOISE_KIND: u32;
+override NOISE_TEMPORAL: u32;
+
 // 16x16 rather than 8x8: a workgroup's slices then fetch from a larger shared neighbourhood, so
 // more of their far samples hit the texture cache. Measured on an H100 (docs/performance.md):
 // GTAO `high` 8 to 17% faster, HBAO 2 to 12%; the other passes gained nothing from it.
@@ -24,7 +30,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let texel = textureLoad(noise_tile, id.xy % textureDimensions(noise_tile), 0).xy;
-    let noise = pixel_noise(id.xy, view.frame_index, ao.noise_kind, ao.noise_temporal, texel);
+    let noise = pixel_noise(id.xy, view.frame_index, NOISE_KIND, NOISE_TEMPORAL, texel);
     let result = estimate(surface, noise);
     store_ao(surface, result.visibility, result.bent);
 }

@@ -12,7 +12,7 @@ use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{create_uniform_buffer, stand_in_view};
 use crate::noise;
 use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
-use crate::settings::{AoSettings, Method, NoiseKind, SampleDepth};
+use crate::settings::{AoSettings, Method, NoiseKind, SampleDepth, SliceMarch};
 use crate::shader;
 use crate::uniforms::AoUniforms;
 
@@ -43,15 +43,86 @@ impl DepthMipsRead {
     }
 }
 
+/// What a compiled kernel was specialised for besides its method: how it reads the depth MIP
+/// atlas, how its samples read depth (`None` for the methods that read depth one way only),
+/// for the lean slice march the slice and step counts, whether it writes bent normals, and its
+/// noise. Each is an `override` of the WGSL: code a setting turns off is not in the kernel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct Variant {
+    depth_mips_read: DepthMipsRead,
+    sample_depth: Option<SampleDepth>,
+    lean: Option<Lean>,
+    bent_normals: bool,
+    /// The noise kind's and its temporal offset's codes (common/noise.wgsl).
+    noise: [u32; 2],
+}
+
+impl Variant {
+    fn of(settings: &AoSettings) -> Self {
+        let sample_depth = settings
+            .method
+            .marches_slices()
+            .then_some(settings.sample_depth);
+        let lean = (settings.method == Method::Gtao
+            && settings.slice_march == SliceMarch::Lean
+            && settings.sample_depth == SampleDepth::Nearest)
+            .then_some(Lean {
+                slices: settings.gtao.slice_count,
+                steps: settings.gtao.steps_per_side,
+                step_power: settings.step_power.to_bits(),
+            });
+        Self {
+            depth_mips_read: DepthMipsRead::of(settings),
+            sample_depth,
+            lean,
+            bent_normals: settings.bent_normals,
+            noise: [
+                noise::kind_code(settings.noise.kind),
+                noise::temporal_code(settings.noise.temporal),
+            ],
+        }
+    }
+
+    /// The override constants that compile this variant.
+    fn constants(self) -> Vec<(&'static str, f64)> {
+        let [noise_kind, noise_temporal] = self.noise;
+        let mut constants = vec![
+            ("DEPTH_MIPS", f64::from(self.depth_mips_read as u32)),
+            ("BENT_NORMALS", f64::from(u8::from(self.bent_normals))),
+            ("NOISE_KIND", f64::from(noise_kind)),
+            ("NOISE_TEMPORAL", f64::from(noise_temporal)),
+        ];
+        if let Some(sample_depth) = self.sample_depth {
+            let nearest = sample_depth == SampleDepth::Nearest;
+            constants.push(("NEAREST_DEPTH", f64::from(u8::from(nearest))));
+        }
+        if let Some(lean) = self.lean {
+            constants.extend([
+                ("LEAN", 1.0),
+                ("SLICES", f64::from(lean.slices)),
+                ("STEPS", f64::from(lean.steps)),
+                ("STEP_POWER", f64::from(f32::from_bits(lean.step_power))),
+            ]);
+        }
+        constants
+    }
+}
+
+/// The settings the lean slice march compiles in: slices, steps per side and the step power's
+/// bits (a float is no hash key).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct Lean {
+    slices: u32,
+    steps: u32,
+    step_power: u32,
+}
+
 /// Runs the kernel of the current method.
 pub struct MethodPass {
-    /// By method, how it reads the depth MIP atlas and how its samples read depth (`None`
-    /// for the methods that read depth one way only).
-    kernels: HashMap<(Method, DepthMipsRead, Option<SampleDepth>), ComputeKernel>,
-    /// How the kernel of the current settings reads the atlas.
-    depth_mips_read: DepthMipsRead,
-    /// How the samples of the current settings' kernel read depth.
-    sample_depth: Option<SampleDepth>,
+    /// By method and variant.
+    kernels: HashMap<(Method, Variant), ComputeKernel>,
+    /// The variant of the current settings' kernel, as it reads with the atlas bound.
+    variant: Variant,
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
     /// Bound in place of the bent normals when they are off: the kernels never write it.
@@ -108,8 +179,7 @@ impl MethodPass {
         let placeholder = |label, format, usage| stand_in_view(device, label, format, usage);
         let mut pass = Self {
             kernels: HashMap::new(),
-            depth_mips_read: DepthMipsRead::Off,
-            sample_depth: None,
+            variant: Variant::of(settings),
             uniforms: create_uniform_buffer::<AoUniforms>(device, "aokit method settings"),
             point_clamp,
             bent_placeholder: placeholder(
@@ -150,26 +220,16 @@ impl MethodPass {
         // The separable HBAO passes and MSVO's passes run instead of the method's kernel
         // (`SeparableHbaoPass`, `MsvoPass`).
         if !settings.separable_hbao() && settings.method != Method::Msvo {
-            let read = DepthMipsRead::of(settings);
-            let sample_depth = settings
-                .method
-                .marches_slices()
-                .then_some(settings.sample_depth);
-            self.depth_mips_read = read;
-            self.sample_depth = sample_depth;
+            let variant = Variant::of(settings);
+            self.variant = variant;
             self.kernels
-                .entry((settings.method, read, sample_depth))
+                .entry((settings.method, variant))
                 .or_insert_with(|| {
-                    let mut constants = vec![("DEPTH_MIPS", f64::from(read as u32))];
-                    if let Some(sample_depth) = sample_depth {
-                        let nearest = sample_depth == SampleDepth::Nearest;
-                        constants.push(("NEAREST_DEPTH", f64::from(u8::from(nearest))));
-                    }
                     ComputeKernel::with_constants(
                         device,
                         &shader::method(settings.method),
                         &method_layout(settings.method),
-                        &constants,
+                        &variant.constants(),
                     )
                 });
         }
@@ -211,11 +271,14 @@ impl MethodPass {
         depth_mips: Option<&wgpu::TextureView>,
         thickness: Option<&wgpu::TextureView>,
     ) {
-        let read = match depth_mips {
-            Some(_) => self.depth_mips_read,
-            None => DepthMipsRead::Off,
+        let variant = Variant {
+            depth_mips_read: match depth_mips {
+                Some(_) => self.variant.depth_mips_read,
+                None => DepthMipsRead::Off,
+            },
+            ..self.variant
         };
-        let kernel = &self.kernels[&(method, read, self.sample_depth)];
+        let kernel = &self.kernels[&(method, variant)];
         let mut resources = self
             .bindings(linear_depth, normals, ao, bent_normals, depth_mips)
             .to_vec();

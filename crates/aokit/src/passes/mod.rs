@@ -6,6 +6,7 @@
 pub(crate) mod back_faces;
 pub(crate) mod decode_normals;
 pub(crate) mod depth_mips;
+pub(crate) mod edge_filter;
 pub(crate) mod guided_filter;
 pub(crate) mod linear_depth;
 pub(crate) mod mask;

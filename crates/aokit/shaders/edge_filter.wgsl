@@ -1,0 +1,94 @@
+// Spatial filter, `edges` kind: one pass of a 3x3 edge-aware blur (docs/denoise.md), the shape
+// of XeGTAO's denoiser (Strugar 2021, https://github.com/GameTechDev/XeGTAO): where the
+// bilateral kind spends two passes and a workgroup tile on a 7-tap line each way, this reads
+// the 3x3 neighbourhood straight from the textures, nine texels a pixel, with no barrier. Each
+// neighbour `k` pixels away (k^2 = 1 or 2) whose relative depth difference from the centre is
+// `r` weighs
+//
+//     w = exp(-k^2 / (2 sigma^2)) * exp(-r^2 / (2 depth_sigma^2))     (gaussian)
+//     w = exp(-k^2 / (2 sigma^2)) * (r < depth_sigma)                  (threshold)
+//
+// times max(0, n . n0)^normal_power when that power is above 0, with the bilateral kind's
+// settings and the centre's weight 1. Pixels without a surface, and texels outside the image,
+// never contribute; a pixel without a surface keeps AO 1.
+
+// The bilateral kind's `SpatialUniforms` (uniforms.rs), the same settings buffer layout.
+struct SpatialUniforms {
+    spatial_scale: f32,
+    depth_scale: f32,
+    normal_power: f32,
+}
+
+@group(0) @binding(1) var<uniform> spatial: SpatialUniforms;
+@group(0) @binding(2) var ao_in: texture_2d<f32>;
+@group(0) @binding(3) var linear_depth: texture_2d<f32>;
+@group(0) @binding(4) var normals: texture_2d<u32>;
+@group(0) @binding(5) var ao_out: texture_storage_2d<r32float, write>;
+
+// `DepthWeight as u32` in Rust (a test compares them).
+const DEPTH_GAUSSIAN: u32 = 0u;
+const DEPTH_THRESHOLD: u32 = 1u;
+
+// Fixed per pipeline, as in spatial_filter.wgsl: DEPTH_GAUSSIAN or DEPTH_THRESHOLD, and whether
+// normals weigh in (normal_power > 0); without it no normal is loaded.
+override DEPTH_WEIGHT: u32;
+override NORMAL_WEIGHT: bool;
+
+// log2(e): the depth and normal factors' base-2 logarithms add up and one exp2 gives both.
+const LOG2_E: f32 = 1.44269504;
+
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if any(id.xy >= vec2<u32>(view.size)) {
+        return;
+    }
+    let centre = vec2<i32>(id.xy);
+    let depth = textureLoad(linear_depth, centre, 0).r;
+    if depth == NO_SURFACE {
+        textureStore(ao_out, centre, vec4<f32>(1.0, 0.0, 0.0, 0.0));
+        return;
+    }
+    var n0 = vec3<f32>(0.0);
+    if NORMAL_WEIGHT {
+        n0 = unpack_oct32(textureLoad(normals, centre, 0).r);
+    }
+    let relative_scale = spatial.depth_scale / depth;
+    // The spatial factor of a neighbour sharing an edge, and of a diagonal one (k^2 = 2): the
+    // same for every pixel, so the taps take only their depth's (and normal's) exp2.
+    let edge_weight = exp2(-0.5 * LOG2_E * spatial.spatial_scale * spatial.spatial_scale);
+    let last = vec2<i32>(view.size) - 1;
+    var sum = 0.0;
+    var weight_sum = 0.0;
+    for (var y = -1; y <= 1; y++) {
+        for (var x = -1; x <= 1; x++) {
+            let offset = vec2<i32>(x, y);
+            // Clamped so every load is inside the image; the weight drops what was moved.
+            let at = clamp(centre + offset, vec2<i32>(0), last);
+            let d = textureLoad(linear_depth, at, 0).r;
+            let r = abs(d - depth) * relative_scale;
+            let spatial_weight =
+                select(1.0, edge_weight, x != 0) * select(1.0, edge_weight, y != 0);
+            var log2_w = 0.0;
+            var kept = all(at == centre + offset) && d != NO_SURFACE;
+            if DEPTH_WEIGHT == DEPTH_THRESHOLD {
+                kept = kept && r < 1.0;
+            } else {
+                log2_w -= 0.5 * LOG2_E * r * r;
+            }
+            if NORMAL_WEIGHT {
+                let facing = max(dot(unpack_oct32(textureLoad(normals, at, 0).r), n0), 0.0);
+                // A neighbour facing away weighs nothing (log2(0) is left to the implementation).
+                kept = kept && facing > 0.0;
+                log2_w += spatial.normal_power * log2(facing);
+            }
+            var w = spatial_weight;
+            if DEPTH_WEIGHT != DEPTH_THRESHOLD || NORMAL_WEIGHT {
+                w *= exp2(log2_w);
+            }
+            w = select(0.0, w, kept);
+            sum += w * textureLoad(ao_in, at, 0).r;
+            weight_sum += w;
+        }
+    }
+    textureStore(ao_out, centre, vec4<f32>(sum / weight_sum, 0.0, 0.0, 0.0));
+}
