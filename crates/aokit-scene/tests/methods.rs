@@ -376,7 +376,7 @@ fn the_nearest_depth_read_moves_the_slice_methods_ao_a_little_and_switches_at_ru
 }
 
 #[test]
-fn the_lean_slice_march_gives_the_general_marchs_ao() {
+fn the_lean_slice_march_gives_the_general_marchs_ao_for_every_slice_method() {
     let gpu = gpu();
     let room = Builtin::Room.build();
     let orthographic = Camera {
@@ -394,10 +394,14 @@ fn the_lean_slice_march_gives_the_general_marchs_ao() {
         })
         .collect();
     views.push((room, orthographic));
-    for (scene, camera) in &views {
+    let slice_methods = Method::ALL.into_iter().filter(|m| m.marches_slices());
+    for ((scene, camera), method) in views
+        .iter()
+        .flat_map(|v| slice_methods.clone().map(move |m| (v, m)))
+    {
         for (preset, depth_mips, bent_normals) in [
             (Preset::Low, DepthMips::Off, false),
-            (Preset::High, DepthMips::Off, true),
+            (Preset::High, DepthMips::Off, method.has_bent_normals()),
             (Preset::High, DepthMips::Fp32, false),
             (Preset::Ultra, DepthMips::Off, false),
         ] {
@@ -405,10 +409,11 @@ fn the_lean_slice_march_gives_the_general_marchs_ao() {
                 slice_march,
                 depth_mips,
                 bent_normals,
-                ..scene_settings(scene, Method::Gtao, preset)
+                ..scene_settings(scene, method, preset)
             };
             let view = format!(
-                "{} / {} / {} / mips {}",
+                "{} / {} / {} / {} / mips {}",
+                method.name(),
                 scene.name,
                 camera.name,
                 preset.name(),

@@ -74,7 +74,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     var visible = 0.0;
     var unoccluded = 0.0;
     var bent = vec3<f32>(0.0);
-    let slices = select(ao.count, SLICES, LEAN);
+    let slices = slice_count();
     for (var i = 0u; i < slices; i++) {
         let slice = make_slice(surface, (f32(i) + noise.x) * PI / f32(slices));
         let n = slice.angle_n;

@@ -16,18 +16,20 @@
 
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     let steps = horizon_steps(surface);
+    let directions = slice_count();
     var occlusion = 0.0;
-    for (var d = 0u; d < ao.count; d++) {
-        let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(ao.count));
+    for (var d = 0u; d < directions; d++) {
+        let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(directions));
+        let march = begin_side(surface, slice, 1.0);
         var horizon = start_horizon(slice);
         for (var k = 0u; k < steps; k++) {
             let distance = step_distance(k, steps, noise.y, surface.radius_px);
-            let sample = side_sample(surface, slice, 1.0, distance);
+            let sample = slice_method_sample(surface, slice, march, distance);
             if sample.w != 0.0 {
                 horizon = raise_horizon(horizon, surface, sample.xyz);
             }
         }
         occlusion += horizon.occlusion;
     }
-    return Estimate(1.0 - occlusion / f32(ao.count), surface.n);
+    return Estimate(1.0 - occlusion / f32(directions), surface.n);
 }

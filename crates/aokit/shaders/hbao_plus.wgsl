@@ -11,15 +11,17 @@
 
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     // Never more steps than pixels in the radius: they would sample the same texels.
-    let steps = max(1u, min(ao.steps, u32(surface.radius_px)));
+    let steps = max(1u, min(step_count(), u32(surface.radius_px)));
+    let directions = slice_count();
     let r2 = surface.radius * surface.radius;
     let bias = sin(ao.angle_bias);
     var occlusion = 0.0;
-    for (var d = 0u; d < ao.count; d++) {
-        let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(ao.count));
+    for (var d = 0u; d < directions; d++) {
+        let slice = make_slice(surface, (f32(d) + noise.x) * TWO_PI / f32(directions));
+        let march = begin_side(surface, slice, 1.0);
         for (var k = 0u; k < steps; k++) {
             let distance = step_distance(k, steps, noise.y, surface.radius_px);
-            let sample = side_sample(surface, slice, 1.0, distance);
+            let sample = slice_method_sample(surface, slice, march, distance);
             if sample.w == 0.0 {
                 continue;
             }
@@ -29,6 +31,6 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         }
     }
     // Average over the samples actually taken: a radius under `steps` pixels marches fewer.
-    let taken = f32(ao.count * steps);
+    let taken = f32(directions * steps);
     return Estimate(1.0 - occlusion / (taken * (1.0 - bias)), surface.n);
 }

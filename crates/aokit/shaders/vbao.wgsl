@@ -74,9 +74,11 @@ fn side_bits(s: Surface, slice: Slice, side: f32, jitter: f32, lo: f32) -> u32 {
     var previous_angle = slice.angle_n + side * HALF_PI;
     var previous_depth = s.depth;
     let measured = (ao.flags & FLAG_BACK_FACES) != 0u;
-    for (var step = 0u; step < ao.steps; step++) {
-        let distance_px = step_distance(step, ao.steps, jitter, s.radius_px);
-        let sample = side_sample(s, slice, side, distance_px);
+    let march = begin_side(s, slice, side);
+    let steps = step_count();
+    for (var step = 0u; step < steps; step++) {
+        let distance_px = step_distance(step, steps, jitter, s.radius_px);
+        let sample = slice_method_sample(s, slice, march, distance_px);
         if sample.w == 0.0 || dot(sample.xyz, sample.xyz) >= s.radius * s.radius {
             previous_depth = -1.0;
             continue;
@@ -116,8 +118,9 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     var visible = 0.0;
     var unoccluded = 0.0;
     var bent = vec3<f32>(0.0);
-    for (var i = 0u; i < ao.count; i++) {
-        let slice = make_slice(surface, (f32(i) + noise.x) * PI / f32(ao.count));
+    let slices = slice_count();
+    for (var i = 0u; i < slices; i++) {
+        let slice = make_slice(surface, (f32(i) + noise.x) * PI / f32(slices));
         let n = slice.angle_n;
         let lo = n - HALF_PI;
         let jitter = fract(noise.y + f32(i) * GOLDEN_FRACTION);

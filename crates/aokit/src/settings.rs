@@ -771,9 +771,11 @@ named_enum! {
 }
 
 named_enum! {
-    /// How `gtao` marches its slices. Both take the same samples and give the same AO to
-    /// rounding; they differ in cost. The lean march applies to the nearest read
-    /// ([`SampleDepth::Nearest`]); with [`SampleDepth::Interpolated`] the general one runs.
+    /// How the slice methods (`gtao`, `vbao`, `hbao`, `hbao-plus`: [`Method::marches_slices`])
+    /// march their slices. Both take the same samples and give the same AO to rounding; they
+    /// differ in cost. The lean march applies to the nearest read ([`SampleDepth::Nearest`]);
+    /// with [`SampleDepth::Interpolated`] the general one runs. The separable `hbao` marches
+    /// its own way.
     ///
     /// ```
     /// use aokit::{AoSettings, Method, Preset, SliceMarch};
@@ -788,8 +790,8 @@ named_enum! {
     pub enum SliceMarch ("slice march") {
         /// Each side of a slice set up once: the view ray through a sample is affine in its
         /// distance along the slice, so a sample costs one fetch through the clamping sampler
-        /// and a few multiply-adds, with the slice and step counts compiled in and validity
-        /// folded into a select instead of branches.
+        /// and a few multiply-adds, with validity a select instead of branches, and the slice
+        /// and step counts and the step power compiled in.
         #[default]
         Lean = "lean",
         /// Every sample placed from scratch (`side_sample` in common/slice.wgsl), with a
@@ -1343,7 +1345,8 @@ pub struct AoSettings {
     pub depth_mip_offset: f32,
     /// How the slice methods' samples read the depth where they land.
     pub sample_depth: SampleDepth,
-    /// How `gtao` marches its slices: lean or general, the same AO at different cost.
+    /// How the slice methods march their slices: lean or general, the same AO at different
+    /// cost.
     pub slice_march: SliceMarch,
 }
 

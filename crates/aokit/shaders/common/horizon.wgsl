@@ -15,7 +15,7 @@ struct Horizon {
 // Samples per direction: never more than pixels in the radius, which would sample the same
 // texels.
 fn horizon_steps(s: Surface) -> u32 {
-    return max(1u, min(ao.steps, u32(s.radius_px)));
+    return max(1u, min(step_count(), u32(s.radius_px)));
 }
 
 // The march along `slice` towards +omega before any sample. The projected normal lies at angle n

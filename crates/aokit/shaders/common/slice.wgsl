@@ -163,10 +163,18 @@ fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f3
 // the view ray through the point `d` pixels from the pixel is affine in d (its xy at depth 1 for
 // perspective, its xy for orthographic), and so is its dot product with the normal.
 override LEAN: bool = false;
-// With LEAN, the slices and the steps per side as the settings give them (`ao.count`,
-// `ao.steps`), so that the loops have literal trip counts the compiler can unroll.
+// With LEAN, the slices (or directions) and the steps per side as the settings give them
+// (`ao.count`, `ao.steps`), so that the loops have literal trip counts the compiler can unroll.
 override SLICES: u32 = 1u;
 override STEPS: u32 = 1u;
+
+fn slice_count() -> u32 {
+    return select(ao.count, SLICES, LEAN);
+}
+
+fn step_count() -> u32 {
+    return select(ao.steps, STEPS, LEAN);
+}
 // With LEAN, `ao.step_power` (step_fraction).
 override STEP_POWER: f32 = 1.0;
 
@@ -234,6 +242,15 @@ fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) 
     let valid = all(q >= vec2<f32>(0.0)) && all(q < view.size) && depth != NO_SURFACE
         && m.side * dot(offset, tangent) > 0.0;
     return vec4<f32>(offset, select(0.0, 1.0, valid));
+}
+
+// The sample of a step `distance_px` along a slice's side, as the settings' march places it:
+// march_sample on the side `march` set up, or side_sample. Either way it is the same sample.
+fn slice_method_sample(s: Surface, slice: Slice, march: SideMarch, distance_px: f32) -> vec4<f32> {
+    if LEAN {
+        return march_sample(s, march, slice.tangent, distance_px);
+    }
+    return side_sample(s, slice, march.side, distance_px);
 }
 
 // The bent-normal vector of the slices' unoccluded hemispheres, replaced by its expectation.

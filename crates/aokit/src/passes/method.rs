@@ -63,12 +63,12 @@ impl Variant {
             .method
             .marches_slices()
             .then_some(settings.sample_depth);
-        let lean = (settings.method == Method::Gtao
-            && settings.slice_march == SliceMarch::Lean
-            && settings.sample_depth == SampleDepth::Nearest)
+        let uniforms = AoUniforms::new(settings);
+        let lean = (sample_depth == Some(SampleDepth::Nearest)
+            && settings.slice_march == SliceMarch::Lean)
             .then_some(Lean {
-                slices: settings.gtao.slice_count,
-                steps: settings.gtao.steps_per_side,
+                slices: uniforms.count,
+                steps: uniforms.steps,
                 step_power: settings.step_power.to_bits(),
             });
         Self {
