@@ -4,8 +4,9 @@
 # reach, so how often they miss the texture cache), the split of the 18 samples into slices and
 # steps, the step spacing, the noise kind and the slice normalisation. One interleaved
 # `--compare` run per scene and size, each writing its JSON array to OUT/costs-SCENE-SIZE.json.
-# docs/performance.md's "What the kernel's time depends on" comes from these files. Meant for a
-# GPU: on a software adapter the per-pass times mean nothing (docs/bench.md).
+# docs/notes/performance-investigations.md's "What the kernel's time depends on" comes from
+# these files. Meant for a GPU: on a software adapter the per-pass times mean nothing
+# (docs/bench.md).
 #
 #   bash scripts/kernel-costs.sh [AOKIT] [OUT]
 #

@@ -47,7 +47,8 @@ override RADIUS: u32;
 // workgroup's block and `radius` more on each side: staged once in workgroup memory, each
 // texel is loaded once per workgroup instead of once per tap ((16 + 2 radius)^2 / 256 loads
 // per pixel against (2 radius + 1)^2). 16 rather than 8: on an H100 each pass took half the
-// time (docs/performance.md), the staging and its barrier being paid per workgroup.
+// time (docs/notes/performance-investigations.md), the staging and its barrier being paid per
+// workgroup.
 const GROUP: u32 = 16u;
 const TILE: u32 = GROUP + 2u * MAX_RADIUS;
 

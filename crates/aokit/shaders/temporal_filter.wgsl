@@ -36,7 +36,7 @@ const FLAG_FILTER_CURRENT: u32 = 4u;
 // The current AO and its depth come packed in one texture (ao_in's r and g), as the spatial
 // filter's vertical pass writes them, or in two (ao_in's r, linear_depth). Packed, the 3x3
 // neighbourhood takes 10 loads a pixel rather than 19, in a pass that runs at about its
-// texture-fetch floor on an H100 (docs/performance.md).
+// texture-fetch floor on an H100 (docs/notes/performance-investigations.md).
 override PACKED_INPUT: bool;
 
 @group(0) @binding(1) var<uniform> temporal: TemporalUniforms;
@@ -108,7 +108,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     // at a time: the same neighbourhood from four gathers per texture (when AO and depth came
     // in two textures always) took the pass from 0.21 to 0.15 of a GTAO `high` frame on
     // lavapipe, but from 0.061 to 0.107 ms at 1920x1080 on an H100, where the loads ran at 1.1
-    // to 1.2 times their texel-rate floor (docs/performance.md).
+    // to 1.2 times their texel-rate floor (docs/notes/performance-investigations.md).
     let last = vec2<i32>(view.size) - 1;
     var sum = 0.0;
     var sum_squares = 0.0;

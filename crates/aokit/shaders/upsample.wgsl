@@ -150,7 +150,8 @@ fn block_texels(block: vec2<u32>) -> Texels {
 // One invocation per pixel. One per block, fetching the block's texels once for all its
 // pixels, took a fifth off the pass on lavapipe but made it 1.6 (half resolution) to 3.5
 // (quarter, 3840x2160) times as long on an H100: a quarter or a sixteenth as many invocations
-// to hide the latency, and each one's stores SCALE pixels apart (docs/performance.md).
+// to hide the latency, and each one's stores SCALE pixels apart
+// (docs/notes/performance-investigations.md).
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if any(id.xy >= vec2<u32>(view.size)) {

@@ -640,8 +640,8 @@ impl ShaderSource {
     /// aokit's own programs ([`ALL`]) are compiled without wgpu's loop bounding: wgpu counts the
     /// iterations of every loop and leaves it after 2^64 in case it would never end (an endless
     /// loop is undefined behaviour to the drivers' compilers), and on an H100 that counter costs
-    /// the method kernels 6 to 9% of their time (docs/performance.md, "Loop bounding"). Every
-    /// other program, one's own included, keeps all of wgpu's checks.
+    /// the method kernels 6 to 9% of their time (docs/notes/performance-investigations.md, "Loop
+    /// bounding"). Every other program, one's own included, keeps all of wgpu's checks.
     pub fn create_module(&self, device: &wgpu::Device) -> wgpu::ShaderModule {
         let descriptor = wgpu::ShaderModuleDescriptor {
             label: Some(self.name),

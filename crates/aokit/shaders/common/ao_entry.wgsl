@@ -17,8 +17,9 @@ override NOISE_KIND: u32;
 override NOISE_TEMPORAL: u32;
 
 // 16x16 rather than 8x8: a workgroup's slices then fetch from a larger shared neighbourhood, so
-// more of their far samples hit the texture cache. Measured on an H100 (docs/performance.md):
-// GTAO `high` 8 to 17% faster, HBAO 2 to 12%; the other passes gained nothing from it.
+// more of their far samples hit the texture cache. Measured on an H100
+// (docs/notes/performance-investigations.md): GTAO `high` 8 to 17% faster, HBAO 2 to 12%; the
+// other passes gained nothing from it.
 @compute @workgroup_size(16, 16)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if any(id.xy >= vec2<u32>(view.size)) {

@@ -10,8 +10,8 @@ const CHAIN_COARSEST: u32 = 4u;
 // The loop runs CHAIN_COARSEST times and skips the levels above `level`, a trip count the
 // driver knows. Looping to `level` itself, which differs from tap to tap in SAO, took SAO
 // `high`'s kernel about twice as long on an H100 once wgpu's loop bounding was off
-// (docs/performance.md, "Loop bounding"). Level 0 returns before the loop: msvo's level-0
-// pass, which never enters it, then takes 0.84 to 0.86 of the time.
+// (docs/notes/performance-investigations.md, "Loop bounding"). Level 0 returns before the
+// loop: msvo's level-0 pass, which never enters it, then takes 0.84 to 0.86 of the time.
 fn subsample_source(t: vec2<u32>, level: u32) -> vec2<u32> {
     if level == 0u {
         return t;
