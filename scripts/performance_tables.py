@@ -1,14 +1,17 @@
 #!/usr/bin/env python3
-"""Prints docs/performance.md's GPU tables from the JSON that scripts/performance.sh writes.
+"""Prints docs/performance.md's GPU tables from the JSON that scripts/performance.sh and
+scripts/gpu-run.sh write.
 
     python3 scripts/performance_tables.py DIR
 
-DIR is performance.sh's output directory (target/performance by default there). Prints, in the
-page's markdown, the two "Every method and preset" tables (`room` and Sponza's atrium, from
-SCENE-SIZE-RESOLUTION.json), the "Each pass" table (from passes-sponza-atrium-SIZE.json), and
-one table for each set that performance.sh times on both views and sizes (variants, depth-mips,
-sample-depth: NAME-SCENE-SIZE.json, each row's ratio to the row it extends beside it): medians
-of the total and per-pass GPU time in milliseconds, to 3 decimals. Standard library only.
+DIR is either script's output directory. Prints, in the page's markdown, whichever of these
+DIR holds: the side-by-side tables of gpu-run.sh (aokit against XeGTAO per view and size,
+from side-by-side-SCENE-SIZE.json), the two "Every method and preset" tables (`room` and
+Sponza's atrium, from SCENE-SIZE-RESOLUTION.json), the "Each pass" table (from
+passes-sponza-atrium-SIZE.json), and one table for each set that performance.sh times on both
+views and sizes (variants, depth-mips, sample-depth: NAME-SCENE-SIZE.json, each row's ratio to
+the row it extends beside it): medians of the total and per-pass GPU time in milliseconds, to
+3 decimals. Standard library only.
 """
 import json
 import sys
@@ -128,15 +131,55 @@ def each_view_table(out, name):
     print()
 
 
+def short_label(configuration):
+    """A side-by-side configuration as the page names it: the peer's folder left out."""
+    words = configuration.split()
+    for i, word in enumerate(words):
+        if word == "--peer":
+            words[i + 1] = words[i + 1].split("=")[0]
+    return " ".join(words)
+
+
+def side_by_side_table(out):
+    """scripts/gpu-run.sh's side-by-side runs: each configuration's frame and passes, and its
+    ratio to XeGTAO through naga with the denoiser in the same state (on or off)."""
+    for scene, heading in SCENES:
+        for size in SIZES:
+            path = out / f"side-by-side-{scene}-{size}.json"
+            if not path.exists():
+                continue
+            runs = load(path)
+            peers = {}
+            for r in runs:
+                if r["settings"]["method"] == "xegtao-naga":
+                    peers.setdefault(r["settings"]["spatial"]["enabled"], r)
+            print(f"#### {heading}, {size}\n")
+            print("| configuration | frame ms | over XeGTAO | passes (ms) |")
+            print("|---|--:|--:|---|")
+            for r in runs:
+                total = r["total_gpu_ms"]["median"]
+                peer = peers.get(r["settings"]["spatial"]["enabled"])
+                ratio = f"{total / peer['total_gpu_ms']['median']:.2f}" if peer else ""
+                passes = ", ".join(f"`{p['name']}` {ms(p['gpu_ms']['median'])}"
+                                   for p in r["passes"])
+                label = f"`{short_label(r['configuration'])}`"
+                print(f"| {label} | {ms(total)} | {ratio} | {passes} |")
+            print()
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     out = Path(sys.argv[1])
-    method_tables(out)
-    pass_table(out)
-    print()
+    side_by_side_table(out)
+    if (out / f"room-{SIZES[0]}-full.json").exists():
+        method_tables(out)
+    if (out / f"passes-sponza-atrium-{SIZES[0]}.json").exists():
+        pass_table(out)
+        print()
     for name in ("variants", "depth-mips", "sample-depth"):
-        each_view_table(out, name)
+        if (out / f"{name}-room-{SIZES[0]}.json").exists():
+            each_view_table(out, name)
 
 
 if __name__ == "__main__":
