@@ -7,7 +7,7 @@ use std::collections::hash_map::Entry;
 use std::ffi::OsString;
 use std::time::Instant;
 
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Result, anyhow, bail};
 use aokit::{AdapterKind, AoInputs, AoPipeline, AoSettings, GpuContext, PassTime, Projection};
 use aokit_scene::gbuffer::GBuffer;
 use aokit_scene::{Renderer, Scene};
@@ -229,17 +229,18 @@ impl Basis {
 /// lavapipe about 0.1 ms a pass (it waits for the pass to finish), which would count against
 /// configurations with more passes.
 enum Engine {
+    // Pipelines and passes boxed: they dwarf the rest and differ in size.
     Aokit {
         settings: AoSettings,
-        pipeline: AoPipeline,
-        untimed: Option<AoPipeline>,
+        pipeline: Box<AoPipeline>,
+        untimed: Option<Box<AoPipeline>>,
     },
     Peer {
         spec: PeerSpec,
         settings: PeerSettings,
         shader: ShaderPath,
-        passes: XeGtao,
-        untimed: Option<XeGtao>,
+        passes: Box<XeGtao>,
+        untimed: Option<Box<XeGtao>>,
     },
 }
 
@@ -475,18 +476,19 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             );
         }
     }
-    let in_configuration = |i: usize, label: &str| {
+    // Errors of a --compare configuration say which.
+    let in_configuration = |i: usize, label: &str, error: anyhow::Error| {
         if args.compare.is_empty() {
-            String::from("bench")
+            error
         } else {
-            format!("--compare configuration {} (`{label}`)", i + 1)
+            error.context(format!("--compare configuration {} (`{label}`)", i + 1))
         }
     };
     let mut all_wanted = Vec::new();
     for (i, (label, config)) in configurations.iter().enumerate() {
         all_wanted.push(
             Wanted::of(config, scene.suggested_radius)
-                .with_context(|| in_configuration(i, label))?,
+                .map_err(|e| in_configuration(i, label, e))?,
         );
     }
 
@@ -499,7 +501,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     let renderer_settings = all_wanted
         .iter()
         .find_map(|w| match w {
-            Wanted::Aokit(settings) => Some(settings.clone()),
+            Wanted::Aokit(settings) => Some(*settings),
             Wanted::Peer(..) => None,
         })
         .unwrap_or_default();
@@ -542,11 +544,15 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     for (i, ((label, config), wanted)) in configurations.into_iter().zip(all_wanted).enumerate() {
         match wanted {
             Wanted::Aokit(settings) => {
-                let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings)?;
+                let mut pipeline = Box::new(AoPipeline::new(&gpu.device, &gpu.queue, &settings)?);
                 let has_timestamps = pipeline.enable_timing(&gpu.device, &gpu.queue);
                 timed &= has_timestamps;
                 let untimed = if software && has_timestamps {
-                    Some(AoPipeline::new(&gpu.device, &gpu.queue, &settings)?)
+                    Some(Box::new(AoPipeline::new(
+                        &gpu.device,
+                        &gpu.queue,
+                        &settings,
+                    )?))
                 } else {
                     None
                 };
@@ -558,13 +564,14 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 runs.push(run(label, config, engine));
             }
             Wanted::Peer(spec, settings) => {
-                let context = || in_configuration(i, &label);
-                let shaders = peer::Shaders::load(&spec, settings.quality).with_context(context)?;
+                let shaders = peer::Shaders::load(&spec, settings.quality)
+                    .map_err(|e| in_configuration(i, &label, e))?;
                 let paths = peer::shader_paths(&gpu, settings.shader);
                 for &shader in &paths {
                     let new = || {
                         XeGtao::new(&gpu.device, &shaders, shader, &settings, size)
-                            .with_context(context)
+                            .map(Box::new)
+                            .map_err(|e| in_configuration(i, &label, e))
                     };
                     let mut passes = new()?;
                     let has_timestamps = passes.enable_timing(&gpu.device, &gpu.queue);

@@ -9,6 +9,8 @@ mod constants;
 mod gpu;
 mod source;
 mod spirv;
+#[cfg(test)]
+mod tests;
 
 use std::path::PathBuf;
 use std::str::FromStr;
@@ -258,7 +260,7 @@ impl PeerSettings {
 }
 
 #[cfg(test)]
-mod tests {
+mod settings_tests {
     use super::*;
 
     fn sets(list: &[&str]) -> Vec<String> {

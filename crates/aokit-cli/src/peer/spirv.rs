@@ -16,7 +16,7 @@ const ANNOTATIONS: [u32; 8] = [71, 72, 73, 74, 75, 332, 5632, 5633];
 
 /// A SPIR-V module's words from its bytes, checked for the magic number.
 pub fn words(bytes: &[u8]) -> Result<Vec<u32>> {
-    if bytes.len() % 4 != 0 || bytes.len() < 4 * HEADER_WORDS {
+    if !bytes.len().is_multiple_of(4) || bytes.len() < 4 * HEADER_WORDS {
         bail!("not SPIR-V: {} bytes", bytes.len());
     }
     let words: Vec<u32> = bytes
