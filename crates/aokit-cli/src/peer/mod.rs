@@ -64,8 +64,9 @@ pub const FEATURES: wgpu::Features = wgpu::Features::PASSTHROUGH_SHADERS
     .union(wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES);
 
 /// The ways to the GPU to run: `chosen`, else naga and, where the device can on a hardware
-/// adapter, passthrough. lavapipe (Mesa 22.3) crashes running XeGTAO's denoiser passed
-/// through, and a crash loses a whole run: software adapters pass through only when asked.
+/// adapter, passthrough. lavapipe (Mesa 22.3) crashes in most runs of glslang's modules
+/// passed through (the stand-in's too), and a crash loses a whole run: software adapters pass
+/// through only when asked.
 pub fn shader_paths(gpu: &GpuContext, chosen: Option<ShaderPath>) -> Vec<ShaderPath> {
     let passthrough = gpu
         .device
@@ -80,8 +81,8 @@ pub fn shader_paths(gpu: &GpuContext, chosen: Option<ShaderPath>) -> Vec<ShaderP
             if passthrough {
                 eprintln!(
                     "note: XeGTAO runs through naga only on the software adapter; \
-                     --set peer.shader=passthrough asks for the other way (lavapipe 22.3 \
-                     crashes in its denoiser)"
+                     --set peer.shader=passthrough asks for the other way (which crashes \
+                     lavapipe 22.3 in most runs)"
                 );
             }
             vec![ShaderPath::Naga]
