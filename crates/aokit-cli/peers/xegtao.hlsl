@@ -14,8 +14,9 @@
 
 #include "XeGTAO.h"
 
-// One binding number per resource across all entry points, so that one table in Rust
-// (src/peer/gpu.rs, `binding`) describes every pass's layout.
+// Each entry point's bindings run from 0 without gaps (the table in Rust is src/peer/gpu.rs,
+// `binding`): wgpu's Vulkan backend numbers a layout's bindings by their rank, and SPIR-V
+// passed through to the driver keeps its own numbers, so the two must agree.
 [[vk::binding(0, 0)]] cbuffer AokitGtaoConstants
 {
     GTAOConstants g_consts;
@@ -33,19 +34,19 @@
 [[vk::binding(7, 0)]] [[spv::format_r16f]] RWTexture2D<lpfloat> g_depth_mip4;
 
 // Main pass: view depth and aokit's normals in, the AO term and the denoiser's edges out.
-[[vk::binding(8, 0)]] Texture2D<lpfloat> g_view_depth;
-[[vk::binding(9, 0)]] Texture2D<uint> g_normals;
-[[vk::binding(10, 0)]] [[spv::format_r8ui]] RWTexture2D<uint> g_ao_term_out;
-[[vk::binding(11, 0)]] [[spv::format_r8]] RWTexture2D<unorm float> g_edges_out;
+[[vk::binding(2, 0)]] Texture2D<lpfloat> g_view_depth;
+[[vk::binding(3, 0)]] Texture2D<uint> g_normals;
+[[vk::binding(4, 0)]] [[spv::format_r8ui]] RWTexture2D<uint> g_ao_term_out;
+[[vk::binding(5, 0)]] [[spv::format_r8]] RWTexture2D<unorm float> g_edges_out;
 
 // Denoiser: the AO term and edges in; a working term out, or the final term from the last pass.
 // The final term is R32Uint: the last pass scales by XE_GTAO_OCCLUSION_TERM_SCALE and stores
 // up to 1.5 * 255, which Direct3D clamps on the way into an 8-bit integer texel but Vulkan leaves
 // undefined; the harness clamps when it reads the value back.
-[[vk::binding(12, 0)]] Texture2D<uint> g_ao_term;
-[[vk::binding(13, 0)]] Texture2D<lpfloat> g_edges;
-[[vk::binding(14, 0)]] [[spv::format_r8ui]] RWTexture2D<uint> g_ao_term_pong;
-[[vk::binding(15, 0)]] [[spv::format_r32ui]] RWTexture2D<uint> g_ao_final;
+[[vk::binding(2, 0)]] Texture2D<uint> g_ao_term;
+[[vk::binding(3, 0)]] Texture2D<lpfloat> g_edges;
+[[vk::binding(4, 0)]] [[spv::format_r8ui]] RWTexture2D<uint> g_ao_term_pong;
+[[vk::binding(4, 0)]] [[spv::format_r32ui]] RWTexture2D<uint> g_ao_final;
 
 // aokit's G-buffer normal: octahedral, two 16-bit unorms in one uint, x in the low half (Meyer
 // et al. 2010, "On floating-point normal vectors"), in a right-handed view space looking down -z.

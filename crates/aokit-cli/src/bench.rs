@@ -566,7 +566,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             Wanted::Peer(spec, settings) => {
                 let shaders = peer::Shaders::load(&spec, settings.quality)
                     .map_err(|e| in_configuration(i, &label, e))?;
-                let paths = peer::shader_paths(&gpu, settings.shader);
+                let paths = peer::shader_paths(&gpu.device, settings.shader);
                 for &shader in &paths {
                     let new = || {
                         XeGtao::new(&gpu.device, &shaders, shader, &settings, size)

@@ -368,7 +368,7 @@ fn score_peer(
         }
         Ok(settings)
     };
-    let paths = peer::shader_paths(gpu, settings_at(args.presets[0])?.shader);
+    let paths = peer::shader_paths(&gpu.device, settings_at(args.presets[0])?.shader);
     let mut results = Vec::new();
     for &preset in &args.presets {
         let settings = settings_at(preset)?;

@@ -89,10 +89,19 @@ fn bench_times_the_peer_interleaved_with_aokit() {
         .collect();
     let json: Value = serde_json::from_str(&ok(&aokit(dir.path(), &args, &[]))).unwrap();
     let runs = json.as_array().unwrap();
-    // On a software adapter the peer runs through naga only; on hardware, passed through too.
+    // Through naga, and passed through where the adapter can.
     let peer_runs: Vec<&Value> = runs[1..runs.len() - 1].iter().collect();
     assert!(!peer_runs.is_empty() && peer_runs.len() <= 2, "{json}");
     assert_eq!(peer_runs[0]["settings"]["method"], "xegtao-naga");
+    if let Some(passthrough) = peer_runs.get(1) {
+        assert_eq!(passthrough["settings"]["method"], "xegtao-passthrough");
+        assert!(
+            passthrough["configuration"]
+                .as_str()
+                .unwrap()
+                .ends_with("[passthrough]")
+        );
+    }
     assert_eq!(peer_runs[0]["settings"]["quality"], "low");
     assert_eq!(peer_runs[0]["settings"]["slices"], 1);
     let last = runs.last().unwrap();

@@ -54,6 +54,15 @@ impl Entry {
         }
     }
 
+    /// The storage images the entry point only writes.
+    fn write_only(self) -> &'static [u32] {
+        match self {
+            Entry::Prefilter => binding::prefilter::WRITE_ONLY,
+            Entry::Main(_) => binding::main::WRITE_ONLY,
+            Entry::Denoise | Entry::DenoiseLast => binding::denoise::WRITE_ONLY,
+        }
+    }
+
     fn defines(self) -> Vec<String> {
         match self {
             Entry::Main(quality) => {
@@ -194,7 +203,7 @@ impl Prepared {
         let bytes = std::fs::read(&output_path)
             .with_context(|| format!("cannot read {}", output_path.display()))?;
         let mut words = spirv::words(&bytes)?;
-        spirv::mark_write_only(&mut words, &binding::WRITE_ONLY)?;
+        spirv::mark_write_only(&mut words, entry.write_only())?;
         Ok(words)
     }
 }

@@ -13,33 +13,34 @@ use super::constants::GtaoConstants;
 use super::source::Shaders;
 use super::{PeerSettings, ShaderPath};
 
-/// The wrapper's bindings (peers/xegtao.hlsl): one number per resource across its entry points.
+/// The wrapper's bindings (peers/xegtao.hlsl). Each pass's run from 0 without gaps: wgpu's
+/// Vulkan backend numbers a layout's bindings by their rank, and SPIR-V passed through keeps
+/// its own numbers. The `WRITE_ONLY` lists are the storage textures a pass only writes.
 pub mod binding {
     pub const CONSTANTS: u32 = 0;
     pub const SAMPLER: u32 = 1;
-    pub const RAW_DEPTH: u32 = 2;
-    pub const DEPTH_MIPS: [u32; 5] = [3, 4, 5, 6, 7];
-    pub const VIEW_DEPTH: u32 = 8;
-    pub const NORMALS: u32 = 9;
-    pub const AO_TERM_OUT: u32 = 10;
-    pub const EDGES_OUT: u32 = 11;
-    pub const AO_TERM: u32 = 12;
-    pub const EDGES: u32 = 13;
-    pub const AO_TERM_PONG: u32 = 14;
-    pub const AO_FINAL: u32 = 15;
-    /// The storage textures the passes only write. glslang declares HLSL's `RWTexture2D`
-    /// read-write; marked write-only, they bind as storage textures of any format.
-    pub const WRITE_ONLY: [u32; 9] = [
-        3,
-        4,
-        5,
-        6,
-        7,
-        AO_TERM_OUT,
-        EDGES_OUT,
-        AO_TERM_PONG,
-        AO_FINAL,
-    ];
+
+    pub mod prefilter {
+        pub const RAW_DEPTH: u32 = 2;
+        pub const DEPTH_MIPS: [u32; 5] = [3, 4, 5, 6, 7];
+        pub const WRITE_ONLY: &[u32] = &DEPTH_MIPS;
+    }
+
+    pub mod main {
+        pub const VIEW_DEPTH: u32 = 2;
+        pub const NORMALS: u32 = 3;
+        pub const AO_TERM: u32 = 4;
+        pub const EDGES: u32 = 5;
+        pub const WRITE_ONLY: &[u32] = &[AO_TERM, EDGES];
+    }
+
+    /// Both denoiser passes: the last one's output is the final term.
+    pub mod denoise {
+        pub const AO_TERM: u32 = 2;
+        pub const EDGES: u32 = 3;
+        pub const OUTPUT: u32 = 4;
+        pub const WRITE_ONLY: &[u32] = &[OUTPUT];
+    }
 }
 
 /// Working depth: view depth in half floats, with XeGTAO's five MIP levels.
@@ -83,12 +84,12 @@ fn prefilter_entries() -> Vec<wgpu::BindGroupLayoutEntry> {
         bind::sampler(binding::SAMPLER, wgpu::SamplerBindingType::NonFiltering),
         // The hardware depth buffer, its depth aspect read as floats.
         bind::texture(
-            binding::RAW_DEPTH,
+            binding::prefilter::RAW_DEPTH,
             wgpu::TextureSampleType::Float { filterable: false },
         ),
     ];
     entries.extend(
-        binding::DEPTH_MIPS
+        binding::prefilter::DEPTH_MIPS
             .iter()
             .map(|&b| bind::storage_texture(b, DEPTH_FORMAT)),
     );
@@ -100,25 +101,26 @@ fn main_entries() -> Vec<wgpu::BindGroupLayoutEntry> {
         bind::uniform(binding::CONSTANTS),
         bind::sampler(binding::SAMPLER, wgpu::SamplerBindingType::NonFiltering),
         bind::texture(
-            binding::VIEW_DEPTH,
+            binding::main::VIEW_DEPTH,
             wgpu::TextureSampleType::Float { filterable: true },
         ),
-        bind::texture(binding::NORMALS, wgpu::TextureSampleType::Uint),
-        bind::storage_texture(binding::AO_TERM_OUT, TERM_FORMAT),
-        bind::storage_texture(binding::EDGES_OUT, EDGES_FORMAT),
+        bind::texture(binding::main::NORMALS, wgpu::TextureSampleType::Uint),
+        bind::storage_texture(binding::main::AO_TERM, TERM_FORMAT),
+        bind::storage_texture(binding::main::EDGES, EDGES_FORMAT),
     ]
 }
 
-fn denoise_entries(output: u32, format: wgpu::TextureFormat) -> Vec<wgpu::BindGroupLayoutEntry> {
+/// The denoiser's layout, writing `format`.
+fn denoise_entries(format: wgpu::TextureFormat) -> Vec<wgpu::BindGroupLayoutEntry> {
     vec![
         bind::uniform(binding::CONSTANTS),
         bind::sampler(binding::SAMPLER, wgpu::SamplerBindingType::NonFiltering),
-        bind::texture(binding::AO_TERM, wgpu::TextureSampleType::Uint),
+        bind::texture(binding::denoise::AO_TERM, wgpu::TextureSampleType::Uint),
         bind::texture(
-            binding::EDGES,
+            binding::denoise::EDGES,
             wgpu::TextureSampleType::Float { filterable: true },
         ),
-        bind::storage_texture(output, format),
+        bind::storage_texture(binding::denoise::OUTPUT, format),
     ]
 }
 
@@ -236,7 +238,7 @@ impl XeGtao {
                 "denoise",
                 &shaders.denoise,
                 path,
-                &denoise_entries(binding::AO_TERM_PONG, TERM_FORMAT),
+                &denoise_entries(TERM_FORMAT),
             )?,
             denoise_last: pass(
                 device,
@@ -244,7 +246,7 @@ impl XeGtao {
                 "denoise_last",
                 &shaders.denoise_last,
                 path,
-                &denoise_entries(binding::AO_FINAL, FINAL_FORMAT),
+                &denoise_entries(FINAL_FORMAT),
             )?,
             constants: device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("xegtao constants"),
@@ -317,8 +319,13 @@ impl XeGtao {
         let mip_views: Vec<wgpu::TextureView> = (0..DEPTH_MIP_LEVELS)
             .map(|level| mip_view(&self.depth, level))
             .collect();
-        let mut inputs = vec![(binding::RAW_DEPTH, &depth_view)];
-        inputs.extend(binding::DEPTH_MIPS.iter().copied().zip(&mip_views));
+        let mut inputs = vec![(binding::prefilter::RAW_DEPTH, &depth_view)];
+        inputs.extend(
+            binding::prefilter::DEPTH_MIPS
+                .iter()
+                .copied()
+                .zip(&mip_views),
+        );
         let [w, h] = self.size;
         let prefilter = self.bind_group(device, &self.prefilter, &inputs);
         self.dispatch(
@@ -336,10 +343,10 @@ impl XeGtao {
             device,
             &self.main,
             &[
-                (binding::VIEW_DEPTH, &depth_all),
-                (binding::NORMALS, &normals),
-                (binding::AO_TERM_OUT, &terms[0]),
-                (binding::EDGES_OUT, &edges),
+                (binding::main::VIEW_DEPTH, &depth_all),
+                (binding::main::NORMALS, &normals),
+                (binding::main::AO_TERM, &terms[0]),
+                (binding::main::EDGES, &edges),
             ],
         );
         self.dispatch(encoder, Step::Main, &main, [w.div_ceil(8), h.div_ceil(8)]);
@@ -354,19 +361,23 @@ impl XeGtao {
                 (
                     &self.denoise_last,
                     Step::DenoiseLast,
-                    (binding::AO_FINAL, &output),
+                    (binding::denoise::OUTPUT, &output),
                 )
             } else {
                 (
                     &self.denoise,
                     Step::Denoise,
-                    (binding::AO_TERM_PONG, target),
+                    (binding::denoise::OUTPUT, target),
                 )
             };
             let group = self.bind_group(
                 device,
                 pass,
-                &[(binding::AO_TERM, source), (binding::EDGES, &edges), out],
+                &[
+                    (binding::denoise::AO_TERM, source),
+                    (binding::denoise::EDGES, &edges),
+                    out,
+                ],
             );
             self.dispatch(encoder, step, &group, [w.div_ceil(16), h.div_ceil(8)]);
         }

@@ -16,7 +16,7 @@ use std::path::PathBuf;
 use std::str::FromStr;
 
 use anyhow::{Result, anyhow, bail};
-use aokit::{AdapterKind, GpuContext, Preset};
+use aokit::Preset;
 use serde_json::{Value, json};
 
 pub use command::{PeerArgs, run};
@@ -63,30 +63,17 @@ impl FromStr for PeerSpec {
 pub const FEATURES: wgpu::Features = wgpu::Features::PASSTHROUGH_SHADERS
     .union(wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES);
 
-/// The ways to the GPU to run: `chosen`, else naga and, where the device can on a hardware
-/// adapter, passthrough. lavapipe (Mesa 22.3) crashes in most runs of glslang's modules
-/// passed through (the stand-in's too), and a crash loses a whole run: software adapters pass
-/// through only when asked.
-pub fn shader_paths(gpu: &GpuContext, chosen: Option<ShaderPath>) -> Vec<ShaderPath> {
-    let passthrough = gpu
-        .device
-        .features()
-        .contains(wgpu::Features::PASSTHROUGH_SHADERS);
+/// The ways to the GPU to run: `chosen`, else naga and, where the device can, passthrough.
+pub fn shader_paths(device: &wgpu::Device, chosen: Option<ShaderPath>) -> Vec<ShaderPath> {
     match chosen {
         Some(path) => vec![path],
-        None if passthrough && gpu.adapter_kind() == AdapterKind::Hardware => {
+        None if device
+            .features()
+            .contains(wgpu::Features::PASSTHROUGH_SHADERS) =>
+        {
             vec![ShaderPath::Naga, ShaderPath::Passthrough]
         }
-        None => {
-            if passthrough {
-                eprintln!(
-                    "note: XeGTAO runs through naga only on the software adapter; \
-                     --set peer.shader=passthrough asks for the other way (which crashes \
-                     lavapipe 22.3 in most runs)"
-                );
-            }
-            vec![ShaderPath::Naga]
-        }
+        None => vec![ShaderPath::Naga],
     }
 }
 

@@ -45,7 +45,7 @@ fn room(gpu: &GpuContext) -> (GBuffer, Projection) {
         .unwrap()
 }
 
-/// Runs one frame of `spec` with `denoise_passes`; the harness, for reading back.
+/// Runs one frame of `spec` with `denoise_passes` through naga; the harness, for reading back.
 fn run(
     gpu: &GpuContext,
     spec: &PeerSpec,
@@ -53,10 +53,28 @@ fn run(
     projection: &Projection,
     denoise_passes: u32,
 ) -> XeGtao {
+    run_by(
+        gpu,
+        spec,
+        gbuffer,
+        projection,
+        denoise_passes,
+        ShaderPath::Naga,
+    )
+}
+
+fn run_by(
+    gpu: &GpuContext,
+    spec: &PeerSpec,
+    gbuffer: &GBuffer,
+    projection: &Projection,
+    denoise_passes: u32,
+    path: ShaderPath,
+) -> XeGtao {
     let mut settings = PeerSettings::from_flags(Preset::High, 0.5, &[], true).unwrap();
     settings.denoise_passes = denoise_passes;
     let shaders = Shaders::load(spec, settings.quality).unwrap();
-    let mut passes = XeGtao::new(&gpu.device, &shaders, ShaderPath::Naga, &settings, SIZE).unwrap();
+    let mut passes = XeGtao::new(&gpu.device, &shaders, path, &settings, SIZE).unwrap();
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
     passes
         .encode(
@@ -173,4 +191,27 @@ fn normals_reach_the_main_pass_and_the_denoiser_output_is_read_back() {
         .read_visibility(&gpu.device, &gpu.queue)
         .unwrap();
     close(&one, &|i| final_value(box3(i)));
+}
+
+#[test]
+fn passed_through_the_modules_give_what_naga_gives() {
+    if !have_compiler() {
+        return;
+    }
+    let gpu = gpu();
+    if !gpu
+        .device
+        .features()
+        .contains(wgpu::Features::PASSTHROUGH_SHADERS)
+    {
+        eprintln!("skipping: the adapter cannot pass SPIR-V through");
+        return;
+    }
+    let (gbuffer, projection) = room(&gpu);
+    let read = |path| {
+        run_by(&gpu, &stand_in(), &gbuffer, &projection, 2, path)
+            .read_visibility(&gpu.device, &gpu.queue)
+            .unwrap()
+    };
+    assert_eq!(read(ShaderPath::Passthrough), read(ShaderPath::Naga));
 }
