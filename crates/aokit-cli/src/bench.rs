@@ -773,7 +773,11 @@ fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
             );
         }
     };
-    line("CPU encode (AoPipeline::encode)", Stats::of(&run.encode_ms));
+    let encode = match run.engine {
+        Engine::Aokit { .. } => "CPU encode (AoPipeline::encode)",
+        Engine::Peer { .. } => "CPU encode (the peer's passes)",
+    };
+    line(encode, Stats::of(&run.encode_ms));
     line("wall time (submit until idle)", Stats::of(&run.wall_ms));
 }
 

@@ -141,7 +141,8 @@ fn pass(
             source: wgpu::ShaderSource::SpirV(Cow::Borrowed(words)),
         }),
         // SAFETY: the SPIR-V is glslang's output for aokit's wrapper, whose bindings the
-        // layout below describes; the same module passes naga's validation on the naga path.
+        // layout below describes, numbered as wgpu's Vulkan backend numbers them (see
+        // `binding`); the same module passes naga's validation on the naga path.
         ShaderPath::Passthrough => unsafe {
             device.create_shader_module_passthrough(wgpu::ShaderModuleDescriptorPassthrough {
                 label: Some(name),

@@ -41,7 +41,8 @@ void XeGTAO_MainPass(const uint2 pixCoord, lpfloat sliceCount, lpfloat stepsPerS
     RWTexture2D<uint> outWorkingAOTerm, RWTexture2D<unorm float> outWorkingEdges)
 {
     float visibility = saturate(-viewspaceNormal.z);
-    outWorkingAOTerm[pixCoord] = uint(saturate(visibility / XE_GTAO_OCCLUSION_TERM_SCALE) * 255.0 + 0.5);
+    float term = saturate(visibility / XE_GTAO_OCCLUSION_TERM_SCALE);
+    outWorkingAOTerm[pixCoord] = uint(term * 255.0 + 0.5);
     outWorkingEdges[pixCoord] = 1.0;
 }
 
