@@ -41,7 +41,7 @@ impl FromStr for PeerSpec {
     fn from_str(text: &str) -> Result<Self, String> {
         let (name, dir) = text
             .split_once('=')
-            .ok_or_else(|| format!("`{text}` is not NAME=DIR (e.g. xegtao=~/src/XeGTAO)"))?;
+            .ok_or_else(|| format!("`{text}` is not NAME=DIR (e.g. xegtao=/path/to/XeGTAO)"))?;
         if !PEERS.contains(&name) {
             return Err(format!(
                 "unknown peer `{name}` (known: {})",
@@ -154,8 +154,8 @@ pub struct PeerSettings {
     pub quality: Quality,
     /// AO radius in world units: XeGTAO's effect radius.
     pub radius: f32,
-    /// Denoiser passes before the last one; XeGTAO always runs the last, which with none
-    /// before it and its blur turned off only scales the AO term into its output.
+    /// XeGTAO's `DenoisePasses`: 0 turns its denoiser off, yet one pass still runs, the
+    /// last, with the blur off, to scale the AO term into the output; N > 0 runs N passes.
     pub denoise_passes: u32,
     /// Only this way to the GPU; both where the adapter can pass SPIR-V through, else naga.
     pub shader: Option<ShaderPath>,
