@@ -30,6 +30,7 @@ enum PeerCommand {
     },
 }
 
+/// Runs `aokit peer` (its one subcommand, `compile`).
 pub fn run(args: &PeerArgs) -> Result<()> {
     let PeerCommand::Compile { spec, out } = &args.command;
     let Origin::Sources(sources) = locate(spec)? else {

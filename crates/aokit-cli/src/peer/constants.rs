@@ -24,7 +24,8 @@ const NO_DENOISE_BLUR_BETA: f32 = 1e4;
 /// `near / depth`, far above 1e-30) changes.
 const SKY_OFFSET: f32 = 1e-30;
 
-/// `GTAOConstants` of XeGTAO.h, field by field (96 bytes, no padding in std140).
+/// `GTAOConstants` of XeGTAO.h, field by field, each named as its field there in snake case
+/// (96 bytes, no padding in std140).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub struct GtaoConstants {

@@ -112,6 +112,7 @@ pub enum Quality {
 }
 
 impl Quality {
+    /// Every level, lowest first.
     pub const ALL: [Quality; 4] = [Quality::Low, Quality::Medium, Quality::High, Quality::Ultra];
 
     /// aokit's preset of the same name.
@@ -124,6 +125,7 @@ impl Quality {
         }
     }
 
+    /// Its name, as aokit's preset of the same level is named.
     pub fn name(self) -> &'static str {
         match self {
             Quality::Low => "low",
@@ -151,6 +153,7 @@ const MAX_DENOISE_PASSES: u32 = 8;
 /// `spatial.enabled` the denoiser.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PeerSettings {
+    /// XeGTAO's quality level, from the preset.
     pub quality: Quality,
     /// AO radius in world units: XeGTAO's effect radius.
     pub radius: f32,

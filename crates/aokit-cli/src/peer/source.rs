@@ -17,9 +17,11 @@ const CHECKOUT_SHADERS: &str = "Source/Rendering/Shaders";
 /// What `aokit peer compile` records beside the modules.
 #[derive(Serialize, Deserialize)]
 pub struct Manifest {
+    /// The peer's name, as `--peer` gives it.
     pub peer: String,
     /// [`wrapper_digest`] of the wrapper compiled: the modules fit its bindings only.
     pub wrapper: String,
+    /// The compiler's version line.
     pub compiler: String,
     /// The folder of XeGTAO.h and XeGTAO.hlsli compiled.
     pub sources: String,
@@ -79,9 +81,13 @@ pub fn locate(spec: &PeerSpec) -> Result<Origin> {
 
 /// The four modules one configuration runs.
 pub struct Shaders {
+    /// The depth prefilter.
     pub prefilter: Vec<u32>,
+    /// The main pass at the quality level.
     pub main: Vec<u32>,
+    /// A denoiser pass before the last.
     pub denoise: Vec<u32>,
+    /// The last denoiser pass, which writes the final term.
     pub denoise_last: Vec<u32>,
 }
 
