@@ -175,7 +175,7 @@ fn pass(
     });
     if let Some(error) = pollster::block_on(scope.pop()) {
         bail!(
-            "XeGTAO's {name} pass did not compile through {}: {error}",
+            "XeGTAO's {name} pass cannot run through {} on this device: {error}",
             path.name()
         );
     }
