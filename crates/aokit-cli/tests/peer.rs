@@ -131,6 +131,11 @@ fn bench_times_the_peer_interleaved_with_aokit() {
     let args: Vec<&str> = TINY.iter().copied().chain(["--peer", &plain]).collect();
     let table = ok(&aokit(dir.path(), &args, &[]));
     assert!(table.contains("xegtao-naga"), "{table}");
+
+    // XeGTAO's depth unpacking cannot express an orthographic projection.
+    let args: Vec<&str> = args.into_iter().chain(["--ortho-height", "5"]).collect();
+    let err = failure(&aokit(dir.path(), &args, &[]));
+    assert!(err.contains("orthographic"), "{err}");
 }
 
 #[test]
