@@ -7,7 +7,7 @@ use std::collections::hash_map::Entry;
 use std::ffi::OsString;
 use std::time::Instant;
 
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Result, anyhow, bail};
 use aokit::{AdapterKind, AoInputs, AoPipeline, AoSettings, GpuContext, PassTime, Projection};
 use aokit_scene::gbuffer::GBuffer;
 use aokit_scene::{Renderer, Scene};
@@ -16,7 +16,8 @@ use glam::Mat4;
 use serde_json::{Value, json};
 
 use crate::camera_args::CameraArgs;
-use crate::render::{open_gpu, parse_size};
+use crate::peer::{self, PeerSettings, PeerSpec, ShaderPath, XeGtao};
+use crate::render::{open_gpu, open_gpu_with, parse_size};
 use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug, Clone)]
@@ -31,6 +32,11 @@ pub struct BenchArgs {
     pub size: [u32; 2],
     #[command(flatten)]
     pub settings: SettingsArgs,
+    /// Run a peer instead of an aokit method, NAME=DIR: `xegtao=` a checkout of XeGTAO, or a
+    /// folder `aokit peer compile` wrote (docs/peers.md). --preset picks its quality level,
+    /// --set spatial.enabled=true its denoiser.
+    #[arg(long, value_name = "NAME=DIR", conflicts_with = "method")]
+    pub peer: Option<PeerSpec>,
     /// Timed frames; the statistics are over these.
     #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES))]
     pub frames: u32,
@@ -217,23 +223,92 @@ impl Basis {
     }
 }
 
-/// One configuration's pipeline and what its timed frames measured.
+/// What runs a configuration's frames: aokit's pipeline or a peer's passes. Where the ratios
+/// come from the wall time and the frames are timed, `untimed` is the same configuration
+/// without timestamps, whose frames give the encode and wall times: writing timestamps costs
+/// lavapipe about 0.1 ms a pass (it waits for the pass to finish), which would count against
+/// configurations with more passes.
+enum Engine {
+    // Pipelines and passes boxed: they dwarf the rest and differ in size.
+    Aokit {
+        settings: AoSettings,
+        pipeline: Box<AoPipeline>,
+        untimed: Option<Box<AoPipeline>>,
+    },
+    Peer {
+        spec: PeerSpec,
+        settings: PeerSettings,
+        shader: ShaderPath,
+        passes: Box<XeGtao>,
+        untimed: Option<Box<XeGtao>>,
+    },
+}
+
+impl Engine {
+    /// The method, or the peer and its way to the GPU.
+    fn method_name(&self) -> String {
+        match self {
+            Engine::Aokit { settings, .. } => settings.method.name().to_string(),
+            Engine::Peer { spec, shader, .. } => peer::method_name(spec, *shader),
+        }
+    }
+
+    fn settings_json(&self) -> Result<Value> {
+        Ok(match self {
+            // Through text, so that the f32 settings read as written (0.1, not 0.100000001).
+            Engine::Aokit { settings, .. } => {
+                serde_json::from_str::<Value>(&serde_json::to_string(settings)?)?
+            }
+            Engine::Peer {
+                spec,
+                settings,
+                shader,
+                ..
+            } => settings.json(spec, *shader),
+        })
+    }
+}
+
+/// One configuration's engine and what its timed frames measured.
 struct Run {
     label: String,
     args: BenchArgs,
-    settings: AoSettings,
-    pipeline: AoPipeline,
-    /// Where the ratios come from the wall time and `pipeline` is timed: the same
-    /// configuration without timestamps, whose frames give the encode and wall times. Writing
-    /// timestamps costs lavapipe about 0.1 ms a pass (it waits for the pass to finish), which
-    /// would count against configurations with more passes.
-    untimed: Option<AoPipeline>,
+    engine: Engine,
     /// Per timed frame: each pass's GPU time (with timestamps).
     pass_times: Vec<Vec<PassTime>>,
     /// Per timed frame: milliseconds in [`AoPipeline::encode`].
     encode_ms: Vec<f64>,
     /// Per timed frame: milliseconds from submit until the device was idle.
     wall_ms: Vec<f64>,
+}
+
+/// What a configuration asks for: an aokit method's settings, or a peer's.
+enum Wanted {
+    Aokit(AoSettings),
+    Peer(PeerSpec, PeerSettings),
+}
+
+impl Wanted {
+    /// `config`'s settings, `suggested_radius` the scene's.
+    fn of(config: &BenchArgs, suggested_radius: Option<f32>) -> Result<Self> {
+        let s = &config.settings;
+        let Some(spec) = &config.peer else {
+            return Ok(Wanted::Aokit(s.resolve(suggested_radius)?));
+        };
+        if s.overrides.settings.is_some() {
+            bail!("--settings has no counterpart in a peer: give its settings with --set");
+        }
+        let preset = match s.preset.as_deref() {
+            Some(name) => name.parse().map_err(|e: String| anyhow!(e))?,
+            None => aokit::Preset::default(),
+        };
+        let radius = s
+            .radius
+            .or(suggested_radius)
+            .unwrap_or(AoSettings::default().radius);
+        let settings = PeerSettings::from_flags(preset, radius, &s.overrides.set, true)?;
+        Ok(Wanted::Peer(spec.clone(), settings))
+    }
 }
 
 /// The G-buffer the configurations share (one per normal encoding they ask for).
@@ -253,16 +328,35 @@ impl Run {
         frame_index: u32,
         record: bool,
     ) -> Result<()> {
-        let gbuffer = &view.gbuffers[&self.settings.normals.encoding];
-        let (mut encode_ms, mut wall_ms) =
-            submit_frame(&mut self.pipeline, gpu, view, gbuffer, frame_index)?;
-        if let Some(untimed) = &mut self.untimed {
-            (encode_ms, wall_ms) = submit_frame(untimed, gpu, view, gbuffer, frame_index)?;
-        }
+        let ((encode_ms, wall_ms), times) = match &mut self.engine {
+            Engine::Aokit {
+                settings,
+                pipeline,
+                untimed,
+            } => {
+                let gbuffer = &view.gbuffers[&settings.normals.encoding];
+                let mut measured = submit_frame(pipeline, gpu, view, gbuffer, frame_index)?;
+                if let Some(untimed) = untimed {
+                    measured = submit_frame(untimed, gpu, view, gbuffer, frame_index)?;
+                }
+                (measured, pipeline.last_pass_times(&gpu.device))
+            }
+            Engine::Peer {
+                passes, untimed, ..
+            } => {
+                // XeGTAO reads aokit's default normals, oct32 (the wrapper decodes them).
+                let gbuffer = &view.gbuffers[&aokit::NormalEncoding::Oct32];
+                let mut measured = submit_peer_frame(passes, gpu, view, gbuffer)?;
+                if let Some(untimed) = untimed {
+                    measured = submit_peer_frame(untimed, gpu, view, gbuffer)?;
+                }
+                (measured, passes.last_pass_times(&gpu.device))
+            }
+        };
         if record {
             self.encode_ms.push(encode_ms);
             self.wall_ms.push(wall_ms);
-            if let Some(times) = self.pipeline.last_pass_times(&gpu.device) {
+            if let Some(times) = times {
                 self.pass_times.push(times?);
             }
         }
@@ -342,8 +436,7 @@ impl Run {
             "size": self.args.size,
             "frames": self.args.frames,
             "warmup": self.args.warmup,
-            // Through text, so that the f32 settings read as written (0.1, not 0.100000001).
-            "settings": serde_json::from_str::<Value>(&serde_json::to_string(&self.settings)?)?,
+            "settings": self.engine.settings_json()?,
             "total_gpu_ms": stats(self.total_gpu()),
             "passes": self.pass_stats().map_or(Value::Null, |passes| {
                 passes
@@ -369,6 +462,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         eprintln!("note: {}: {note}", scene.name);
     }
     let camera = first.camera.resolve(&scene)?;
+    let size = first.size;
     for (i, (label, config)) in configurations.iter().enumerate().skip(1) {
         let same_view = config.scene == first.scene
             && config.size == first.size
@@ -382,22 +476,43 @@ pub fn run(args: &BenchArgs) -> Result<()> {
             );
         }
     }
-    let mut all_settings = Vec::new();
-    for (i, (label, config)) in configurations.iter().enumerate() {
-        let settings = config.settings.resolve(scene.suggested_radius);
-        all_settings.push(if args.compare.is_empty() {
-            settings?
+    // Errors of a --compare configuration say which.
+    let in_configuration = |i: usize, label: &str, error: anyhow::Error| {
+        if args.compare.is_empty() {
+            error
         } else {
-            settings.with_context(|| format!("--compare configuration {} (`{label}`)", i + 1))?
-        });
+            error.context(format!("--compare configuration {} (`{label}`)", i + 1))
+        }
+    };
+    let mut all_wanted = Vec::new();
+    for (i, (label, config)) in configurations.iter().enumerate() {
+        all_wanted.push(
+            Wanted::of(config, scene.suggested_radius)
+                .map_err(|e| in_configuration(i, label, e))?,
+        );
     }
 
-    let gpu = open_gpu()?;
-    let mut renderer = Renderer::new(&gpu, &scene, &all_settings[0])?;
+    let has_peer = all_wanted.iter().any(|w| matches!(w, Wanted::Peer(..)));
+    let gpu = if has_peer {
+        open_gpu_with(peer::FEATURES)?
+    } else {
+        open_gpu()?
+    };
+    let renderer_settings = all_wanted
+        .iter()
+        .find_map(|w| match w {
+            Wanted::Aokit(settings) => Some(*settings),
+            Wanted::Peer(..) => None,
+        })
+        .unwrap_or_default();
+    let mut renderer = Renderer::new(&gpu, &scene, &renderer_settings)?;
     let mut gbuffers = HashMap::new();
     let mut projection = None;
-    for settings in &all_settings {
-        let encoding = settings.normals.encoding;
+    for wanted in &all_wanted {
+        let encoding = match wanted {
+            Wanted::Aokit(settings) => settings.normals.encoding,
+            Wanted::Peer(..) => aokit::NormalEncoding::Oct32,
+        };
         if let Entry::Vacant(slot) = gbuffers.entry(encoding) {
             let (gbuffer, p) = renderer.render_gbuffer(&gpu, &camera, first.size, encoding)?;
             slot.insert(gbuffer);
@@ -418,25 +533,71 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     let software = gpu.adapter_kind() == AdapterKind::Software;
     let mut runs = Vec::new();
     let mut timed = true;
-    for ((label, config), settings) in configurations.into_iter().zip(all_settings) {
-        let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings)?;
-        let has_timestamps = pipeline.enable_timing(&gpu.device, &gpu.queue);
-        timed &= has_timestamps;
-        let untimed = if software && has_timestamps {
-            Some(AoPipeline::new(&gpu.device, &gpu.queue, &settings)?)
-        } else {
-            None
-        };
-        runs.push(Run {
-            label,
-            args: config,
-            settings,
-            pipeline,
-            untimed,
-            pass_times: Vec::new(),
-            encode_ms: Vec::new(),
-            wall_ms: Vec::new(),
-        });
+    let run = |label: String, args: BenchArgs, engine: Engine| Run {
+        label,
+        args,
+        engine,
+        pass_times: Vec::new(),
+        encode_ms: Vec::new(),
+        wall_ms: Vec::new(),
+    };
+    for (i, ((label, config), wanted)) in configurations.into_iter().zip(all_wanted).enumerate() {
+        match wanted {
+            Wanted::Aokit(settings) => {
+                let mut pipeline = Box::new(AoPipeline::new(&gpu.device, &gpu.queue, &settings)?);
+                let has_timestamps = pipeline.enable_timing(&gpu.device, &gpu.queue);
+                timed &= has_timestamps;
+                let untimed = if software && has_timestamps {
+                    Some(Box::new(AoPipeline::new(
+                        &gpu.device,
+                        &gpu.queue,
+                        &settings,
+                    )?))
+                } else {
+                    None
+                };
+                let engine = Engine::Aokit {
+                    settings,
+                    pipeline,
+                    untimed,
+                };
+                runs.push(run(label, config, engine));
+            }
+            Wanted::Peer(spec, settings) => {
+                let shaders = peer::Shaders::load(&spec, settings.quality)
+                    .map_err(|e| in_configuration(i, &label, e))?;
+                let paths = peer::shader_paths(&gpu.device, settings.shader);
+                for &shader in &paths {
+                    let new = || {
+                        XeGtao::new(&gpu.device, &shaders, shader, &settings, size)
+                            .map(Box::new)
+                            .map_err(|e| in_configuration(i, &label, e))
+                    };
+                    let mut passes = new()?;
+                    let has_timestamps = passes.enable_timing(&gpu.device, &gpu.queue);
+                    timed &= has_timestamps;
+                    let untimed = if software && has_timestamps {
+                        Some(new()?)
+                    } else {
+                        None
+                    };
+                    // One configuration, two runs where both ways to the GPU are timed.
+                    let label = if paths.len() > 1 {
+                        format!("{label} [{}]", shader.name()).trim().to_string()
+                    } else {
+                        label.clone()
+                    };
+                    let engine = Engine::Peer {
+                        spec: spec.clone(),
+                        settings: settings.clone(),
+                        shader,
+                        passes,
+                        untimed,
+                    };
+                    runs.push(run(label, config.clone(), engine));
+                }
+            }
+        }
     }
     if !timed {
         eprintln!(
@@ -469,7 +630,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     }
 
     let camera_name = camera.name.as_str();
-    if args.compare.is_empty() {
+    if args.compare.is_empty() && runs.len() == 1 {
         let run = &runs[0];
         if args.json {
             println!(
@@ -495,6 +656,35 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Encodes, submits and waits for one frame of a peer's `passes` on `gbuffer`, as
+/// [`submit_frame`] does aokit's: the milliseconds in its encode and from submit until idle.
+fn submit_peer_frame(
+    passes: &mut XeGtao,
+    gpu: &GpuContext,
+    view: &View,
+    gbuffer: &GBuffer,
+) -> Result<(f64, f64)> {
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let mut encoder = device.create_command_encoder(&Default::default());
+    let start = Instant::now();
+    passes.encode(
+        device,
+        queue,
+        &mut encoder,
+        &gbuffer.depth,
+        &gbuffer.normals,
+        &view.projection,
+    )?;
+    let encode_ms = start.elapsed().as_secs_f64() * 1e3;
+    let commands = encoder.finish();
+    let start = Instant::now();
+    queue.submit([commands]);
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
+    Ok((encode_ms, start.elapsed().as_secs_f64() * 1e3))
 }
 
 /// Encodes, submits and waits for one frame of `pipeline` on `gbuffer`: the milliseconds in
@@ -547,7 +737,7 @@ fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
     println!(
         "adapter: {} | size: {w}x{h} | method: {} | preset: {}",
         gpu.describe(),
-        run.settings.method.name(),
+        run.engine.method_name(),
         run.preset_label()
     );
     println!(
@@ -583,7 +773,11 @@ fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
             );
         }
     };
-    line("CPU encode (AoPipeline::encode)", Stats::of(&run.encode_ms));
+    let encode = match run.engine {
+        Engine::Aokit { .. } => "CPU encode (AoPipeline::encode)",
+        Engine::Peer { .. } => "CPU encode (the peer's passes)",
+    };
+    line(encode, Stats::of(&run.encode_ms));
     line("wall time (submit until idle)", Stats::of(&run.wall_ms));
 }
 
@@ -627,7 +821,7 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
             } else {
                 &run.label
             },
-            run.settings.method.name(),
+            run.engine.method_name(),
             run.preset_label()
         );
     }

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow, bail};
 use aokit::projection::pixel_to_ndc;
-use aokit::{AoSettings, GpuContext, Method, NormalSpace, Preset, Projection};
+use aokit::{AoSettings, GpuContext, Method, NormalEncoding, NormalSpace, Preset, Projection};
 use aokit_eval::report::{MethodResult, Report, ViewResult};
 use aokit_eval::{
     Metrics, compare as score, depth_edge_mask, encode_png_grey, encode_png_rgb, error_map_rgb,
@@ -22,8 +22,9 @@ use crate::cache;
 use crate::camera_args::CameraArgs;
 use crate::export::create_dir;
 use crate::passes::{self, DepthKind, PassFiles};
+use crate::peer::{self, PeerSettings, PeerSpec, XeGtao};
 use crate::reference::ReferenceInfo;
-use crate::render::{open_gpu, parse_size};
+use crate::render::{open_gpu, open_gpu_with, parse_size};
 use crate::sequence::{SequenceFrame, score_sequence};
 use crate::settings_args::OverrideArgs;
 
@@ -75,6 +76,11 @@ pub struct CompareArgs {
     /// How the camera moves over --frames: still, orbit, dolly or strafe (as `aokit render`).
     #[arg(long, value_name = "PATH", default_value = "still")]
     pub path: CameraPath,
+    /// Also score a peer, NAME=DIR, at each of --presets: `xegtao=` a checkout of XeGTAO, or a
+    /// folder `aokit peer compile` wrote (docs/peers.md); --set spatial.enabled=true turns its
+    /// denoiser on, --set peer.denoise_passes=N sets its passes.
+    #[arg(long, value_name = "NAME=DIR")]
+    pub peer: Option<PeerSpec>,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-compare")]
     pub out: PathBuf,
@@ -120,9 +126,15 @@ fn settings_for(
     preset: Preset,
     radius: f32,
 ) -> Result<AoSettings> {
-    let settings = args
-        .overrides
-        .apply_to_preset(method, preset, Some(radius), None)?;
+    // `peer.*` keys are the peer's alone.
+    let overrides = OverrideArgs {
+        settings: args.overrides.settings.clone(),
+        set: (args.overrides.set.iter())
+            .filter(|s| !PeerSettings::is_peer_key(s))
+            .cloned()
+            .collect(),
+    };
+    let settings = overrides.apply_to_preset(method, preset, Some(radius), None)?;
     if settings.radius != radius {
         bail!("set the radius with --radius, so that the reference is traced with it too");
     }
@@ -165,11 +177,26 @@ fn grazing(reference: &ReferenceImage, projection: &Projection) -> Vec<bool> {
     grazing_mask(&normals, &to_eye, GRAZING_COS)
 }
 
+/// Which method is scored: its name, and its cost in samples per pixel.
+struct Scoring<'a> {
+    method: &'a str,
+    samples_per_pixel: u32,
+}
+
+impl<'a> Scoring<'a> {
+    fn of(settings: &'a AoSettings) -> Self {
+        Self {
+            method: settings.method.name(),
+            samples_per_pixel: settings.samples_per_pixel(),
+        }
+    }
+}
+
 fn score_method(
     reference: &ReferenceImage,
     grazing: &[bool],
     ao: &[f32],
-    settings: &AoSettings,
+    scoring: Scoring<'_>,
     preset: Preset,
     gpu_ms: Option<f64>,
 ) -> Result<MethodResult> {
@@ -181,17 +208,17 @@ fn score_method(
         EDGE_RADIUS,
     );
     if ao.iter().any(|v| !v.is_finite()) {
-        bail!("{} wrote non-finite AO values", settings.method.name());
+        bail!("{} wrote non-finite AO values", scoring.method);
     }
     Ok(MethodResult {
-        method: settings.method.name().to_string(),
+        method: scoring.method.to_string(),
         preset: preset.name().to_string(),
         all: score(reference.size, ao, &reference.ao, &surface),
         edges: score(reference.size, ao, &reference.ao, &edges),
         grazing: score(reference.size, ao, &reference.ao, grazing),
         sequence: None,
         gpu_ms,
-        samples_per_pixel: settings.samples_per_pixel(),
+        samples_per_pixel: scoring.samples_per_pixel,
         ao_png: encode_png_grey(reference.size, ao)?,
         error_png: encode_png_rgb(
             reference.size,
@@ -279,7 +306,7 @@ fn score_scene_view(
                 &references[last],
                 &grazing,
                 &frames[last],
-                &settings,
+                Scoring::of(&settings),
                 preset,
                 median(times),
             )?;
@@ -288,6 +315,15 @@ fn score_scene_view(
             }
             results.push(result);
         }
+    }
+    if let Some(spec) = &args.peer {
+        let view = PeerView {
+            camera: &cameras[last],
+            reference: &references[last],
+            grazing: &grazing,
+            radius,
+        };
+        results.extend(score_peer(gpu, args, spec, &mut renderer, &view)?);
     }
     let name = format!("{} / {}", scene.name, camera.name);
     Ok(Scored {
@@ -299,6 +335,84 @@ fn score_scene_view(
         reference: references.swap_remove(last),
         results,
     })
+}
+
+/// What the peer is scored on: one camera's G-buffer and reference.
+struct PeerView<'a> {
+    camera: &'a aokit_scene::Camera,
+    reference: &'a ReferenceImage,
+    grazing: &'a [bool],
+    radius: f32,
+}
+
+/// Scores the peer at each preset, on the G-buffer aokit's methods read, as they are scored.
+fn score_peer(
+    gpu: &GpuContext,
+    args: &CompareArgs,
+    spec: &PeerSpec,
+    renderer: &mut Renderer,
+    view: &PeerView<'_>,
+) -> Result<Vec<MethodResult>> {
+    if args.frames > 1 {
+        bail!(
+            "--peer scores one frame: XeGTAO runs without temporal accumulation here; drop \
+             --frames"
+        );
+    }
+    let (gbuffer, projection) =
+        renderer.render_gbuffer(gpu, view.camera, args.size, NormalEncoding::Oct32)?;
+    let settings_at = |preset| {
+        let settings = PeerSettings::from_flags(preset, view.radius, &args.overrides.set, false)?;
+        if settings.radius != view.radius {
+            bail!("set the radius with --radius, so that the reference is traced with it too");
+        }
+        Ok(settings)
+    };
+    let paths = peer::shader_paths(&gpu.device, settings_at(args.presets[0])?.shader);
+    let mut results = Vec::new();
+    for &preset in &args.presets {
+        let settings = settings_at(preset)?;
+        let shaders = peer::Shaders::load(spec, settings.quality)?;
+        for &shader in &paths {
+            let mut passes = XeGtao::new(&gpu.device, &shaders, shader, &settings, args.size)?;
+            let timed = passes.enable_timing(&gpu.device, &gpu.queue);
+            let frame = |passes: &mut XeGtao| -> Result<()> {
+                let mut encoder = gpu.device.create_command_encoder(&Default::default());
+                let (depth, normals) = (&gbuffer.depth, &gbuffer.normals);
+                passes.encode(
+                    &gpu.device,
+                    &gpu.queue,
+                    &mut encoder,
+                    depth,
+                    normals,
+                    &projection,
+                )?;
+                gpu.queue.submit([encoder.finish()]);
+                Ok(())
+            };
+            frame(&mut passes)?;
+            let ao = passes.read_visibility(&gpu.device, &gpu.queue)?;
+            let mut times = Vec::new();
+            for _ in 0..if timed { args.timing_frames } else { 0 } {
+                frame(&mut passes)?;
+                times.extend(frame_ms(passes.last_pass_times(&gpu.device))?);
+            }
+            let name = peer::method_name(spec, shader);
+            let scoring = Scoring {
+                method: &name,
+                samples_per_pixel: settings.samples_per_pixel(),
+            };
+            results.push(score_method(
+                view.reference,
+                view.grazing,
+                &ao,
+                scoring,
+                preset,
+                median(times),
+            )?);
+        }
+    }
+    Ok(results)
 }
 
 fn score_inputs(
@@ -344,6 +458,12 @@ fn score_inputs(
         normals: loaded.normals.clone().unwrap_or_default(),
     };
     let grazing = grazing(&reference, &loaded.projection);
+    if args.peer.is_some() {
+        bail!(
+            "--peer needs a scene view: XeGTAO reads the hardware depth buffer, which --inputs \
+             does not hold"
+        );
+    }
     let first = settings_for(args, methods[0], args.presets[0], radius)?;
     if args.frames > 1 {
         bail!("--frames needs a scene to move through; --inputs holds one frame");
@@ -365,7 +485,7 @@ fn score_inputs(
                 &reference,
                 &grazing,
                 &ao,
-                &settings,
+                Scoring::of(&settings),
                 preset,
                 median(times),
             )?);
@@ -446,7 +566,11 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         bail!("--timing-frames {} is more than 1000", args.timing_frames);
     }
     let cache_dir = args.cache.clone().unwrap_or_else(cache::default_dir);
-    let gpu = open_gpu()?;
+    let gpu = if args.peer.is_some() {
+        open_gpu_with(peer::FEATURES)?
+    } else {
+        open_gpu()?
+    };
     let mut scored = Vec::new();
     if let Some(dir) = &args.inputs {
         scored.push(score_inputs(&gpu, args, &methods, dir)?);

@@ -7,6 +7,7 @@ mod camera_args;
 mod compare;
 mod export;
 mod passes;
+mod peer;
 mod reference;
 mod render;
 mod sequence;
@@ -40,6 +41,9 @@ enum Command {
     /// Search each method's parameters at each preset's cost for the lowest error against the
     /// reference: the table the presets come from.
     Tune(tune::TuneArgs),
+    /// Prepare a peer (another AO implementation run beside aokit's by bench and compare
+    /// --peer): compile its shaders once for machines without its compiler.
+    Peer(peer::PeerArgs),
 }
 
 fn main() -> ExitCode {
@@ -51,6 +55,7 @@ fn main() -> ExitCode {
         Command::Compare(args) => compare::run(&args),
         Command::Bench(args) => bench::run(&args),
         Command::Tune(args) => tune::run(&args),
+        Command::Peer(args) => peer::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -132,7 +132,12 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
 
 /// Opens a headless device and says so when it is a software rasteriser.
 pub fn open_gpu() -> Result<GpuContext> {
-    let gpu = GpuContext::headless()?;
+    open_gpu_with(wgpu::Features::empty())
+}
+
+/// [`open_gpu`], also asking for those of `features` the adapter has.
+pub fn open_gpu_with(features: wgpu::Features) -> Result<GpuContext> {
+    let gpu = GpuContext::headless_with_features(features)?;
     if gpu.adapter_kind() == AdapterKind::Software {
         eprintln!(
             "note: no GPU found, rendering on the software adapter {} (slow)",

@@ -134,6 +134,24 @@ impl GpuContext {
     /// # Ok::<(), aokit::GpuError>(())
     /// ```
     pub async fn headless_async() -> Result<Self, GpuError> {
+        Self::headless_with_features_async(wgpu::Features::empty()).await
+    }
+
+    /// [`GpuContext::headless`], also asking for those of `wanted` the adapter has (aokit
+    /// itself needs none of them): a tool that runs other shaders beside aokit's, e.g.
+    /// SPIR-V with `PASSTHROUGH_SHADERS`, checks `device.features()` for what it got.
+    ///
+    /// ```no_run
+    /// let gpu = aokit::GpuContext::headless_with_features(wgpu::Features::PASSTHROUGH_SHADERS)?;
+    /// let passthrough = gpu.device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS);
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
+    pub fn headless_with_features(wanted: wgpu::Features) -> Result<Self, GpuError> {
+        pollster::block_on(Self::headless_with_features_async(wanted))
+    }
+
+    /// The async form of [`GpuContext::headless_with_features`].
+    pub async fn headless_with_features_async(wanted: wgpu::Features) -> Result<Self, GpuError> {
         let descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
         let backends = descriptor.backends;
         let instance = wgpu::Instance::new(descriptor);
@@ -162,7 +180,7 @@ impl GpuContext {
                 // format features where they give R16Float storage, which the fp16 depth MIP
                 // chain writes (not a storage format of WebGPU's core).
                 required_features: adapter.features()
-                    & (wgpu::Features::TIMESTAMP_QUERY | fp16_storage_feature(&adapter)),
+                    & (wgpu::Features::TIMESTAMP_QUERY | fp16_storage_feature(&adapter) | wanted),
                 required_limits: adapter.limits(),
                 ..Default::default()
             })

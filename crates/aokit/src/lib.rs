@@ -41,4 +41,4 @@ pub use settings::{
     SampleDepth, SettingsError, SliceMarch, SpatialKind, SpatialSettings, SsaoSettings,
     TemporalOffset, TemporalSettings, Ue4SsaoSettings, Upsample, VbaoSettings,
 };
-pub use timing::PassTime;
+pub use timing::{PassTime, PassTimer};

@@ -31,12 +31,13 @@ pub struct PassTime {
 
 /// A query set with two timestamps per pass, resolved once per frame. [`AoPipeline`]
 /// owns one once [`enable_timing`] succeeds and hands it to its passes; read the times with
-/// [`last_pass_times`] (see [`PassTime`]).
+/// [`last_pass_times`] (see [`PassTime`]). Public so that passes outside aokit (a tool's peer
+/// implementation, timed beside aokit's) are timed the same way.
 ///
 /// [`AoPipeline`]: crate::AoPipeline
 /// [`enable_timing`]: crate::AoPipeline::enable_timing
 /// [`last_pass_times`]: crate::AoPipeline::last_pass_times
-pub(crate) struct PassTimer {
+pub struct PassTimer {
     queries: wgpu::QuerySet,
     resolved: wgpu::Buffer,
     readback: wgpu::Buffer,
@@ -80,15 +81,12 @@ impl PassTimer {
     }
 
     /// Forgets the passes of the previous frame.
-    pub(crate) fn begin_frame(&mut self) {
+    pub fn begin_frame(&mut self) {
         self.names.clear();
     }
 
     /// Timestamp writes for the next pass, or `None` once the set is full.
-    pub(crate) fn pass(
-        &mut self,
-        name: &'static str,
-    ) -> Option<wgpu::ComputePassTimestampWrites<'_>> {
+    pub fn pass(&mut self, name: &'static str) -> Option<wgpu::ComputePassTimestampWrites<'_>> {
         let index = self.names.len() as u32;
         if index >= MAX_PASSES {
             return None;
@@ -102,7 +100,7 @@ impl PassTimer {
     }
 
     /// Records the copy of this frame's timestamps to the read-back buffer.
-    pub(crate) fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
+    pub fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
         let count = 2 * self.names.len() as u32;
         if count == 0 {
             return;
