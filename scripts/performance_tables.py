@@ -131,13 +131,22 @@ def each_view_table(out, name):
     print()
 
 
-def short_label(configuration):
-    """A side-by-side configuration as the page names it: the peer's folder left out."""
-    words = configuration.split()
+def short_label(run):
+    """A side-by-side configuration as the page names it: the peer's folder left out, and the
+    way its shaders went (`xegtao-naga`, `xegtao-passthrough`) in its place."""
+    words = run["configuration"].split()
     for i, word in enumerate(words):
         if word == "--peer":
-            words[i + 1] = words[i + 1].split("=")[0]
+            words[i + 1] = run["settings"]["method"]
     return " ".join(words)
+
+
+def denoised(run):
+    """Whether a run filters its AO: aokit's spatial filter, or the peer's denoiser."""
+    settings = run["settings"]
+    if "peer" in settings:
+        return settings["denoise_passes"] > 0
+    return settings["spatial"]["enabled"]
 
 
 def side_by_side_table(out):
@@ -152,17 +161,17 @@ def side_by_side_table(out):
             peers = {}
             for r in runs:
                 if r["settings"]["method"] == "xegtao-naga":
-                    peers.setdefault(r["settings"]["spatial"]["enabled"], r)
+                    peers.setdefault(denoised(r), r)
             print(f"#### {heading}, {size}\n")
             print("| configuration | frame ms | over XeGTAO | passes (ms) |")
             print("|---|--:|--:|---|")
             for r in runs:
                 total = r["total_gpu_ms"]["median"]
-                peer = peers.get(r["settings"]["spatial"]["enabled"])
+                peer = peers.get(denoised(r))
                 ratio = f"{total / peer['total_gpu_ms']['median']:.2f}" if peer else ""
                 passes = ", ".join(f"`{p['name']}` {ms(p['gpu_ms']['median'])}"
                                    for p in r["passes"])
-                label = f"`{short_label(r['configuration'])}`"
+                label = f"`{short_label(r)}`"
                 print(f"| {label} | {ms(total)} | {ratio} | {passes} |")
             print()
 

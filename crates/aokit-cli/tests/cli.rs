@@ -176,7 +176,7 @@ fn bad_arguments_exit_2_and_name_the_problem() {
         (&["render", "--set", "radius=0"], "radius"),
         (
             &["render", "--set", "spatial.kind=box"],
-            "`bilateral` or `guided`",
+            "`bilateral`, `guided`, `edges`",
         ),
         (
             &["render", "--set", "spatial.guided_epsilon=0"],

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The run to make first whenever a GPU is lent (docs/performance.md): aokit's GTAO `high`, old
+# and new kernel, raw and with each denoiser, against XeGTAO High with and without its denoiser
+# by naga and by passthrough SPIR-V, interleaved in one `aokit bench --compare` run per view and
+# size: `room` and Sponza's atrium at 1920x1080 and 3840x2160. Then, time left, the per-pass set
+# of scripts/performance.sh. Builds nothing: the GPU machine runs the release binary and the
+# peer's SPIR-V compiled beforehand on a machine without a GPU:
+#
+#   cargo build --release -p aokit-cli
+#   target/release/aokit peer compile xegtao=PATH/TO/XeGTAO --out target/peer/xegtao
+#   bash scripts/gpu-run.sh OUT [AOKIT] [PEER]
+#
+# AOKIT defaults to target/release/aokit, PEER to target/peer/xegtao (without it the XeGTAO
+# rows are left out). Every file goes to OUT: device.txt (adapter, driver, date),
+# side-by-side-SCENE-SIZE.json, passes-sponza-atrium-SIZE.json; then
+# `python3 scripts/performance_tables.py OUT` prints the tables. Takes about 3 minutes on an
+# H100.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:?usage: bash scripts/gpu-run.sh OUT [AOKIT] [PEER]}
+aokit=${2:-target/release/aokit}
+peer=${3:-target/peer/xegtao}
+# shellcheck source=bench-common.sh
+source scripts/bench-common.sh "$aokit" "$out"
+{
+    date -u +"date: %Y-%m-%d %H:%M UTC"
+    "$aokit" --version
+    if command -v nvidia-smi >/dev/null 2>&1; then
+        nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader
+    fi
+} >"$out/device.txt"
+gtao="--method gtao --preset high"
+configurations=(
+    "$gtao --set slice_march=general"
+    "$gtao"
+    "$gtao --set slice_march=general --set spatial.enabled=true"
+    "$gtao --set spatial.enabled=true"
+    "$gtao --set spatial.enabled=true --set spatial.kind=edges"
+    "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=0"
+)
+# Each peer configuration runs twice where the adapter takes SPIR-V passed through: through
+# naga and passed through (docs/peers.md).
+if [ -d "$peer" ]; then
+    configurations+=(
+        "--peer xegtao=$peer --preset high"
+        "--peer xegtao=$peer --preset high --set spatial.enabled=true"
+    )
+else
+    echo "gpu-run: no peer SPIR-V at $peer: timing aokit alone" >&2
+fi
+for scene in "${scenes[@]}"; do
+    set_view "$scene"
+    for size in "${sizes[@]}"; do
+        bench_json "side-by-side-$scene-$size" "${view[@]}" --size "$size" \
+            -- "${configurations[@]}"
+    done
+done
+passes=(
+    ""
+    "--set spatial.enabled=true"
+    "--set spatial.enabled=true --set spatial.kind=edges"
+    "--set temporal.enabled=true"
+    "--set spatial.enabled=true --set temporal.enabled=true"
+    "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true"
+    "--set bent_normals=true"
+)
+set_view sponza-atrium
+for size in "${sizes[@]}"; do
+    bench_json "passes-sponza-atrium-$size" "${view[@]}" --size "$size" --method gtao \
+        --preset high -- "${passes[@]}"
+done
