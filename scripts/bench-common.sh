@@ -5,7 +5,10 @@ aokit=${1:-target/release/aokit}
 out=${2:-target/performance}
 mkdir -p "$out"
 scenes=(room sponza-atrium)
-sizes=(1920x1080 3840x2160)
+# AOKIT_BENCH_SIZES and AOKIT_BENCH_FRAMES ("TIMED WARMUP") shrink a run to try a script out on a
+# software adapter before a GPU session spends its minutes on it.
+read -r -a sizes <<<"${AOKIT_BENCH_SIZES:-1920x1080 3840x2160}"
+read -r frames warmup <<<"${AOKIT_BENCH_FRAMES:-100 10}"
 
 # The `aokit bench` options that show scene name $1, in `view`.
 set_view() {
@@ -16,7 +19,8 @@ set_view() {
 }
 
 # bench_json NAME OPTION... -- CONFIGURATION...: one interleaved `--compare` run of the
-# configurations, 100 timed frames after 10, its JSON array to OUT/NAME.json.
+# configurations, 100 timed frames after 10 (AOKIT_BENCH_FRAMES), its JSON array to
+# OUT/NAME.json.
 bench_json() {
     local name=$1 options=()
     shift
@@ -25,7 +29,7 @@ bench_json() {
         shift
     done
     shift
-    "$aokit" bench "${options[@]}" --frames 100 --warmup 10 --json --compare "$@" \
+    "$aokit" bench "${options[@]}" --frames "$frames" --warmup "$warmup" --json --compare "$@" \
         >"$out/$name.json"
     echo "wrote $out/$name.json" >&2
 }

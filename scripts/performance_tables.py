@@ -138,7 +138,8 @@ def short_label(run):
     for i, word in enumerate(words):
         if word == "--peer":
             words[i + 1] = run["settings"]["method"]
-    return " ".join(words)
+    # bench marks a peer's run by its way to the GPU, which the method name now says.
+    return " ".join(w for w in words if not (w.startswith("[") and w.endswith("]")))
 
 
 def denoised(run):
@@ -153,10 +154,8 @@ def side_by_side_table(out):
     """scripts/gpu-run.sh's side-by-side runs: each configuration's frame and passes, and its
     ratio to XeGTAO through naga with the denoiser in the same state (on or off)."""
     for scene, heading in SCENES:
-        for size in SIZES:
-            path = out / f"side-by-side-{scene}-{size}.json"
-            if not path.exists():
-                continue
+        for path in sorted(out.glob(f"side-by-side-{scene}-*.json")):
+            size = path.stem.rsplit("-", 1)[1]
             runs = load(path)
             peers = {}
             for r in runs:
