@@ -659,36 +659,26 @@ pub fn run(args: &BenchArgs) -> Result<()> {
 }
 
 /// Encodes, submits and waits for one frame of a peer's `passes` on `gbuffer`, as
-/// [`submit_frame`] does aokit's: the milliseconds in its encode and from submit until idle.
+/// [`submit_frame`] does aokit's.
 fn submit_peer_frame(
     passes: &mut XeGtao,
     gpu: &GpuContext,
     view: &View,
     gbuffer: &GBuffer,
 ) -> Result<(f64, f64)> {
-    let (device, queue) = (&gpu.device, &gpu.queue);
-    let mut encoder = device.create_command_encoder(&Default::default());
-    let start = Instant::now();
-    passes.encode(
-        device,
-        queue,
-        &mut encoder,
-        &gbuffer.depth,
-        &gbuffer.normals,
-        &view.projection,
-    )?;
-    let encode_ms = start.elapsed().as_secs_f64() * 1e3;
-    let commands = encoder.finish();
-    let start = Instant::now();
-    queue.submit([commands]);
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
-    Ok((encode_ms, start.elapsed().as_secs_f64() * 1e3))
+    timed_frame(gpu, |encoder| {
+        passes.encode(
+            &gpu.device,
+            &gpu.queue,
+            encoder,
+            &gbuffer.depth,
+            &gbuffer.normals,
+            &view.projection,
+        )
+    })
 }
 
-/// Encodes, submits and waits for one frame of `pipeline` on `gbuffer`: the milliseconds in
-/// [`AoPipeline::encode`] and from submit until the device was idle.
+/// Encodes, submits and waits for one frame of `pipeline` on `gbuffer`.
 fn submit_frame(
     pipeline: &mut AoPipeline,
     gpu: &GpuContext,
@@ -696,27 +686,38 @@ fn submit_frame(
     gbuffer: &GBuffer,
     frame_index: u32,
 ) -> Result<(f64, f64)> {
-    let (device, queue) = (&gpu.device, &gpu.queue);
-    let mut encoder = device.create_command_encoder(&Default::default());
+    timed_frame(gpu, |encoder| {
+        pipeline.encode(
+            &gpu.device,
+            &gpu.queue,
+            encoder,
+            &AoInputs {
+                normals: Some(&gbuffer.normals),
+                view_from_world: view.view_from_world,
+                frame_index,
+                motion_vectors: Some(&gbuffer.motion),
+                back_depth: gbuffer.back_depth.as_ref(),
+                ..AoInputs::new(&gbuffer.depth, view.projection)
+            },
+        )?;
+        Ok(())
+    })
+}
+
+/// Records one frame with `encode` into a fresh encoder, submits it and waits until the
+/// device is idle: the milliseconds in `encode` and from submit until idle.
+fn timed_frame(
+    gpu: &GpuContext,
+    encode: impl FnOnce(&mut wgpu::CommandEncoder) -> Result<()>,
+) -> Result<(f64, f64)> {
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
     let start = Instant::now();
-    pipeline.encode(
-        device,
-        queue,
-        &mut encoder,
-        &AoInputs {
-            normals: Some(&gbuffer.normals),
-            view_from_world: view.view_from_world,
-            frame_index,
-            motion_vectors: Some(&gbuffer.motion),
-            back_depth: gbuffer.back_depth.as_ref(),
-            ..AoInputs::new(&gbuffer.depth, view.projection)
-        },
-    )?;
+    encode(&mut encoder)?;
     let encode_ms = start.elapsed().as_secs_f64() * 1e3;
     let commands = encoder.finish();
     let start = Instant::now();
-    queue.submit([commands]);
-    device
+    gpu.queue.submit([commands]);
+    gpu.device
         .poll(wgpu::PollType::wait_indefinitely())
         .map_err(|e| anyhow!("waiting for the GPU failed: {e}"))?;
     Ok((encode_ms, start.elapsed().as_secs_f64() * 1e3))
