@@ -851,6 +851,7 @@ impl AoPipeline {
             self.method.encode(
                 &mut ctx,
                 settings.method,
+                projection.is_orthographic(),
                 kernel_depth,
                 working_normals,
                 &targets.ao.1,

@@ -177,6 +177,9 @@ fn step_count() -> u32 {
 }
 // With LEAN, `ao.step_power` (step_fraction).
 override STEP_POWER: f32 = 1.0;
+// With LEAN, whether the view is orthographic (`view.orthographic`): each kernel then holds
+// the arithmetic of its projection only.
+override ORTHOGRAPHIC: bool = false;
 
 struct SideMarch {
     // Screen step per pixel of distance: side * omega.
@@ -192,23 +195,19 @@ struct SideMarch {
     // The ray's change per pixel of screen offset, times n.xy: moves the tangent plane's
     // crossing from the sample to the texel centre the depth was read at.
     pixel_n: vec2<f32>,
-    // 1 for orthographic, 0 for perspective, and its complement.
-    ortho: f32,
-    persp: f32,
 }
 
+// The lean march's set-up of one side (the general march takes only `side` from it).
 fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
     var m: SideMarch;
     m.dir = side * slice.omega;
     m.side = side;
-    m.ortho = view.orthographic;
-    m.persp = 1.0 - view.orthographic;
     // d(view xy at depth 1) / d(pixel), from view_position: y flips, pixel to uv to NDC.
     let pixel_to_ray = vec2<f32>(2.0, -2.0) * view.uv_per_pixel * view.ndc_to_view;
-    m.ray = s.p.xy / mix(s.depth, 1.0, m.ortho);
+    m.ray = select(s.p.xy / s.depth, s.p.xy, ORTHOGRAPHIC);
     m.ray_step = pixel_to_ray * m.dir;
-    m.along_n = m.persp * dot(m.ray, s.n.xy) - s.n.z;
-    m.along_n_step = m.persp * dot(m.ray_step, s.n.xy);
+    m.along_n = select(dot(m.ray, s.n.xy), 0.0, ORTHOGRAPHIC) - s.n.z;
+    m.along_n_step = select(dot(m.ray_step, s.n.xy), 0.0, ORTHOGRAPHIC);
     m.pixel_n = pixel_to_ray * s.n.xy;
     return m;
 }
@@ -235,10 +234,10 @@ fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) 
     // slice_sample's crossing: where the view ray through q meets the plane through the
     // texel's point parallel to the tangent plane.
     let along_n = m.along_n + m.along_n_step * distance_px;
-    let crossing = depth + dot(texel - q, m.pixel_n) * (m.persp * depth + m.ortho) / along_n;
+    let crossing = depth + dot(texel - q, m.pixel_n) * select(depth, 1.0, ORTHOGRAPHIC) / along_n;
     let d = clamp(select(depth, crossing, crossing > 0.0), depth * (1.0 / (1.0 + DEPTH_EDGE)),
                   2.0 * depth);
-    let offset = vec3<f32>(ray * (m.persp * d + m.ortho), -d) - s.p;
+    let offset = vec3<f32>(select(ray * d, ray, ORTHOGRAPHIC), -d) - s.p;
     let valid = all(q >= vec2<f32>(0.0)) && all(q < view.size) && depth != NO_SURFACE
         && m.side * dot(offset, tangent) > 0.0;
     return vec4<f32>(offset, select(0.0, 1.0, valid));

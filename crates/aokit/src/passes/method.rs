@@ -70,6 +70,7 @@ impl Variant {
                 slices: uniforms.count,
                 steps: uniforms.steps,
                 step_power: settings.step_power.to_bits(),
+                orthographic: false,
             });
         Self {
             depth_mips_read: DepthMipsRead::of(settings),
@@ -102,19 +103,22 @@ impl Variant {
                 ("SLICES", f64::from(lean.slices)),
                 ("STEPS", f64::from(lean.steps)),
                 ("STEP_POWER", f64::from(f32::from_bits(lean.step_power))),
+                ("ORTHOGRAPHIC", f64::from(u8::from(lean.orthographic))),
             ]);
         }
         constants
     }
 }
 
-/// The settings the lean slice march compiles in: slices, steps per side and the step power's
-/// bits (a float is no hash key).
+/// What the lean slice march compiles in: slices, steps per side, the step power's bits (a
+/// float is no hash key) and whether the projection is orthographic, which only the frame
+/// knows (`MethodPass::encode`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 struct Lean {
     slices: u32,
     steps: u32,
     step_power: u32,
+    orthographic: bool,
 }
 
 /// Runs the kernel of the current method.
@@ -220,18 +224,10 @@ impl MethodPass {
         // The separable HBAO passes and MSVO's passes run instead of the method's kernel
         // (`SeparableHbaoPass`, `MsvoPass`).
         if !settings.separable_hbao() && settings.method != Method::Msvo {
-            let variant = Variant::of(settings);
-            self.variant = variant;
-            self.kernels
-                .entry((settings.method, variant))
-                .or_insert_with(|| {
-                    ComputeKernel::with_constants(
-                        device,
-                        &shader::method(settings.method),
-                        &method_layout(settings.method),
-                        &variant.constants(),
-                    )
-                });
+            self.variant = Variant::of(settings);
+            // Perspective, the usual case, compiled now; an orthographic frame compiles its
+            // own the first time it comes.
+            self.kernel(device, settings.method, self.variant);
         }
         self.noise_tile = noise::tile(&settings.noise).map(|tile| {
             let key = (settings.noise.kind, tile.size);
@@ -247,7 +243,9 @@ impl MethodPass {
         );
     }
 
-    /// Records `method`'s kernel, which `set_settings` compiled, from `linear_depth`
+    /// Records `method`'s kernel (the method of the settings last given, whose kernel
+    /// `set_settings` compiled, or compiled here the first time a frame is `orthographic`)
+    /// from `linear_depth`
     /// (`R32Float`) and oct32 `normals` into `ao` ([`AO_FORMAT`]) and, when the settings turn
     /// [`AoSettings::bent_normals`] on for a method that has them, into `bent_normals`
     /// ([`BENT_NORMALS_FORMAT`]), which must then be given. With
@@ -255,15 +253,12 @@ impl MethodPass {
     /// (`DepthMipsPass::create_atlas`), which must then be given. With
     /// [`VbaoSettings::back_faces`](crate::VbaoSettings::back_faces) on, VBAO reads its
     /// occluders' thickness from `thickness` (`BackFacesPass`), which must then be given.
-    ///
-    /// # Panics
-    /// When no settings with `method` were given to [`MethodPass::new`] or
-    /// [`MethodPass::set_settings`].
     #[allow(clippy::too_many_arguments)]
     pub fn encode(
-        &self,
+        &mut self,
         ctx: &mut PassContext<'_>,
         method: Method,
+        orthographic: bool,
         linear_depth: &wgpu::TextureView,
         normals: &wgpu::TextureView,
         ao: &wgpu::TextureView,
@@ -276,8 +271,13 @@ impl MethodPass {
                 Some(_) => self.variant.depth_mips_read,
                 None => DepthMipsRead::Off,
             },
+            lean: self.variant.lean.map(|lean| Lean {
+                orthographic,
+                ..lean
+            }),
             ..self.variant
         };
+        self.kernel(ctx.device, method, variant);
         let kernel = &self.kernels[&(method, variant)];
         let mut resources = self
             .bindings(linear_depth, normals, ao, bent_normals, depth_mips)
@@ -288,6 +288,18 @@ impl MethodPass {
             ));
         }
         ctx.dispatch(kernel, &resources);
+    }
+
+    /// Compiles `method`'s kernel for `variant` unless it is already.
+    fn kernel(&mut self, device: &wgpu::Device, method: Method, variant: Variant) {
+        self.kernels.entry((method, variant)).or_insert_with(|| {
+            ComputeKernel::with_constants(
+                device,
+                &shader::method(method),
+                &method_layout(method),
+                &variant.constants(),
+            )
+        });
     }
 
     /// Bindings 1 to 8 of [`layout`] for the current settings, with `ao`, `bent_normals` and
