@@ -39,9 +39,10 @@ pub struct TuneArgs {
     /// Methods to tune, comma-separated, or `all`. `ssao-crytek`, `sao`, `ue4-ssao` and `msvo`
     /// are left out unless named: their presets keep their published forms, Crytek's 2007
     /// formulation, whose grey look is what the method is chosen for (the search would trade
-    /// it away: docs/tuning.md), the SAO paper's parameters, Unreal's as seed 002 gives them
-    /// and Unity's MSVO defaults (seed 003). `vbao` is tuned twice: as it is, and measuring
-    /// its occluders from the back faces (the presets of `AoSettings::preset_with_back_faces`).
+    /// it away: docs/tuning.md), the SAO paper's parameters, Unreal's as Unreal Engine 4's
+    /// PostProcessAmbientOcclusion.usf (Epic Games) gives them and Unity's MSVO defaults (Unity
+    /// Post-processing Stack v2). `vbao` is tuned twice: as it is, and measuring its occluders
+    /// from the back faces (the presets of `AoSettings::preset_with_back_faces`).
     #[arg(
         long,
         value_delimiter = ',',

@@ -144,8 +144,9 @@ fn the_presets_are_the_tuning_table() {
             (sao.power, sao.falloff, sao.radius_multiplier, sao.bias),
             (1.0, 0.0, 1.0, 0.01)
         );
-        // Seed 002's Unreal SSAO: its weight's linear fade over the radius, its flat-surface
-        // bias of 5 units at Unreal's default 200-unit radius, half the samples in pairs.
+        // Unreal Engine 4's SSAO (PostProcessAmbientOcclusion.usf, Epic Games): its weight's
+        // linear fade over the radius, its flat-surface bias of 5 units at Unreal's default
+        // 200-unit radius, half the samples in pairs.
         let ue4 = AoSettings::preset(Method::Ue4Ssao, preset);
         assert_eq!(
             (ue4.power, ue4.falloff, ue4.radius_multiplier, ue4.bias),
@@ -153,7 +154,8 @@ fn the_presets_are_the_tuning_table() {
         );
         let gtao = AoSettings::preset(Method::Gtao, preset);
         assert_eq!(ue4.samples_per_pixel(), gtao.samples_per_pixel());
-        // Unity's MSVO defaults (seed 003): thickness modifier 1, every level, no shaping.
+        // Unity's MSVO defaults (Post-processing Stack v2): thickness modifier 1, every level,
+        // no shaping.
         let msvo = AoSettings::preset(Method::Msvo, preset);
         assert_eq!(
             (msvo.power, msvo.falloff, msvo.radius_multiplier),

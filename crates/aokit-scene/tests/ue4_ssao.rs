@@ -1,7 +1,8 @@
-//! Unreal's legacy SSAO (`ue4-ssao`, seed 002): its furthest-depth MIP chain against a CPU
-//! mirror, both versions on an open plane, in a corner and on every built-in scene, and their
-//! error against the ray-traced reference, on whatever adapter exists (lavapipe in CI). The
-//! default version also runs in every method's checks in methods.rs.
+//! Unreal's legacy SSAO (`ue4-ssao`, after Unreal Engine 4's PostProcessAmbientOcclusion.usf, Epic
+//! Games): its furthest-depth MIP chain against a CPU mirror, both versions on an open plane, in a
+//! corner and on every built-in scene, and their error against the ray-traced reference, on
+//! whatever adapter exists (lavapipe in CI). The default version also runs in every method's checks
+//! in methods.rs.
 
 mod common;
 
@@ -140,7 +141,7 @@ fn both_versions_leave_an_open_plane_unoccluded_and_darken_room_corners() {
             version(use_normals)
         );
         // Weakly: at 160x96 the radius spans 8 pixels there, and the floor in front of the
-        // wall rises towards the eye by half a radius per pixel, so the seed's weight drops
+        // wall rises towards the eye by half a radius per pixel, so Unreal's weight drops
         // all but the nearest floor samples (docs/methods.md, "where it fails").
         assert!(
             open_floor > 0.99 && corner < open_floor - 0.05 && wall_foot < open_floor - 0.01,

@@ -8,7 +8,8 @@
 //   depths of real surfaces (an average across an edge would invent a surface between them),
 //   spread evenly rather than always from the same corner.
 // - FURTHEST (`ue4-ssao`): the largest linear depth of the 2x2 children, a hierarchical Z
-//   buffer like the one Unreal's SSAO reads (`GetHZBDepth`, seed 002). Each texel of level k
+//   buffer like the one Unreal's SSAO reads (`GetHZBDepth`, PostProcessAmbientOcclusion.usf,
+//   Epic Games). Each texel of level k
 //   then holds the furthest depth of its 2^k x 2^k block of level 0; ue4_ssao.wgsl says why
 //   furthest rather than nearest. NO_SURFACE is 0, below every surface, so a block with any
 //   surface keeps one.

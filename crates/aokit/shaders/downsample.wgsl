@@ -2,7 +2,8 @@
 // its SCALE x SCALE block, and that pixel's normal and motion, so that depth, normal and
 // motion describe one surface point. Which pixel:
 //
-//     point:         a fixed one, the top-left of the block's central 2x2 (seed 001's choice)
+//     point:         a fixed one, the top-left of the block's central 2x2 (the choice of
+//                    ybniaobu's Unity YPipeline)
 //     min / max:     the nearest / farthest surface; no surface counts as farthest of all
 //     checkerboard:  min where x + y of the working texel is even, max where it is odd
 //

@@ -1,5 +1,5 @@
 // Horizon-based AO (Bavoil and Sainz 2008, "Image-Space Horizon-Based Ambient Occlusion"), as
-// seed 000 builds it after NVIDIA's DirectX 11 sample: the depth buffer is a height field; along
+// NVIDIA's DirectX 11 SDK sample (SSAO11) builds it: the depth buffer is a height field; along
 // a few screen directions the horizon's elevation above the tangent plane says how much sky that
 // direction has lost.
 //

@@ -1,5 +1,5 @@
-// HBAO+'s estimator (NVIDIA HBAO+, as seed 000 quotes it): the same ray march as hbao, but every
-// sample occludes on its own by its elevation above the tangent plane, without tracking a
+// HBAO+'s estimator (NVIDIA ShadowWorks HBAO+, 2014, its ComputeAO): the same ray march as hbao,
+// but every sample occludes on its own by its elevation above the tangent plane, without tracking a
 // horizon:
 //
 //   AO = 1 - 1/(N M) sum over samples saturate(N.w - sin(angle_bias)) W(r) / (1 - sin(angle_bias))

@@ -2,11 +2,10 @@
 // screen directions, +x and -x in a pass over rows, then +y and -y in a pass over columns, each
 // reading its line of linear depth from workgroup memory instead of the depth texture. The
 // approach is NVIDIA's compute-shader HBAO in their DirectX 11 SDK sample (SSAO11; Bavoil 2011,
-// "Horizon-Based Ambient Occlusion using Compute Shaders"), which seed 000 describes: like a
-// separable blur, a workgroup loads its row (column) segment once and every pixel's samples along
-// that line read it from there. A program is this file plus one pass file (hbao_rows.wgsl or
-// hbao_columns.wgsl) that sets `AXIS` and defines `store_line` and `store_unsampled` over its own
-// textures.
+// "Horizon-Based Ambient Occlusion using Compute Shaders"): like a separable blur, a workgroup
+// loads its row (column) segment once and every pixel's samples along that line read it from there.
+// A program is this file plus one pass file (hbao_rows.wgsl or hbao_columns.wgsl) that sets `AXIS`
+// and defines `store_line` and `store_unsampled` over its own textures.
 //
 // Workgroups are LINE threads along x in both passes: workgroup (s, l) takes segment s of line l,
 // a row in the rows pass and a column in the columns pass, which is dispatched over the

@@ -1,8 +1,9 @@
 // Multi-scale volumetric obscurance, one merge (passes/msvo.rs): a level's own obscurance
 // (`finer`) times the merged obscurance of the level below it in resolution (`coarser`),
 // brought up by a bilateral upsample that trusts coarse texels by how close their depth is to
-// the texel's (MiniEngine's and Unity's blend of levels, seed 003). Written into `ao_out`,
-// whose size names the level; at level 0 the product is shaped and is the method's AO.
+// the texel's (the blend of levels of Microsoft's MiniEngine and Unity's Post-processing Stack v2).
+// Written into `ao_out`, whose size names the level; at level 0 the product is shaped and is the
+// method's AO.
 
 @group(0) @binding(9) var finer: texture_2d<f32>;
 @group(0) @binding(10) var coarser: texture_2d<f32>;

@@ -1,10 +1,11 @@
 // Multi-scale volumetric obscurance, one level (passes/msvo.rs): the approach of Microsoft
-// MiniEngine's SSAO and Unity PostProcessing's Multi-Scale Volumetric Obscurance (seed 003),
-// written for this project's conventions. `linear_depth` holds the depth MIP chain; `ao_out` is
-// the level's output, and the level is the chain level of its size. Each texel of the level
-// estimates the fraction of a sphere around its surface point that lies in front of the depth
-// buffer, from sample pairs mirrored about the texel on a fixed disc of whole texels; a sample
-// far in front of the sphere is taken for a thin occluder and rejected (`msvo.thickness`).
+// MiniEngine's SSAO (DirectX-Graphics-Samples) and Unity PostProcessing's Multi-Scale Volumetric
+// Obscurance (Post-processing Stack v2), written for this project's conventions. `linear_depth`
+// holds the depth MIP chain; `ao_out` is the level's output, and the level is the chain level of
+// its size. Each texel of the level estimates the fraction of a sphere around its surface point
+// that lies in front of the depth buffer, from sample pairs mirrored about the texel on a fixed
+// disc of whole texels; a sample far in front of the sphere is taken for a thin occluder and
+// rejected (`msvo.thickness`).
 
 // Radius of the sample disc in texels of the level (MiniEngine's and Unity's 5): level k's
 // disc covers 5 * 2^k working texels, so the levels together cover radii from 5 texels up.

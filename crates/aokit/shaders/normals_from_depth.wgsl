@@ -6,9 +6,10 @@
 // `NormalSource` codes) differ only in which side each axis takes:
 // - naive: the right and lower neighbours (the left and upper ones where those show no surface).
 //   Across a depth edge the tangent spans the gap and the normal tilts towards it.
-// - 3-tap: the neighbour whose depth differs less from the centre's (seed 001's "improved"
-//   reconstruction, after the Wicked Engine article it cites). Right at an edge the far side loses,
-//   but on a slanted plane either side may win and the pick is decided by noise.
+// - 3-tap: the neighbour whose depth differs less from the centre's (the "improved" reconstruction
+//   of Turanszki 2019, "Improved normal reconstruction from depth", Wicked Engine). Right at an
+//   edge the far side loses, but on a slanted plane either side may win and the pick is decided by
+//   noise.
 // - 5-tap: the side whose two depths continue the centre best, i.e. whose linear extrapolation to
 //   the centre misses least ("accurate" reconstruction, atyuwen 2021, "Accurate Normal
 //   Reconstruction from Depth Buffer"). The extrapolation runs on a value that is affine in screen

@@ -21,8 +21,9 @@ const UPSAMPLE_NEAREST_DEPTH: u32 = 2u;
 override SCALE: u32;
 
 // The pixel the point downsample takes for working texel `texel`: the top-left one of its
-// block's central 2x2 (seed 001's choice; the texel itself at a scale of 1), clamped to `last`,
-// the input's last pixel. The back-face pass measures thickness at the same pixel.
+// block's central 2x2 (the choice of ybniaobu's Unity YPipeline; the texel itself at a scale of 1),
+// clamped to `last`, the input's last pixel. The back-face pass measures thickness at the same
+// pixel.
 fn point_pixel(texel: vec2<u32>, last: vec2<u32>) -> vec2<u32> {
     return min(texel * SCALE + max(SCALE / 2u, 1u) - 1u, last);
 }

@@ -1,7 +1,7 @@
-// Normal-oriented hemisphere SSAO (seeds 001 and 003, after Chapman 2013): cosine-weighted points
-// in the hemisphere of the normal, each tested against the depth buffer. With directions drawn
-// with density cos(theta) / pi, the fraction of unoccluded points estimates the cosine-weighted
-// visibility directly.
+// Normal-oriented hemisphere SSAO (after Chapman 2013, "SSAO Tutorial", with the cosine-weighted
+// directions of ybniaobu's Unity YPipeline): cosine-weighted points in the hemisphere of the
+// normal, each tested against the depth buffer. With directions drawn with density cos(theta) / pi,
+// the fraction of unoccluded points estimates the cosine-weighted visibility directly.
 
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     // A per-pixel random rotation of the tangent frame about the normal.
@@ -17,8 +17,9 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         // implicit distance falloff.
         let xi = fract(halton_3(i + 1u) + noise.y);
         let offset = xi * xi * (local.x * tangent + local.y * bitangent + local.z * surface.n);
-        // Seed 003's weight: a sample that projects (almost) onto the pixel itself compares the
-        // surface with itself and says nothing.
+        // The weight of the SSAO shader of the UnityCrytekSponza-master2019 project
+        // (Graphic-researcher, GitHub): a sample that projects (almost) onto the pixel itself
+        // compares the surface with itself and says nothing.
         let weight = smoothstep(0.0, 0.2, length(offset.xy));
         total += weight;
         let sample = surface.p + surface.radius * offset;

@@ -1,7 +1,8 @@
-// Crytek's screen-space AO (Mittring 2007, "Finding Next Gen: CryEngine 2"), as seed 003 builds
-// it: points spread through a sphere around the shaded point, each tested against the depth
-// buffer. Normals are not used. Half of a sphere centred on a flat surface lies behind it, so a
-// flat wall reads about 0.5: the grey look of 2007, kept as it was.
+// Crytek's screen-space AO (Mittring 2007, "Finding Next Gen: CryEngine 2"), as the
+// UnityCrytekSponza-master2019 project (Graphic-researcher, GitHub) builds it: points spread
+// through a sphere around the shaded point, each tested against the depth buffer. Normals are not
+// used. Half of a sphere centred on a flat surface lies behind it, so a flat wall reads about 0.5:
+// the grey look of 2007, kept as it was.
 
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     // A per-pixel rotation of the kernel about the view axis.
@@ -9,7 +10,7 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     var occlusion = 0.0;
     for (var i = 0u; i < ao.count; i++) {
         // Uniform directions over the sphere, lengths from 0.1 to 1 of the radius with more
-        // samples near the centre (seed 003's quadratic kernel).
+        // samples near the centre (the quadratic kernel of Chapman 2013, "SSAO Tutorial").
         let u = sobol_2d(i);
         let z = 1.0 - 2.0 * u.x;
         let phi = TWO_PI * u.y;
@@ -27,9 +28,9 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
             continue;
         }
         // Range check: a surface far in front of the sample, an object in the foreground, is not
-        // inside the sphere and does not shadow the point. Seed 003 measures that distance from
-        // the shaded point's depth instead, which on a plane seen at a grazing angle rejects the
-        // plane's own far half and lightens it.
+        // inside the sphere and does not shadow the point. The UnityCrytekSponza-master2019 shader
+        // measures that distance from the shaded point's depth instead, which on a plane seen at a
+        // grazing angle rejects the plane's own far half and lightens it.
         let sample_depth = -sample.z;
         let blocked = occluder + ao.bias * surface.scale < sample_depth;
         occlusion += select(0.0, falloff_weight(surface, sample_depth - occluder), blocked);

@@ -1,13 +1,15 @@
-// Temporal filter (seed 001, "Temporal Filter" and "History Rejection"): each pixel blends its
-// AO with what the same surface showed last frame, found by reprojection, so the sampling noise,
-// which moves every frame, averages out over about 1 / (1 - blend) frames.
+// Temporal filter (after the SSAO temporal filter of ybniaobu's Unity YPipeline: variance clipping,
+// Salvi 2016, "An Excursion in Temporal Supersampling", and depth rejection, Bavoil and Andersson
+// 2012, "Stable SSAO in Battlefield 3 with Selective Temporal Filtering"): each pixel blends its AO
+// with what the same surface showed last frame, found by reprojection, so the sampling noise, which
+// moves every frame, averages out over about 1 / (1 - blend) frames.
 //
 // Per pixel: the mean and spread of the 3x3 neighbours on the same surface bound the history
 // (variance clipping); the pixel's view position goes back through the previous
 // camera (or the renderer's motion vectors) to where it was; the history there is read from the
 // 2x2 texels whose depth agrees with the expected one, clipped to mean +- gamma * spread, and
 // blended with the current value: the pixel's own, or with `filter_current` the 3x3 same-surface
-// mean (seed 001's filtered current value, which blurs contact shadows and measured worse, see
+// mean (YPipeline's filtered current value, which blurs contact shadows and measured worse, see
 // docs/denoise.md). History is rejected, and the current value used alone, off screen, where no
 // history texel lies on the same surface (a disocclusion), and after a camera cut.
 // Mirrors `TemporalUniforms` in uniforms.rs.

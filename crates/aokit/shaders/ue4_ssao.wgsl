@@ -1,15 +1,15 @@
-// Unreal Engine 4's legacy SSAO, as seed 002 ("UE4 SSAO") takes it apart: despite the name it
+// Unreal Engine 4's legacy SSAO (PostProcessAmbientOcclusion.usf, Epic Games): despite the name it
 // works like HBAO. Each of `ao.count` pairs takes two depth samples mirrored about the pixel
 // along one screen direction, and the pair occludes by how far the angle it spans at the pixel
 // closes below a straight line (`WedgeNoNormal`). Samples read a hierarchical depth buffer
 // (`GetHZBDepth`): binding `linear_depth` holds the furthest-depth MIP chain
 // (passes/depth_mips.rs), whose level 0 is the working depth every shared function reads.
 //
-// View space here is right-handed with the eye looking down -z (the seed's code is Unreal's
+// View space here is right-handed with the eye looking down -z (Unreal's code is
 // left-handed, +z forward); `depth` is linear depth, -z. For the pixel P and the sample
 // positions L and R, with dL = L - P and dR = R - P:
 //
-//   depth-only:  o = 1 - acos(dL.dR / (|dL| |dR|)) / pi          (the seed's NormAngle, 0..1)
+//   depth-only:  o = 1 - acos(dL.dR / (|dL| |dR|)) / pi          (Unreal's NormAngle, 0..1)
 //                o = 0 when (L.z - P.z) + (R.z - P.z) < bias      (flat-surface bias, "fix
 //                                                                  concave case")
 //   normal:      o = (asin(sat(n.dL / |dL|)) + asin(sat(n.dR / |dR|))) / pi
@@ -36,15 +36,14 @@ struct Sample {
     found: bool,
 }
 
-// The sample `offset` pixels from the pixel, read from the level its distance calls for. The
-// chain keeps the furthest depth of each block, which the seed's hierarchical Z (`GetHZBDepth`)
-// leaves open between furthest and nearest. Furthest, because a depth can only push the sample
-// away from the eye: on a plane the two samples of a pair then lie on or behind it at every
-// level (depth is convex along screen lines across a plane, so the furthest depth of a block is
-// at least the plane's depth at any pixel in it), and the flat-surface test and the tangent
-// plane keep planes unoccluded however coarse the level. The nearest depth would pull the
-// samples of a sloped floor up out of it and make it occlude itself; furthest loses thin
-// occluders at coarse levels instead.
+// The sample `offset` pixels from the pixel, read from the level its distance calls for. The chain
+// keeps the furthest depth of each block, which Unreal's hierarchical Z read (`GetHZBDepth`) itself
+// leaves open between furthest and nearest. Furthest, because a depth can only push the sample away
+// from the eye: on a plane the two samples of a pair then lie on or behind it at every level (depth
+// is convex along screen lines across a plane, so the furthest depth of a block is at least the
+// plane's depth at any pixel in it), and the flat-surface test and the tangent plane keep planes
+// unoccluded however coarse the level. The nearest depth would pull the samples of a sloped floor
+// up out of it and make it occlude itself; furthest loses thin occluders at coarse levels instead.
 fn pair_sample(s: Surface, offset: vec2<i32>, distance: f32, coarsest: i32) -> Sample {
     let tap = vec2<i32>(s.pixel) + offset;
     if any(tap < vec2<i32>(0)) || any(vec2<f32>(tap) >= view.size) {
@@ -58,17 +57,17 @@ fn pair_sample(s: Surface, offset: vec2<i32>, distance: f32, coarsest: i32) -> S
     // Levels as i32: naga's GLSL output checks a load against textureSize(image, level), which
     // takes no u32 (wgpu's GL backend).
     let depth = textureLoad(linear_depth, texel, i32(level)).r;
-    // Placed at the sample's own pixel, as the seed's ReconstructCSPos(AbsL, ScreenSpacePosL):
+    // Placed at the sample's own pixel, as Unreal's ReconstructCSPos(AbsL, ScreenSpacePosL):
     // the two samples stay mirrored about the pixel at every level.
     return Sample(view_position(vec2<f32>(tap) + 0.5, depth), depth != NO_SURFACE);
 }
 
-// The seed's distance weight: 1 for a sample level with or behind the pixel, fading linearly to 0
-// as it rises towards the eye by the radius, so that a foreground object far in front does not
-// draw a halo on what is behind it ("to avoid halos around objects"). The seed's fade distance
-// is its own AmbientOcclusionDistance; ours is the radius, so that one length bounds the effect
-// as for every method, and `falloff` shapes it as it does theirs (at the preset's 1 the ramp
-// runs over the whole radius, as the seed's does).
+// Unreal's distance weight: 1 for a sample level with or behind the pixel, fading linearly to 0 as
+// it rises towards the eye by the radius, so that a foreground object far in front does not draw a
+// halo on what is behind it ("to avoid halos around objects"). Unreal's fade distance is its own
+// AmbientOcclusionDistance; ours is the radius, so that one length bounds the effect as for every
+// method, and `falloff` shapes it as it does theirs (at the preset's 1 the ramp runs over the whole
+// radius, as Unreal's does).
 fn rise_weight(s: Surface, q: vec3<f32>) -> f32 {
     return falloff_weight(s, max(q.z - s.p.z, 0.0));
 }
@@ -82,13 +81,13 @@ fn elevation(s: Surface, d: vec3<f32>) -> f32 {
 fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
     let count = f32(ao.count);
     let normals = (ao.flags & FLAG_UE4_SSAO_NORMALS) != 0u;
-    // The seed's FlatSurfaceBias (5 units in Unreal), here the `bias` setting in world units,
+    // Unreal's FlatSurfaceBias (5 units), here the `bias` setting in world units,
     // scaled like the radius where the pixel clamps widened or narrowed it.
     let flat_bias = ao.bias * surface.scale;
     let coarsest = min(MAX_MIP_LEVEL, i32(textureNumLevels(linear_depth)) - 1);
     var occlusion = 0.0;
     for (var i = 0u; i < ao.count; i++) {
-        // The seed's samples lie on a ring of directions rotated per pixel by a random vector
+        // Unreal's samples lie on a ring of directions rotated per pixel by a random vector
         // (OcclusionSamplesOffsets, RandomNormalTexture), in "spiral order and distance", with
         // even steps. A pair covers its direction and the opposite one, so the directions split
         // the half circle evenly, and the distance grows with them in even steps: both jittered
@@ -103,11 +102,11 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         let dl = left.q - surface.p;
         let dr = right.q - surface.p;
         if normals {
-            // The seed leaves the normal version as "ToDo". Ours measures each side's angle from
-            // the tangent plane instead of from the other sample, the HBAO form the seed derives
-            // first (sin(S) - sin(T), with T in the tangent plane), kept as an angle so that a
-            // pair spanning a crease scores as in the depth-only version: a side rising to the
-            // normal closes a quarter turn, half the pair's half turn. A side without a sample
+            // Not a port of Unreal's normal version (WedgeWithNormal). Ours measures each side's
+            // angle from the tangent plane instead of from the other sample, the HBAO form (Bavoil
+            // and Sainz 2008: sin(S) - sin(T), with T in the tangent plane), kept as an angle so
+            // that a pair spanning a crease scores as in the depth-only version: a side rising to
+            // the normal closes a quarter turn, half the pair's half turn. A side without a sample
             // closes nothing.
             if left.found {
                 occlusion += rise_weight(surface, left.q) * elevation(surface, dl) / PI;
@@ -121,24 +120,24 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         if !(left.found && right.found) {
             continue;
         }
-        // Not 100% correct but simple, as the seed says: the angle alone cannot tell a crease
-        // (occluding) from a ridge (not), and a plane spans exactly a half turn only with
+        // Not 100% correct but simple, as Unreal's comment says: the angle alone cannot tell a
+        // crease (occluding) from a ridge (not), and a plane spans exactly a half turn only with
         // exact depths. The pair occludes only where its samples together rise towards the eye
         // by more than the bias above the pixel; on a plane their rises sum to at most 0
         // (depth is convex along the line between them), on a ridge they are negative.
         if (left.q.z - surface.p.z) + (right.q.z - surface.p.z) < flat_bias {
             continue;
         }
-        // The seed's NormAngle: the angle at the pixel between the two samples over pi, 1 for a
+        // Unreal's NormAngle: the angle at the pixel between the two samples over pi, 1 for a
         // straight line through the pixel, 0 for both samples in the same direction.
         let cosine = dot(dl, dr) * inverseSqrt(max(dot(dl, dl) * dot(dr, dr), 1e-30));
         let norm_angle = acos(clamp(cosine, -1.0, 1.0)) / PI;
-        // The seed multiplies the two samples' weights into the pair's.
+        // Unreal multiplies the two samples' weights into the pair's.
         let weight = rise_weight(surface, left.q) * rise_weight(surface, right.q);
         occlusion += weight * (1.0 - norm_angle);
     }
-    // The seed returns (occlusion / (weight + 0.001), weight) per pair to a caller it does not
-    // show; ours counts a faded pair as unoccluded, so that a halo fades out instead of the
+    // Unreal returns (occlusion / (weight + 0.001), weight) per pair to its caller; ours
+    // counts a faded pair as unoccluded, so that a halo fades out instead of the
     // remaining pairs' occlusion growing to fill it.
     return Estimate(saturate(1.0 - occlusion / count), surface.n);
 }

@@ -12,8 +12,8 @@ use std::sync::OnceLock;
 
 use crate::settings::{NoiseKind, NoiseSettings, TemporalOffset};
 
-/// The Mersenne Twister MT19937 (Matsumoto and Nishimura 1998), the generator seed 004 fills its
-/// 4x4 noise texture with.
+/// The Mersenne Twister MT19937 (Matsumoto and Nishimura 1998), the generator the Unity Asset
+/// Store package "Horizon Based Ambient Occlusion" fills its 4x4 noise texture with.
 ///
 /// ```
 /// let mut rng = aokit::noise::Mt19937::new(5489);
@@ -337,11 +337,11 @@ pub fn blue_noise(size: u32) -> &'static [[f32; 2]] {
 /// Seed of the white-noise tile: MT19937's reference seed, so `std::mt19937` reproduces it.
 const WHITE_SEED: u32 = 5489;
 
-/// Side of the white-noise tile: seed 004's 4x4 noise texture.
+/// Side of the white-noise tile: the 4x4 noise texture of the HBAO package for Unity.
 const WHITE_SIZE: u32 = 4;
 
-/// Seed 004's "Spatial Distribution" noise: a 4x4 tile of MT19937 values, texel by texel in row
-/// order, two per texel.
+/// The "Spatial Distribution" noise of the Unity Asset Store package "Horizon Based Ambient
+/// Occlusion": a 4x4 tile of MT19937 values, texel by texel in row order, two per texel.
 ///
 /// ```
 /// use aokit::noise::{Mt19937, white_noise};
@@ -524,15 +524,15 @@ pub fn ign_noise(pixel: [u32; 2], frame: u32) -> [f32; 2] {
     ]
 }
 
-/// GTAO's rotations over 6 frames (Jimenez et al. 2016, seed 000), in degrees.
+/// GTAO's rotations over 6 frames (Jimenez et al. 2016, SIGGRAPH 2016 course), in degrees.
 pub const GTAO_ROTATIONS: [f32; 6] = [60.0, 300.0, 180.0, 240.0, 120.0, 0.0];
-/// GTAO's step offsets, each held for 6 frames (Jimenez et al. 2016, seed 000).
+/// GTAO's step offsets, each held for 6 frames (Jimenez et al. 2016, SIGGRAPH 2016 course).
 pub const GTAO_OFFSETS: [f32; 4] = [0.0, 0.5, 0.25, 0.75];
 
-/// GTAO's noise (Jimenez et al. 2016, as seed 000 gives it): a 4x4 spatial pattern of the 16
-/// multiples of 1/16 for the rotation and `((y - x) & 3) / 4` for the step offset, turned by
-/// [`GTAO_ROTATIONS`] with the frame and offset by [`GTAO_OFFSETS`] every 6 frames, so the 24
-/// frames of a cycle see every combination once.
+/// GTAO's noise (Jimenez et al. 2016, as their SIGGRAPH 2016 course slides give it): a 4x4 spatial
+/// pattern of the 16 multiples of 1/16 for the rotation and `((y - x) & 3) / 4` for the step
+/// offset, turned by [`GTAO_ROTATIONS`] with the frame and offset by [`GTAO_OFFSETS`] every 6
+/// frames, so the 24 frames of a cycle see every combination once.
 ///
 /// ```
 /// use aokit::noise::gtao_noise;
@@ -569,9 +569,10 @@ pub fn bayer_index(pixel: [u32; 2]) -> u32 {
     4 * level(pixel[0], pixel[1]) + level(pixel[0] >> 1, pixel[1] >> 1)
 }
 
-/// Seed 004's "Dither": the Bayer index over 16, and its 4-bit reversal over 16 as the second
-/// value. Bit reversal is the radical inverse, so a tile's 16 pairs are the 16-point Hammersley
-/// set: every box of area 1/16 with power-of-two sides holds exactly one pair.
+/// The "Dither" noise of the Unity Asset Store package "Horizon Based Ambient Occlusion": the Bayer
+/// index over 16, and its 4-bit reversal over 16 as the second value. Bit reversal is the radical
+/// inverse, so a tile's 16 pairs are the 16-point Hammersley set: every box of area 1/16 with
+/// power-of-two sides holds exactly one pair.
 ///
 /// ```
 /// use aokit::noise::bayer_noise;

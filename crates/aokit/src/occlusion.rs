@@ -93,12 +93,11 @@ pub fn multi_bounce_gtao(visibility: f32, albedo: Vec3) -> Vec3 {
 /// ```
 ///
 /// The interreflection correction of *Real-Time Rendering*, 4th ed. (Akenine-Möller et al.
-/// 2018), chapter 11, as seed 001 (its section on interreflection, 相互反射) gives it. In a
-/// Lambertian scene under uniform light, the surfaces a point sees tend to have about its own
-/// radiance; taking the radiance of the occluded fraction `1 - k` of the hemisphere to be the
-/// point's outgoing radiance `albedo E / pi` gives `E = pi k L + albedo (1 - k) E`, whose
-/// solution is the sky's share `pi k L` times the geometric series of bounces
-/// `sum_n (albedo (1 - k))^n`.
+/// 2018), chapter 11, in its section on ambient occlusion. In a Lambertian scene under uniform
+/// light, the surfaces a point sees tend to have about its own radiance; taking the radiance of the
+/// occluded fraction `1 - k` of the hemisphere to be the point's outgoing radiance `albedo E / pi`
+/// gives `E = pi k L + albedo (1 - k) E`, whose solution is the sky's share `pi k L` times the
+/// geometric series of bounces `sum_n (albedo (1 - k))^n`.
 ///
 /// Unlike [`multi_bounce_gtao`] nothing is fitted, so it is exact where its assumption holds,
 /// and it grows quickly towards 1 as `albedo` nears 1: white surroundings lose nothing after

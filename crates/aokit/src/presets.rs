@@ -58,13 +58,14 @@ pub(crate) fn preset_values(method: Method, preset: Preset) -> Tuned {
         // its bias of 0.01 m at its 1 m radius, its own falloff inside the estimator (so none
         // of ours), power and radius as given.
         (Method::Sao, _) => tuned([samples(preset), 1], 1.0, 0.0, 0.01, 1.0, 1.0),
-        // Not tuned: Unreal's legacy SSAO as seed 002 gives it. Its weight fades linearly
-        // with how far a sample lies in front of the pixel, to 0 at the radius (falloff 1);
-        // its flat-surface bias is 5 units, 2.5% of Unreal's default 200-unit AO radius.
+        // Not tuned: Unreal's legacy SSAO as Unreal Engine 4's PostProcessAmbientOcclusion.usf
+        // (Epic Games) gives it. Its weight fades linearly with how far a sample lies in front of
+        // the pixel, to 0 at the radius (falloff 1); its flat-surface bias is 5 units, 2.5% of
+        // Unreal's default 200-unit AO radius.
         (Method::Ue4Ssao, _) => tuned([samples(preset) / 2, 1], 1.0, 1.0, 0.025, 1.0, 1.0),
-        // Not tuned: MSVO as Unity ships it (seed 003), every preset's samples at each level,
-        // Unity's default thickness modifier of 1 (the knob), no falloff of ours (the sphere's
-        // chords weight its samples), power and radius as given.
+        // Not tuned: MSVO as Unity ships it (Post-processing Stack v2), every preset's samples at
+        // each level, Unity's default thickness modifier of 1 (the knob), no falloff of ours (the
+        // sphere's chords weight its samples), power and radius as given.
         (Method::Msvo, _) => tuned([samples(preset), 1], 1.0, 0.0, 1.0, 1.0, 1.0),
         (Method::Ssao, Preset::Low) => tuned([4, 1], 1.0, 1.0, 0.005, 1.0, 1.2),
         (Method::Ssao, Preset::Medium) => tuned([8, 1], 1.0, 0.5, 0.005, 1.1, 1.1),

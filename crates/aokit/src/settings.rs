@@ -92,8 +92,9 @@ named_enum! {
         /// from a depth MIP level chosen by their distance, scored by the paper's obscurance
         /// estimator.
         Sao = "sao",
-        /// Unreal Engine 4's legacy SSAO (seed 002): sample pairs mirrored about the pixel,
-        /// occlusion from the angle between each pair, read from a furthest-depth MIP chain.
+        /// Unreal Engine 4's legacy SSAO (PostProcessAmbientOcclusion.usf, Epic Games): sample
+        /// pairs mirrored about the pixel, occlusion from the angle between each pair, read from a
+        /// furthest-depth MIP chain.
         Ue4Ssao = "ue4-ssao",
         /// Multi-scale volumetric obscurance (Microsoft MiniEngine's SSAO, Unity
         /// PostProcessing's MSVO): the fraction of a sphere in front of the depth buffer,
@@ -205,7 +206,7 @@ named_enum! {
         #[default]
         Oct32 = "oct32",
         /// Octahedral, 12 bits per coordinate packed in the RGB of an `Rgba8Unorm` texel (the
-        /// packing seed 001 describes).
+        /// packing of Unity's `PackFloat2To888`, Scriptable Render Pipeline Core library).
         Oct24 = "oct24",
         /// Octahedral, 8 bits per coordinate in an `Rg8Unorm` texel.
         Oct16 = "oct16",
@@ -245,8 +246,8 @@ named_enum! {
         Buffer = "buffer",
         /// From depth: the cross product of the right and lower neighbours' offsets.
         DepthNaive = "depth-naive",
-        /// From depth: per axis, the neighbour with the smaller depth difference (seed 001's
-        /// improved method).
+        /// From depth: per axis, the neighbour with the smaller depth difference (the improved
+        /// method of Turánszki 2019, "Improved normal reconstruction from depth", Wicked Engine).
         Depth3tap = "depth-3tap",
         /// From depth: per axis, the side whose two samples extrapolate the centre best (the
         /// accurate method).
@@ -325,10 +326,11 @@ named_enum! {
         Blue = "blue",
         /// GTAO's 4x4 spatial pattern with the paper's 6 rotations and 4 offsets over frames.
         Gtao = "gtao",
-        /// A 4x4 Bayer dither matrix (seed 004's Dither).
+        /// A 4x4 Bayer dither matrix (the Dither noise of the Unity Asset Store package "Horizon
+        /// Based Ambient Occlusion").
         Bayer = "bayer",
-        /// White noise from a Mersenne Twister in a 4x4 texture (seed 004's Spatial
-        /// Distribution).
+        /// White noise from a Mersenne Twister in a 4x4 texture (the Spatial Distribution noise
+        /// of the Unity Asset Store package "Horizon Based Ambient Occlusion").
         White = "white",
         /// The pixel's index along a Hilbert curve driving the R2 sequence.
         HilbertR2 = "hilbert-r2",
@@ -526,9 +528,9 @@ pub struct TemporalSettings {
     /// and is not used (a disocclusion).
     pub depth_threshold: f32,
     /// Blend the mean of the pixel's 3x3 same-surface neighbours instead of its own value
-    /// (seed 001's depth-aware filtered current value): less noise where the history is
-    /// rejected, but a blur of contact shadows everywhere, and more error on a still camera
-    /// (docs/denoise.md).
+    /// (the depth-aware filtered current value of ybniaobu's Unity YPipeline, its SSAO temporal
+    /// filter): less noise where the history is rejected, but a blur of contact shadows everywhere,
+    /// and more error on a still camera (docs/denoise.md).
     pub filter_current: bool,
 }
 
@@ -623,11 +625,11 @@ named_enum! {
     /// # Ok::<(), String>(())
     /// ```
     pub enum Downsample ("downsample") {
-        /// A fixed pixel: the top-left one of the block's central 2x2 (seed 001's choice). The
-        /// default: one load per texel and no lean towards either side of an edge. `max` and
-        /// `checkerboard` score lower on average (docs/denoise.md), but `max` by dropping thin
-        /// objects whose AO the kernels get wrong, and `checkerboard` at the cost of a pattern
-        /// and more flicker.
+        /// A fixed pixel: the top-left one of the block's central 2x2 (the choice of ybniaobu's
+        /// Unity YPipeline). The default: one load per texel and no lean towards either side of an
+        /// edge. `max` and `checkerboard` score lower on average (docs/denoise.md), but `max` by
+        /// dropping thin objects whose AO the kernels get wrong, and `checkerboard` at the cost of
+        /// a pattern and more flicker.
         #[default]
         Point = "point",
         /// The nearest surface (smallest linear depth).
@@ -635,10 +637,10 @@ named_enum! {
         /// The farthest surface (largest linear depth; a pixel without a surface counts as
         /// farthest of all).
         Max = "max",
-        /// `min` and `max` alternating in a checkerboard of working texels (Mixed Resolution
-        /// Rendering in Skylanders, as seed 001 describes), so that both sides of an edge are
-        /// kept somewhere. The kernels then see a surface that zigzags between neighbouring
-        /// texels, and HBAO shows the pattern.
+        /// `min` and `max` alternating in a checkerboard of working texels (Hennessy, "Mixed
+        /// Resolution Rendering in Skylanders: SuperChargers", GDC 2016), so that both sides of an
+        /// edge are kept somewhere. The kernels then see a surface that zigzags between
+        /// neighbouring texels, and HBAO shows the pattern.
         Checkerboard = "checkerboard",
     }
 }
@@ -661,8 +663,8 @@ named_enum! {
     /// ```
     pub enum Upsample ("upsample") {
         /// The texels on the pixel's surface (relative depth difference below
-        /// `upsample_threshold`), equally weighted (seed 001's final choice): the lowest error
-        /// without filters, blocky once they have removed the noise.
+        /// `upsample_threshold`), equally weighted (the final choice of ybniaobu's Unity
+        /// YPipeline): the lowest error without filters, blocky once they have removed the noise.
         Bilateral = "bilateral",
         /// The texels on the pixel's surface, bilinearly weighted (Mixed Resolution Rendering's
         /// bilateral upsample with a threshold for its depth weight). The default: the lowest
@@ -891,7 +893,7 @@ impl SsaoSettings {
 }
 
 /// Sampling of `ue4-ssao`: how many mirrored sample pairs, and which of Unreal's two versions
-/// scores them (seed 002).
+/// scores them (Unreal Engine 4's PostProcessAmbientOcclusion.usf, Epic Games).
 ///
 /// ```
 /// use aokit::{AoSettings, Method, Preset};
@@ -1052,8 +1054,8 @@ named_enum! {
         /// sample read from the depth texture.
         #[default]
         PerPixel = "per-pixel",
-        /// Two passes after NVIDIA's compute-shader HBAO (their DirectX 11 SDK sample, seed
-        /// 000): the +x and -x horizons of every pixel from its row of depth in workgroup
+        /// Two passes after NVIDIA's compute-shader HBAO (their DirectX 11 SDK sample SSAO11,
+        /// Bavoil 2011): the +x and -x horizons of every pixel from its row of depth in workgroup
         /// memory, then +y and -y from its column. The four directions are fixed, not rotated
         /// (the noise jitters the steps only), and the screen radius stops at
         /// [`SEPARABLE_HBAO_MAX_RADIUS_PX`] working texels.
@@ -1270,7 +1272,8 @@ pub struct AoSettings {
     pub power: f32,
     /// Largest screen radius in pixels of the input, whatever the working resolution: near the
     /// camera the world radius covers much of the screen, where samples spread thin and leave
-    /// the cache (seed 004's Max Radius Pixels). The separable HBAO variant may stop it sooner
+    /// the cache (Max Radius Pixels of the Unity Asset Store package "Horizon Based Ambient
+    /// Occlusion"). The separable HBAO variant may stop it sooner
     /// ([`AoSettings::effective_max_radius_px`]).
     pub max_radius_px: f32,
     /// Smallest screen radius in pixels of the input: where the world radius covers fewer
@@ -1292,10 +1295,11 @@ pub struct AoSettings {
     /// 1 spaces them evenly; 2 (XeGTAO's choice) crowds them near the pixel. Each method's
     /// preset sets the spacing it measured best with.
     pub step_power: f32,
-    /// View depth beyond which there is no AO (seed 004's Max Distance); 0: no limit.
+    /// View depth beyond which there is no AO (Max Distance of the Unity Asset Store package
+    /// "Horizon Based Ambient Occlusion"); 0: no limit.
     pub max_distance: f32,
-    /// World distance before `max_distance` over which AO fades out (seed 004's Distance
-    /// Falloff); 0 stops it hard.
+    /// World distance before `max_distance` over which AO fades out (Distance Falloff of the
+    /// same package); 0 stops it hard.
     pub distance_falloff: f32,
     /// Also output bent normals (the mean unoccluded direction), for GTSO specular occlusion and
     /// bent-normal lighting. Only the slice-based methods, `gtao` and `vbao`, compute them.
@@ -1449,8 +1453,9 @@ impl AoSettings {
             resolution: Resolution::Full,
             downsample: Downsample::default(),
             upsample: Upsample::default(),
-            // Seed 001's 5%: wider than a plane's depth changes between neighbouring texels
-            // unless seen near grazing, narrower than most gaps between objects.
+            // The 5% of ybniaobu's Unity YPipeline: wider than a plane's depth changes between
+            // neighbouring texels unless seen near grazing, narrower than most gaps between
+            // objects.
             upsample_threshold: 0.05,
             filter_resolution: FilterResolution::default(),
             depth_mips: DepthMips::Off,

@@ -6,7 +6,8 @@
 // conversion on the way into the texture is exact and the CPU mirror can reproduce the bits
 // (half floats are left to the texture's rounding, which the mirror takes as to nearest).
 // Normal textures are read with textureLoad, never filtered: a filtered texel mixes the encodings
-// of different surfaces, which decodes to a direction none of them has (seed 001).
+// of different surfaces, which decodes to a direction none of them has (ybniaobu 2025,
+// "Screen-space ambient occlusion (1): SSAO", a blog post in Chinese, section "Normal Encoding").
 
 // Encoding codes, `NormalEncoding::shader_code` in Rust (a test compares the two).
 const ENCODING_OCT32: u32 = 0u;

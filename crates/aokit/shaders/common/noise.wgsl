@@ -42,9 +42,10 @@ fn ign_noise(pixel: vec2<u32>, frame: u32) -> vec2<f32> {
     return vec2<f32>(interleaved_gradient_noise(p), interleaved_gradient_noise(p.yx));
 }
 
-// GTAO's noise (Jimenez et al. 2016, as seed 000 gives it): the 16 sixteenths in a 4x4 pattern
-// for the rotation, ((y - x) & 3) / 4 for the step offset, turned by 6 rotations frame by frame
-// and offset by 4 offsets every 6 frames, so a 24-frame cycle sees every combination once.
+// GTAO's noise (Jimenez et al. 2016, as their SIGGRAPH 2016 course slides give it): the 16
+// sixteenths in a 4x4 pattern for the rotation, ((y - x) & 3) / 4 for the step offset, turned by 6
+// rotations frame by frame and offset by 4 offsets every 6 frames, so a 24-frame cycle sees every
+// combination once.
 fn gtao_noise(pixel: vec2<u32>, frame: u32) -> vec2<f32> {
     var rotations = array<f32, 6>(60.0, 300.0, 180.0, 240.0, 120.0, 0.0);
     var offsets = array<f32, 4>(0.0, 0.5, 0.25, 0.75);
@@ -58,9 +59,10 @@ fn gtao_noise(pixel: vec2<u32>, frame: u32) -> vec2<f32> {
     ));
 }
 
-// Seed 004's Dither: the 4x4 Bayer index (Bayer 1973; the 2x2 matrix [[0, 2], [3, 1]] of the
-// low coordinate bits times 4, plus that of the next bits) over 16, and its bit reversal over
-// 16: the radical inverse, so the tile's 16 pairs are the 16-point Hammersley set.
+// The Dither noise of the Unity Asset Store package "Horizon Based Ambient Occlusion": the 4x4
+// Bayer index (Bayer 1973; the 2x2 matrix [[0, 2], [3, 1]] of the low coordinate bits times 4, plus
+// that of the next bits) over 16, and its bit reversal over 16: the radical inverse, so the tile's
+// 16 pairs are the 16-point Hammersley set.
 fn bayer_noise(pixel: vec2<u32>) -> vec2<f32> {
     let low = (((pixel.x ^ pixel.y) & 1u) << 1u) | (pixel.y & 1u);
     let high = ((((pixel.x ^ pixel.y) >> 1u) & 1u) << 1u) | ((pixel.y >> 1u) & 1u);

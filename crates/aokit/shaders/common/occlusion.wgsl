@@ -20,12 +20,12 @@ fn multi_bounce_gtao(visibility: f32, albedo: vec3<f32>) -> vec3<f32> {
     return min(max(vec3<f32>(x), ((a * x + b) * x + c) * x), vec3<f32>(1.0));
 }
 
-// Multi-bounce AO in closed form (seed 001, after Real-Time Rendering 4th ed., ch. 11): occluded
-// directions are taken to show surfaces of the same albedo and outgoing radiance as the shaded
-// point, which sums the bounces as a geometric series, k / (1 - albedo (1 - k)). Per colour
-// channel, in [visibility, 1]. The denominator is written (1 - a) + a k so that white albedo
-// keeps small visibilities exact (they give 1), and the floor only guards k = 0 with white
-// albedo, 0 / 0, where no light enters and the result is 0.
+// Multi-bounce AO in closed form (Akenine-Moller et al. 2018, Real-Time Rendering 4th ed., ch. 11):
+// occluded directions are taken to show surfaces of the same albedo and outgoing radiance as the
+// shaded point, which sums the bounces as a geometric series, k / (1 - albedo (1 - k)). Per colour
+// channel, in [visibility, 1]. The denominator is written (1 - a) + a k so that white albedo keeps
+// small visibilities exact (they give 1), and the floor only guards k = 0 with white albedo, 0 / 0,
+// where no light enters and the result is 0.
 fn multi_bounce_closed_form(visibility: f32, albedo: vec3<f32>) -> vec3<f32> {
     let k = saturate(visibility);
     let rho = saturate(albedo);

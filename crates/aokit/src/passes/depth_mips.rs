@@ -2,9 +2,10 @@
 //! of every 2x2 depths of the level below, so that far taps read nearby texels of a coarse level
 //! instead of scattered pixels. The methods built on a chain read their own, as a texture's MIP
 //! levels: `sao` keeps one of the four (McGuire, Mara and Luebke 2012, section 2.2), `ue4-ssao`
-//! the furthest (a hierarchical Z buffer, as Unreal's SSAO reads: seed 002). The marching and
-//! point kernels read far samples from the levels of [`AoSettings::depth_mips`], stacked in one
-//! texture so that they can gather any level.
+//! the furthest (a hierarchical Z buffer, as Unreal's SSAO reads: `GetHZBDepth` in Unreal Engine
+//! 4's PostProcessAmbientOcclusion.usf, Epic Games). The marching and point kernels read far
+//! samples from the levels of [`AoSettings::depth_mips`], stacked in one texture so that they can
+//! gather any level.
 
 use std::collections::HashMap;
 

@@ -2,7 +2,8 @@
 //! chain (`shaders/msvo_obscurance.wgsl`), then the levels merged from the coarsest up, each
 //! level's own obscurance times the depth-aware upsample of the merged level below it
 //! (`shaders/msvo_merge.wgsl`). The approach is Microsoft MiniEngine's SSAO as Unity
-//! PostProcessing ships it (seed 003); docs/methods.md has the formula and its failures.
+//! PostProcessing ships it (Post-processing Stack v2, Multi-scale Volumetric Obscurance);
+//! docs/methods.md has the formula and its failures.
 
 use super::method::{MethodPass, layout};
 use super::{ComputeKernel, PassContext, bind};
