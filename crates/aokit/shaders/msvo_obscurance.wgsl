@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/ao.wgsl, common/subsample_chain.wgsl, msvo.wgsl
 // Multi-scale volumetric obscurance, one level (passes/msvo.rs): the approach of Microsoft
 // MiniEngine's SSAO and Unity PostProcessing's Multi-Scale Volumetric Obscurance (seed 003),
 // written for this project's conventions. `linear_depth` holds the depth MIP chain; `ao_out` is

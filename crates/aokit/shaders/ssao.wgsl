@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl, common/ao_entry.wgsl
 // Normal-oriented hemisphere SSAO (seeds 001 and 003, after Chapman 2013): cosine-weighted points
 // in the hemisphere of the normal, each tested against the depth buffer. With directions drawn
 // with density cos(theta) / pi, the fraction of unoccluded points estimates the cosine-weighted

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl, common/ao_entry.wgsl
 // Crytek's screen-space AO (Mittring 2007, "Finding Next Gen: CryEngine 2"), as seed 003 builds
 // it: points spread through a sphere around the shaded point, each tested against the depth
 // buffer. Normals are not used. Half of a sphere centred on a flat surface lies behind it, so a

@@ -1,3 +1,5 @@
+// requires: common/view.wgsl
+// requires: common/formats/pair_rg32float.wgsl | common/formats/pair_rgba32float.wgsl
 // Temporal filter (seed 001, "Temporal Filter" and "History Rejection"): each pixel blends its
 // AO with what the same surface showed last frame, found by reprojection, so the sampling noise,
 // which moves every frame, averages out over about 1 / (1 - blend) frames.

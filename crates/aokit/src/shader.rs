@@ -1,8 +1,13 @@
 //! WGSL programs assembled from shared snippets.
 //!
 //! WGSL has no `#include`, so every pass is the concatenation of the snippets it uses and its own
-//! file. The snippets are public so that renderers (aokit-scene, or yours) can encode normals
-//! exactly as aokit decodes them.
+//! file, each a file under `shaders/`. A file's `// requires:` header names the files it is
+//! written against, which every program holding it holds too (a test holds the headers to what
+//! the files declare and use). The snippets are public so that renderers (aokit-scene, or
+//! yours) can encode normals exactly as aokit decodes them.
+
+#[cfg(test)]
+mod files;
 
 use wgpu::naga;
 
@@ -798,43 +803,5 @@ mod tests {
             parts: &[VIEW, ENCODING, NOISE, AO, AO_ENTRY, SLICE, "fn g() {}"],
         };
         assert!(!renamed.is_own() && !extended.is_own());
-    }
-
-    #[test]
-    fn every_wgsl_file_is_part_of_a_validated_program() {
-        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
-        let passes: Vec<String> = std::fs::read_dir(&dir)
-            .unwrap()
-            .filter_map(|e| e.ok()?.file_name().into_string().ok())
-            .filter(|name| name.ends_with(".wgsl"))
-            .collect();
-        assert!(!passes.is_empty());
-        for pass in passes {
-            // By content: a pass may be split over files (the spatial filter's core and passes).
-            let text = std::fs::read_to_string(dir.join(&pass)).unwrap();
-            assert!(
-                ALL.iter().any(|s| s.parts.contains(&text.as_str())),
-                "shaders/{pass} is in no program of shader::ALL, so nothing validates it"
-            );
-        }
-        for snippet in [
-            VIEW,
-            ENCODING,
-            NOISE,
-            AO,
-            AO_ENTRY,
-            SLICE,
-            HORIZON,
-            OCCLUSION,
-            DEPTH_FROM_NDC,
-            DEPTH_FROM_LINEAR,
-            SUBSAMPLE_CHAIN,
-        ] {
-            assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
-        }
-        let common_files = std::fs::read_dir(dir.join("common"))
-            .unwrap()
-            .filter(|e| e.as_ref().unwrap().path().is_file());
-        assert_eq!(common_files.count(), 11);
     }
 }

@@ -1,3 +1,4 @@
+// requires: common/encoding.wgsl
 // Binding 1 of `decode_normals` for encodings held in `R32Uint` texels.
 // `ENCODING` is the override of decode_normals.wgsl, which follows.
 @group(0) @binding(1) var encoded: texture_2d<u32>;

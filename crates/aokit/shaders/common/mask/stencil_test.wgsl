@@ -1,3 +1,4 @@
+// requires: common/inputs/stencil.wgsl | common/inputs/stencil_multisampled.wgsl
 // The stencil test of `apply_mask`: `STENCIL_REFERENCE` and `STENCIL_READ_MASK` are override
 // constants, since a renderer's stencil values rarely change.
 override STENCIL_REFERENCE: u32;
