@@ -6,12 +6,15 @@
 //! the files declare and use). The snippets are public so that renderers (aokit-scene, or
 //! yours) can encode normals exactly as aokit decodes them.
 
+mod bindings;
 #[cfg(test)]
 mod files;
 
 use wgpu::naga;
 
 use crate::settings::Method;
+
+pub use bindings::check_bindings;
 
 /// Camera conventions, the `ViewUniforms` binding and position reconstruction.
 pub const VIEW: &str = include_str!("../shaders/common/view.wgsl");
