@@ -129,11 +129,12 @@ fn files() -> HashMap<String, Part> {
                 walk(root, &path, files);
             } else if path.extension().is_some_and(|e| e == "wgsl") {
                 let text = std::fs::read_to_string(&path).unwrap();
+                // Headers write paths with `/` on every platform.
                 let name = path
                     .strip_prefix(root)
                     .unwrap()
                     .to_string_lossy()
-                    .into_owned();
+                    .replace('\\', "/");
                 let part = Part::new(name, &text);
                 assert!(
                     files.insert(text, part).is_none(),
@@ -192,7 +193,7 @@ fn check(program: &ShaderSource, files: &HashMap<String, Part>) -> Vec<String> {
             .flat_map(|p| &p.declares)
             .chain(&part.declares)
             .collect();
-        for (_, other) in parts.iter().enumerate().filter(|&(j, _)| j != i) {
+        for other in parts[..i].iter().chain(&parts[i + 1..]) {
             for name in other.declares.intersection(&part.uses) {
                 if !known.contains(name) {
                     errors.push(error(format!(
