@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/mask/texture_weight.wgsl | common/mask/stencil_test.wgsl
 // Exclusion mask: the pixels the caller marked receive no AO (AoInputs::mask). The program
 // starts with the mask's binding and its `mask_weight` (1 = no AO, 0 = all of it), one per mask
 // kind and sample count (shader.rs). Runs last, at the input's size, on the AO the filters and

@@ -1,3 +1,6 @@
+// requires: common/view.wgsl, resample.wgsl
+// requires: common/inputs/float_input.wgsl | common/inputs/float_input_multisampled.wgsl
+// requires: common/depth_from_ndc.wgsl | common/depth_from_linear.wgsl
 // Prepare pass for `vbao.back_faces`: each working texel's occluder thickness, the view-depth
 // distance from its front face (the working depth) to the nearest back face behind it (the
 // back-face depth, read at the pixel the point downsample takes: the texel itself at full

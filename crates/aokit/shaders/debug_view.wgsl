@@ -1,3 +1,4 @@
+// requires: common/encoding.wgsl
 // Debug views (AoDebug in debug.rs): one of a frame's intermediates as colour, one texel per
 // pixel of the input's size, so that it lines up with the image. Textures at the working size
 // are shown blocky, each texel over the pixels it covers. Mirrors `DebugUniforms` in uniforms.rs.

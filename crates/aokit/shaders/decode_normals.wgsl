@@ -1,3 +1,5 @@
+// requires: common/view.wgsl, common/encoding.wgsl
+// requires: common/inputs/encoded_uint.wgsl | common/inputs/encoded_float.wgsl
 // A normal texture in any encoding, or in world space, to the oct32 view-space texture the AO
 // kernels read. The program starts with the binding of the encoded texture and its
 // `load_normal`, one per texel type (shader.rs); the `ENCODING` override picks the encoding.

@@ -1,3 +1,4 @@
+// requires: common/formats/level_r32float.wgsl | common/formats/level_r16float.wgsl
 // Levels 1 to 4 of a depth MIP chain from its level 0, in one pass, each texel reducing the 2x2
 // texels below it by the reduction the `REDUCTION` override names (passes/depth_mips.rs,
 // `DepthReduction`, mirrors the codes):

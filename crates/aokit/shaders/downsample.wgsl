@@ -1,3 +1,6 @@
+// requires: common/view.wgsl, resample.wgsl
+// requires: common/formats/pair_rg32float.wgsl | common/formats/pair_rgba32float.wgsl
+// requires: common/depth_from_ndc.wgsl | common/depth_from_linear.wgsl
 // Downsample (resample.wgsl): each working texel takes the linear depth of one input pixel of
 // its SCALE x SCALE block, and that pixel's normal and motion, so that depth, normal and
 // motion describe one surface point. Which pixel:

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/encoding.wgsl
 // Spatial filter, `edges` kind: one pass of a 3x3 edge-aware blur (docs/denoise.md), the shape
 // of XeGTAO's denoiser (Strugar 2021, https://github.com/GameTechDev/XeGTAO): where the
 // bilateral kind spends two passes and a workgroup tile on a 7-tap line each way, this reads

@@ -1,3 +1,4 @@
+// requires: common/ao.wgsl, common/ao_entry.wgsl, common/slice.wgsl
 // Ground-truth based ambient occlusion (Jimenez, Wu, Pesce, Jarabo 2016, "Practical Real-Time
 // Strategies for Accurate Indirect Occlusion"), in aokit's right-handed, -Z forward view space.
 //

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl
 // Spatial filter, guided kind: He, Sun and Tang's guided filter ("Guided Image Filtering", ECCV
 // 2010; TPAMI 35(6), 2013) of the AO `p` with a guide `I` made from linear depth
 // (docs/denoise.md). A program is this file plus one pass file, run in this order:

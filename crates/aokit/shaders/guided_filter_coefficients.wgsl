@@ -1,3 +1,5 @@
+// requires: common/view.wgsl, guided_filter.wgsl
+// requires: common/formats/pair_rg32float.wgsl | common/formats/pair_rgba32float.wgsl
 // First pass of the guided filter (guided_filter.wgsl): from the method's AO and the linear
 // depth to each window's line, its slope a_k and its value c_k at the window's centre.
 

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, guided_filter.wgsl
 // Second pass of the guided filter (guided_filter.wgsl): each pixel averages the lines of the
 // windows that hold it, evaluated at its own log depth, into the filtered AO.
 

@@ -1,3 +1,4 @@
+// requires: common/ao.wgsl, common/ao_entry.wgsl, common/slice.wgsl, common/horizon.wgsl
 // Horizon-based AO (Bavoil and Sainz 2008, "Image-Space Horizon-Based Ambient Occlusion"), as
 // NVIDIA's DirectX 11 SDK sample (SSAO11) builds it: the depth buffer is a height field; along
 // a few screen directions the horizon's elevation above the tangent plane says how much sky that

@@ -1,3 +1,4 @@
+// requires: common/ao.wgsl, hbao_separable.wgsl
 // Second pass of separable HBAO (hbao_separable.wgsl): along columns, the +y and -y directions'
 // occlusion, added to the rows pass's, averaged over the four directions as hbao.wgsl averages
 // its directions, and shaped and stored as every method's AO is (common/ao.wgsl).

@@ -1,3 +1,4 @@
+// requires: common/noise.wgsl, common/ao.wgsl, common/ao_entry.wgsl, common/slice.wgsl
 // HBAO+'s estimator (NVIDIA ShadowWorks HBAO+, 2014, its ComputeAO): the same ray march as hbao,
 // but every sample occludes on its own by its elevation above the tangent plane, without tracking a
 // horizon:

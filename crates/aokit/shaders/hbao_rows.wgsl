@@ -1,3 +1,4 @@
+// requires: common/ao.wgsl, hbao_separable.wgsl
 // First pass of separable HBAO (hbao_separable.wgsl): along rows, the +x and -x directions'
 // occlusion, summed and unshaped, for the columns pass to finish.
 

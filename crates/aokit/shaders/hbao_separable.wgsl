@@ -1,3 +1,5 @@
+// requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl, common/slice.wgsl
+// requires: common/horizon.wgsl
 // Separable HBAO (docs/methods.md, "separable HBAO"): hbao.wgsl's horizons along four fixed
 // screen directions, +x and -x in a pass over rows, then +y and -y in a pass over columns, each
 // reading its line of linear depth from workgroup memory instead of the depth texture. The

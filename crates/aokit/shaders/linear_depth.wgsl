@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/depth_from_ndc.wgsl | common/depth_from_linear.wgsl
 // Prepare pass: the renderer's depth to linear view depth (NO_SURFACE where nothing was drawn).
 // The program starts with the depth binding and `input_linear_depth`, one per kind of depth
 // input (`DepthInput` in passes/linear_depth.rs).

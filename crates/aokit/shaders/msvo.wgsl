@@ -1,3 +1,4 @@
+// requires: common/ao.wgsl
 // What msvo's two passes share (msvo_obscurance.wgsl, msvo_merge.wgsl): each runs once per level
 // of the depth MIP chain and finds its level from the texture it writes.
 

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/ao.wgsl, msvo.wgsl
 // Multi-scale volumetric obscurance, one merge (passes/msvo.rs): a level's own obscurance
 // (`finer`) times the merged obscurance of the level below it in resolution (`coarser`),
 // brought up by a bilateral upsample that trusts coarse texels by how close their depth is to

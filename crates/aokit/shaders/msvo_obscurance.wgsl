@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/ao.wgsl, common/subsample_chain.wgsl, msvo.wgsl
 // Multi-scale volumetric obscurance, one level (passes/msvo.rs): the approach of Microsoft
 // MiniEngine's SSAO (DirectX-Graphics-Samples) and Unity PostProcessing's Multi-Scale Volumetric
 // Obscurance (Post-processing Stack v2), written for this project's conventions. `linear_depth`

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/encoding.wgsl
 // View-space normals reconstructed from linear depth, for renderers that provide none or when
 // `normals.source` asks for them. Output is oct32, like a G-buffer's.
 //

@@ -1,3 +1,5 @@
+// requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl, common/ao_entry.wgsl
+// requires: common/subsample_chain.wgsl
 // Scalable Ambient Obscurance (McGuire, Mara and Luebke, HPG 2012): `ao.count` taps on a
 // spiral of `ao.steps` turns around the pixel (spiral.rs chooses the turns), each read from the
 // depth MIP level its distance calls for, scored by the paper's obscurance estimator. Binding

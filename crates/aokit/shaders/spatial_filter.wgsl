@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/encoding.wgsl
 // Spatial filter: a separable bilateral blur of the AO (docs/denoise.md), run as two passes, one
 // per axis. A program is this file plus one pass file (spatial_filter_horizontal.wgsl or
 // spatial_filter_vertical.wgsl) that sets `AXIS` and the workgroup shape and defines

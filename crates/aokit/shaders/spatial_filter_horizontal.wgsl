@@ -1,3 +1,5 @@
+// requires: spatial_filter.wgsl
+// requires: common/formats/pair_rg32float.wgsl | common/formats/pair_rgba32float.wgsl
 // First pass of the spatial filter (spatial_filter.wgsl): along rows, from the method's AO and
 // the linear depth to both packed in one texel, so that the vertical pass reads one texture.
 

@@ -1,3 +1,5 @@
+// requires: spatial_filter.wgsl
+// requires: common/formats/pair_rg32float.wgsl | common/formats/pair_rgba32float.wgsl
 // Second pass of the spatial filter (spatial_filter.wgsl): along columns, from the horizontal
 // pass's packed AO and depth to the filtered AO, or with PACKED_OUTPUT to the filtered AO and
 // the depth packed again, for the temporal filter after it (temporal_filter.wgsl, PACKED_INPUT).

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl, common/ao_entry.wgsl
 // Normal-oriented hemisphere SSAO (after Chapman 2013, "SSAO Tutorial", with the cosine-weighted
 // directions of ybniaobu's Unity YPipeline): cosine-weighted points in the hemisphere of the
 // normal, each tested against the depth buffer. With directions drawn with density cos(theta) / pi,

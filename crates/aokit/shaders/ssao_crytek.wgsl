@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl, common/ao_entry.wgsl
 // Crytek's screen-space AO (Mittring 2007, "Finding Next Gen: CryEngine 2"), as the
 // UnityCrytekSponza-master2019 project (Graphic-researcher, GitHub) builds it: points spread
 // through a sphere around the shaded point, each tested against the depth buffer. Normals are not

@@ -1,3 +1,5 @@
+// requires: common/view.wgsl
+// requires: common/formats/pair_rg32float.wgsl | common/formats/pair_rgba32float.wgsl
 // Temporal filter (after the SSAO temporal filter of ybniaobu's Unity YPipeline: variance clipping,
 // Salvi 2016, "An Excursion in Temporal Supersampling", and depth rejection, Bavoil and Andersson
 // 2012, "Stable SSAO in Battlefield 3 with Selective Temporal Filtering"): each pixel blends its AO

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/ao.wgsl, common/ao_entry.wgsl
 // Unreal Engine 4's legacy SSAO (PostProcessAmbientOcclusion.usf, Epic Games): despite the name it
 // works like HBAO. Each of `ao.count` pairs takes two depth samples mirrored about the pixel
 // along one screen direction, and the pair occludes by how far the angle it spans at the pixel

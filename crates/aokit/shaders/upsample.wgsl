@@ -1,3 +1,5 @@
+// requires: common/view.wgsl, common/encoding.wgsl, resample.wgsl
+// requires: common/depth_from_ndc.wgsl | common/depth_from_linear.wgsl
 // Depth-aware upsample (resample.wgsl): each full-resolution pixel combines the 2x2 working
 // texels around its centre. A texel shows the pixel's surface when its depth d_k is within
 // `threshold` of the pixel's depth d relative to d: |d_k - d| / d < threshold. With the bilinear

@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/ao.wgsl, common/ao_entry.wgsl, common/slice.wgsl
 // Visibility bitmask ambient occlusion (Therrien, Levesque and Gilet 2023, "Screen Space
 // Indirect Lighting with Visibility Bitmask"), on GTAO's slices.
 //

@@ -106,6 +106,20 @@ impl Default for DebugStyle {
     }
 }
 
+/// The bindings of `shader::DEBUG_VIEW`: its settings, the intermediates it shows, the image
+/// written.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 6] {
+    let unfilterable = wgpu::TextureSampleType::Float { filterable: false };
+    [
+        bind::uniform(0),
+        bind::texture(1, unfilterable),
+        bind::texture(2, wgpu::TextureSampleType::Uint),
+        bind::texture(3, unfilterable),
+        bind::texture(4, unfilterable),
+        bind::storage_texture(5, DEBUG_FORMAT),
+    ]
+}
+
 /// Draws debug views of [`AoPipeline`](crate::AoPipeline) outputs into an `Rgba8Unorm` texture
 /// of the input's size, to show on screen or read back.
 ///
@@ -148,25 +162,13 @@ impl AoDebug {
     /// # Ok(()) }
     /// ```
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Self {
-        let unfilterable = wgpu::TextureSampleType::Float { filterable: false };
         let stand_in = |format, bytes: &[u8]| {
             upload_texture_2d(device, queue, "aokit debug stand-in", [1, 1], format, bytes)
                 .expect("a 1x1 texture")
                 .create_view(&Default::default())
         };
         Self {
-            kernel: ComputeKernel::new(
-                device,
-                &shader::DEBUG_VIEW,
-                &[
-                    bind::uniform(0),
-                    bind::texture(1, unfilterable),
-                    bind::texture(2, wgpu::TextureSampleType::Uint),
-                    bind::texture(3, unfilterable),
-                    bind::texture(4, unfilterable),
-                    bind::storage_texture(5, DEBUG_FORMAT),
-                ],
-            ),
+            kernel: ComputeKernel::new(device, &shader::DEBUG_VIEW, &layout()),
             uniforms: create_uniform_buffer::<DebugUniforms>(device, "aokit debug"),
             stand_in_scalar: stand_in(wgpu::TextureFormat::R32Float, &[0; 4]),
             stand_in_bent: stand_in(wgpu::TextureFormat::Rgba16Float, &[0; 8]),

@@ -589,6 +589,14 @@ fn texel_size(format: wgpu::TextureFormat) -> Result<u32, GpuError> {
         })
 }
 
+/// The bindings of `shader::DEPTH_TO_FLOAT`: the depth, the `R32Float` copy written.
+pub(crate) fn depth_to_float_layout() -> [wgpu::BindGroupLayoutEntry; 2] {
+    [
+        bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::storage_texture(1, wgpu::TextureFormat::R32Float),
+    ]
+}
+
 /// `texture`'s depth in an `R32Float` texture of its size, copied by a compute pass.
 fn depth_to_float(
     device: &wgpu::Device,
@@ -602,10 +610,7 @@ fn depth_to_float(
     let kernel = ComputeKernel::new(
         device,
         &crate::shader::DEPTH_TO_FLOAT,
-        &[
-            bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
-            bind::storage_texture(1, format),
-        ],
+        &depth_to_float_layout(),
     );
     let depth = texture.create_view(&wgpu::TextureViewDescriptor {
         aspect: wgpu::TextureAspect::DepthOnly,

@@ -1,12 +1,20 @@
 //! WGSL programs assembled from shared snippets.
 //!
 //! WGSL has no `#include`, so every pass is the concatenation of the snippets it uses and its own
-//! file. The snippets are public so that renderers (aokit-scene, or yours) can encode normals
-//! exactly as aokit decodes them.
+//! file, each a file under `shaders/`. A file's `// requires:` header names the files it is
+//! written against, which every program holding it holds too (a test holds the headers to what
+//! the files declare and use). The snippets are public so that renderers (aokit-scene, or
+//! yours) can encode normals exactly as aokit decodes them.
+
+mod bindings;
+#[cfg(test)]
+mod files;
 
 use wgpu::naga;
 
 use crate::settings::Method;
+
+pub use bindings::check_bindings;
 
 /// Camera conventions, the `ViewUniforms` binding and position reconstruction.
 pub const VIEW: &str = include_str!("../shaders/common/view.wgsl");
@@ -93,27 +101,13 @@ pub struct ShaderSource {
     pub parts: &'static [&'static str],
 }
 
-/// Binding 1 of a program reading depth, and of `apply_mask` with a mask texture: the first
-/// channel of a single-sampled float texture. Hardware depth is bound as an unfilterable float
-/// texture too (WebGPU allows it), so one binding serves both kinds of depth.
-const FLOAT_INPUT: &str = "
-@group(0) @binding(1) var input_texture: texture_2d<f32>;
-fn load_input(pixel: vec2<u32>) -> f32 {
-    return textureLoad(input_texture, pixel, 0).r;
-}
-fn input_size() -> vec2<u32> {
-    return textureDimensions(input_texture);
-}";
+/// Binding 1 of a program reading depth, and of `apply_mask` with a mask texture: a
+/// single-sampled float texture and `load_input`.
+const FLOAT_INPUT: &str = include_str!("../shaders/common/inputs/float_input.wgsl");
 
 /// As [`FLOAT_INPUT`], multisampled: sample 0 is read.
-const FLOAT_INPUT_MULTISAMPLED: &str = "
-@group(0) @binding(1) var input_texture: texture_multisampled_2d<f32>;
-fn load_input(pixel: vec2<u32>) -> f32 {
-    return textureLoad(input_texture, pixel, 0).r;
-}
-fn input_size() -> vec2<u32> {
-    return textureDimensions(input_texture);
-}";
+const FLOAT_INPUT_MULTISAMPLED: &str =
+    include_str!("../shaders/common/inputs/float_input_multisampled.wgsl");
 
 /// `input_linear_depth` from hardware depth over [`FLOAT_INPUT`] or [`FLOAT_INPUT_MULTISAMPLED`].
 const DEPTH_FROM_NDC: &str = include_str!("../shaders/common/depth_from_ndc.wgsl");
@@ -174,18 +168,10 @@ pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
 };
 
 /// Binding 1 of `decode_normals` for encodings held in `R32Uint` texels.
-const ENCODED_UINT: &str = "
-@group(0) @binding(1) var encoded: texture_2d<u32>;
-fn load_normal(pixel: vec2<u32>) -> vec3<f32> {
-    return decode_normal_uint(textureLoad(encoded, pixel, 0).r, ENCODING);
-}";
+const ENCODED_UINT: &str = include_str!("../shaders/common/inputs/encoded_uint.wgsl");
 
 /// Binding 1 of `decode_normals` for encodings held in unorm or float texels.
-const ENCODED_FLOAT: &str = "
-@group(0) @binding(1) var encoded: texture_2d<f32>;
-fn load_normal(pixel: vec2<u32>) -> vec3<f32> {
-    return decode_normal_float(textureLoad(encoded, pixel, 0), ENCODING);
-}";
+const ENCODED_FLOAT: &str = include_str!("../shaders/common/inputs/encoded_float.wgsl");
 
 /// A normal texture in an `R32Uint` encoding other than oct32 to oct32.
 pub const DECODE_NORMALS_UINT: ShaderSource = ShaderSource {
@@ -213,8 +199,8 @@ pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
 /// [`PairFormat`](crate::gpu::PairFormat) in its order: a program that writes one declares it
 /// `pair_storage`.
 const PAIR_STORAGE: [&str; 2] = [
-    "alias pair_storage = texture_storage_2d<rg32float, write>;",
-    "alias pair_storage = texture_storage_2d<rgba32float, write>;",
+    include_str!("../shaders/common/formats/pair_rg32float.wgsl"),
+    include_str!("../shaders/common/formats/pair_rgba32float.wgsl"),
 ];
 
 /// One program per [`PairFormat`](crate::gpu::PairFormat), indexed by it: the parts with
@@ -301,34 +287,18 @@ pub const TEMPORAL_FILTER: [ShaderSource; 2] = per_pair_format!(
 );
 
 /// The mask texture's weight in `apply_mask`, after [`FLOAT_INPUT`] or its multisampled form.
-const MASK_TEXTURE_WEIGHT: &str = "
-fn mask_weight(pixel: vec2<u32>) -> f32 {
-    return saturate(load_input(pixel));
-}";
+const MASK_TEXTURE_WEIGHT: &str = include_str!("../shaders/common/mask/texture_weight.wgsl");
 
-/// The stencil test of `apply_mask`, after its binding: `STENCIL_REFERENCE` and
-/// `STENCIL_READ_MASK` are override constants, since a renderer's stencil values rarely change.
-const MASK_STENCIL_TEST: &str = "
-override STENCIL_REFERENCE: u32;
-override STENCIL_READ_MASK: u32;
-fn mask_weight(pixel: vec2<u32>) -> f32 {
-    let bits = (load_stencil(pixel) ^ STENCIL_REFERENCE) & STENCIL_READ_MASK;
-    return select(0.0, 1.0, bits == 0u);
-}";
+/// The stencil test of `apply_mask`, after its binding, with the reference and read mask as
+/// override constants.
+const MASK_STENCIL_TEST: &str = include_str!("../shaders/common/mask/stencil_test.wgsl");
 
 /// Binding 1 of `apply_mask`: a stencil aspect.
-const MASK_STENCIL: &str = "
-@group(0) @binding(1) var mask: texture_2d<u32>;
-fn load_stencil(pixel: vec2<u32>) -> u32 {
-    return textureLoad(mask, pixel, 0).r;
-}";
+const MASK_STENCIL: &str = include_str!("../shaders/common/inputs/stencil.wgsl");
 
 /// Binding 1 of `apply_mask`: sample 0 of a multisampled stencil aspect.
-const MASK_STENCIL_MULTISAMPLED: &str = "
-@group(0) @binding(1) var mask: texture_multisampled_2d<u32>;
-fn load_stencil(pixel: vec2<u32>) -> u32 {
-    return textureLoad(mask, pixel, 0).r;
-}";
+const MASK_STENCIL_MULTISAMPLED: &str =
+    include_str!("../shaders/common/inputs/stencil_multisampled.wgsl");
 
 const APPLY_MASK_PASS: &str = include_str!("../shaders/apply_mask.wgsl");
 
@@ -462,7 +432,7 @@ pub const MSVO_MERGE: ShaderSource = ao_program!("msvo_merge", MSVO);
 pub const DEPTH_MIPS: ShaderSource = ShaderSource {
     name: "depth_mips",
     parts: &[
-        "alias LevelTexture = texture_storage_2d<r32float, write>;\n",
+        include_str!("../shaders/common/formats/level_r32float.wgsl"),
         include_str!("../shaders/depth_mips.wgsl"),
     ],
 };
@@ -471,7 +441,7 @@ pub const DEPTH_MIPS: ShaderSource = ShaderSource {
 pub const DEPTH_MIPS_FP16: ShaderSource = ShaderSource {
     name: "depth_mips",
     parts: &[
-        "alias LevelTexture = texture_storage_2d<r16float, write>;\n",
+        include_str!("../shaders/common/formats/level_r16float.wgsl"),
         include_str!("../shaders/depth_mips.wgsl"),
     ],
 };
@@ -836,40 +806,5 @@ mod tests {
             parts: &[VIEW, ENCODING, NOISE, AO, AO_ENTRY, SLICE, "fn g() {}"],
         };
         assert!(!renamed.is_own() && !extended.is_own());
-    }
-
-    #[test]
-    fn every_wgsl_file_is_part_of_a_validated_program() {
-        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
-        let passes: Vec<String> = std::fs::read_dir(&dir)
-            .unwrap()
-            .filter_map(|e| e.ok()?.file_name().into_string().ok())
-            .filter(|name| name.ends_with(".wgsl"))
-            .collect();
-        assert!(!passes.is_empty());
-        for pass in passes {
-            // By content: a pass may be split over files (the spatial filter's core and passes).
-            let text = std::fs::read_to_string(dir.join(&pass)).unwrap();
-            assert!(
-                ALL.iter().any(|s| s.parts.contains(&text.as_str())),
-                "shaders/{pass} is in no program of shader::ALL, so nothing validates it"
-            );
-        }
-        for snippet in [
-            VIEW,
-            ENCODING,
-            NOISE,
-            AO,
-            AO_ENTRY,
-            SLICE,
-            HORIZON,
-            OCCLUSION,
-            DEPTH_FROM_NDC,
-            DEPTH_FROM_LINEAR,
-            SUBSAMPLE_CHAIN,
-        ] {
-            assert!(ALL.iter().any(|s| s.parts.contains(&snippet)));
-        }
-        assert_eq!(std::fs::read_dir(dir.join("common")).unwrap().count(), 11);
     }
 }

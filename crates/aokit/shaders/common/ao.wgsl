@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/encoding.wgsl
 // The interface every AO method kernel shares (mirrors `AoUniforms` in uniforms.rs): its settings,
 // its inputs and outputs, the surface at the pixel, and the final shaping of the result. The
 // per-pixel kernels add common/ao_entry.wgsl's entry point, and a method's file its `estimate`.

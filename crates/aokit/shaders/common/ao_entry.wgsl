@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl
 // The per-pixel AO kernels' entry point (after common/ao.wgsl): one thread per pixel, the
 // method's `estimate`, the shaped result stored. Kept apart from ao.wgsl so that kernels of
 // another shape (separable HBAO's row and column passes) share the interface without it.

@@ -1,3 +1,5 @@
+// requires: common/view.wgsl
+// requires: common/inputs/float_input.wgsl | common/inputs/float_input_multisampled.wgsl
 // The input's linear view depth at `pixel` from linear depth handed in directly (`load_input`,
 // which the program's depth binding defines), e.g. passes exported by another renderer: NaN,
 // infinity and values <= 0 mark pixels without a surface, NO_SURFACE here.

@@ -1,3 +1,5 @@
+// requires: common/view.wgsl
+// requires: common/inputs/float_input.wgsl | common/inputs/float_input_multisampled.wgsl
 // The input's linear view depth at `pixel` from hardware depth (`load_input`, which the program's
 // depth binding defines), NO_SURFACE where nothing was drawn.
 fn input_linear_depth(pixel: vec2<u32>) -> f32 {

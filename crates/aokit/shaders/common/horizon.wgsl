@@ -1,3 +1,4 @@
+// requires: common/noise.wgsl, common/ao.wgsl, common/slice.wgsl
 // HBAO's horizon term along one screen direction (the formula is in hbao.wgsl), shared by the
 // per-pixel kernel (hbao.wgsl) and the separable passes (hbao_separable.wgsl), which differ only
 // in where a direction's samples come from: the depth texture, or a line of it in workgroup

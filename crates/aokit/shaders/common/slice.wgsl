@@ -1,3 +1,4 @@
+// requires: common/view.wgsl, common/ao.wgsl
 // Slices, shared by the slice-based methods (GTAO, VBAO): half-planes through the view vector V
 // at a screen angle, samples placed exactly in them, and the cosine-weighted arc integral.
 

@@ -1,3 +1,4 @@
+// requires: common/ao.wgsl
 // Where the texels of the subsampled depth MIP chain come from (depth_mips.wgsl's subsample,
 // which SAO and msvo read): each level keeps, of the 2x2 texels below each of its texels, the
 // one at offset (y & 1, x & 1), clamped to that level.

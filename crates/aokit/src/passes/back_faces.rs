@@ -11,6 +11,17 @@ use crate::shader;
 /// for a solid, 0 for nothing measured.
 pub const THICKNESS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 
+/// The bindings of `shader::BACK_FACES[input as usize]`: view uniforms, the back-face depth,
+/// the working depth, the thickness written.
+pub(crate) fn layout(input: DepthInput) -> [wgpu::BindGroupLayoutEntry; 4] {
+    [
+        bind::uniform(0),
+        input.layout_entry(1),
+        bind::texture(2, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::storage_texture(3, THICKNESS_FORMAT),
+    ]
+}
+
 /// Measures how far behind each working texel's surface the nearest back face lies
 /// (`shaders/back_faces.wgsl`).
 #[derive(Default)]
@@ -37,12 +48,7 @@ impl BackFacesPass {
             ComputeKernel::with_constants(
                 device,
                 &shader::BACK_FACES[input as usize],
-                &[
-                    bind::uniform(0),
-                    input.layout_entry(1),
-                    bind::texture(2, wgpu::TextureSampleType::Float { filterable: false }),
-                    bind::storage_texture(3, THICKNESS_FORMAT),
-                ],
+                &layout(input),
                 &[("SCALE", f64::from(scale))],
             )
         });

@@ -13,6 +13,28 @@ use crate::settings::NormalEncoding;
 use crate::shader;
 use crate::uniforms::DecodeUniforms;
 
+/// The program that decodes `encoding` and its bindings: view uniforms, the encoded texture,
+/// the oct32 normals written, the decode's settings.
+pub(crate) fn program(
+    encoding: NormalEncoding,
+) -> (shader::ShaderSource, [wgpu::BindGroupLayoutEntry; 4]) {
+    let (source, sample_type) = if encoding.is_uint() {
+        (shader::DECODE_NORMALS_UINT, wgpu::TextureSampleType::Uint)
+    } else {
+        (
+            shader::DECODE_NORMALS_FLOAT,
+            wgpu::TextureSampleType::Float { filterable: false },
+        )
+    };
+    let layout = [
+        bind::uniform(0),
+        bind::texture(1, sample_type),
+        bind::storage_texture(2, NORMALS_FORMAT),
+        bind::uniform(3),
+    ];
+    (source, layout)
+}
+
 /// Decodes a normal texture to oct32 in view space.
 pub struct DecodeNormalsPass {
     /// One kernel per encoding, compiled the first time it is used.
@@ -47,23 +69,11 @@ impl DecodeNormalsPass {
             bytemuck::bytes_of(&DecodeUniforms::new(to_view)),
         );
         let kernel = self.kernels.entry(encoding).or_insert_with(|| {
-            let (source, sample_type) = if encoding.is_uint() {
-                (shader::DECODE_NORMALS_UINT, wgpu::TextureSampleType::Uint)
-            } else {
-                (
-                    shader::DECODE_NORMALS_FLOAT,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                )
-            };
+            let (source, layout) = program(encoding);
             ComputeKernel::with_constants(
                 ctx.device,
                 &source,
-                &[
-                    bind::uniform(0),
-                    bind::texture(1, sample_type),
-                    bind::storage_texture(2, NORMALS_FORMAT),
-                    bind::uniform(3),
-                ],
+                &layout,
                 &[("ENCODING", f64::from(encoding.shader_code()))],
             )
         });

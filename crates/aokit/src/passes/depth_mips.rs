@@ -76,6 +76,26 @@ pub(crate) fn atlas_holds_level_0(format: wgpu::TextureFormat) -> bool {
     format == LINEAR_DEPTH_FORMAT
 }
 
+/// The program that stores levels of `format` (`R32Float` or `R16Float`) and its bindings:
+/// level 0, then levels 1 to 4 written.
+pub(crate) fn program(
+    format: wgpu::TextureFormat,
+) -> (shader::ShaderSource, [wgpu::BindGroupLayoutEntry; 5]) {
+    let source = if format == LINEAR_DEPTH_FORMAT {
+        shader::DEPTH_MIPS
+    } else {
+        shader::DEPTH_MIPS_FP16
+    };
+    let layout = [
+        bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::storage_texture(1, format),
+        bind::storage_texture(2, format),
+        bind::storage_texture(3, format),
+        bind::storage_texture(4, format),
+    ];
+    (source, layout)
+}
+
 /// What a compiled `depth_mips.wgsl` is specialised for.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 struct KernelKey {
@@ -214,21 +234,11 @@ impl DepthMipsPass {
             return;
         }
         let kernel = self.kernels.entry(key).or_insert_with(|| {
-            let source = if key.format == LINEAR_DEPTH_FORMAT {
-                &shader::DEPTH_MIPS
-            } else {
-                &shader::DEPTH_MIPS_FP16
-            };
+            let (source, layout) = program(key.format);
             ComputeKernel::with_constants(
                 ctx.device,
-                source,
-                &[
-                    bind::texture(0, wgpu::TextureSampleType::Float { filterable: false }),
-                    bind::storage_texture(1, key.format),
-                    bind::storage_texture(2, key.format),
-                    bind::storage_texture(3, key.format),
-                    bind::storage_texture(4, key.format),
-                ],
+                &source,
+                &layout,
                 &[
                     ("REDUCTION", f64::from(key.reduction as u32)),
                     ("COARSER_LEVELS", f64::from(key.coarser_levels)),

@@ -10,6 +10,20 @@ use crate::settings::{DepthWeight, SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::SpatialUniforms;
 
+/// The bindings of `shader::EDGE_FILTER`: view uniforms, filter settings, the AO, the linear
+/// depth, the normals, the filtered AO written.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 6] {
+    let float = wgpu::TextureSampleType::Float { filterable: false };
+    [
+        bind::uniform(0),
+        bind::uniform(1),
+        bind::texture(2, float),
+        bind::texture(3, float),
+        bind::texture(4, wgpu::TextureSampleType::Uint),
+        bind::storage_texture(5, AO_FORMAT),
+    ]
+}
+
 /// The filter's kernels and its settings buffer.
 pub struct EdgeFilterPass {
     /// Per depth weight and whether normals weigh in (the shader's overrides), compiled the
@@ -47,18 +61,10 @@ impl EdgeFilterPass {
             self.kernels
                 .entry((depth_weight, normal_weight))
                 .or_insert_with(|| {
-                    let float = wgpu::TextureSampleType::Float { filterable: false };
                     ComputeKernel::with_constants(
                         device,
                         &shader::EDGE_FILTER,
-                        &[
-                            bind::uniform(0),
-                            bind::uniform(1),
-                            bind::texture(2, float),
-                            bind::texture(3, float),
-                            bind::texture(4, wgpu::TextureSampleType::Uint),
-                            bind::storage_texture(5, AO_FORMAT),
-                        ],
+                        &layout(),
                         &[
                             ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
                             ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),

@@ -11,6 +11,19 @@ use crate::settings::{SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::GuidedUniforms;
 
+/// The bindings of either pass, `output` the format it writes: view uniforms, filter settings,
+/// the pass's first input (the AO, then the lines), the linear depth, and its output.
+pub(crate) fn layout(output: wgpu::TextureFormat) -> [wgpu::BindGroupLayoutEntry; 5] {
+    let float = wgpu::TextureSampleType::Float { filterable: false };
+    [
+        bind::uniform(0),
+        bind::uniform(1),
+        bind::texture(2, float),
+        bind::texture(3, float),
+        bind::storage_texture(4, output),
+    ]
+}
+
 /// The two kernels of the filter and its settings buffer.
 pub struct GuidedFilterPass {
     /// Per window radius (the shader's `RADIUS`), compiled the first time settings of the
@@ -56,30 +69,18 @@ impl GuidedFilterPass {
         self.current = enabled.then_some(settings.guided_radius);
         if let Some(radius) = self.current {
             let constants = [("RADIUS", f64::from(radius))];
-            // View, filter settings, each pass's first input (the AO, then the lines), the
-            // linear depth, and its output.
-            let float = wgpu::TextureSampleType::Float { filterable: false };
-            let entries = |output| {
-                [
-                    bind::uniform(0),
-                    bind::uniform(1),
-                    bind::texture(2, float),
-                    bind::texture(3, float),
-                    bind::storage_texture(4, output),
-                ]
-            };
             self.kernels.entry(radius).or_insert_with(|| {
                 [
                     ComputeKernel::with_constants(
                         device,
                         &shader::GUIDED_FILTER_COEFFICIENTS[self.pair as usize],
-                        &entries(self.pair.texture_format()),
+                        &layout(self.pair.texture_format()),
                         &constants,
                     ),
                     ComputeKernel::with_constants(
                         device,
                         &shader::GUIDED_FILTER_OUTPUT,
-                        &entries(AO_FORMAT),
+                        &layout(AO_FORMAT),
                         &constants,
                     ),
                 ]

@@ -69,6 +69,16 @@ impl DepthInput {
     }
 }
 
+/// The bindings of `shader::LINEAR_DEPTH[input as usize]`: view uniforms, the depth, the
+/// linear depth written.
+pub(crate) fn layout(input: DepthInput) -> [wgpu::BindGroupLayoutEntry; 3] {
+    [
+        bind::uniform(0),
+        input.layout_entry(1),
+        bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
+    ]
+}
+
 /// Converts hardware depth or linear depth (`R32Float`, sanitised: NaN, infinity and values
 /// <= 0 become 0), single-sampled or multisampled, to the linear depth the kernels read.
 #[derive(Default)]
@@ -92,11 +102,7 @@ impl LinearDepthPass {
             ComputeKernel::new(
                 device,
                 &shader::LINEAR_DEPTH[input as usize],
-                &[
-                    bind::uniform(0),
-                    input.layout_entry(1),
-                    bind::storage_texture(2, LINEAR_DEPTH_FORMAT),
-                ],
+                &layout(input),
             )
         });
         ctx.dispatch(

@@ -16,6 +16,36 @@ struct Variant {
     stencil: Option<(u8, u8)>,
 }
 
+/// The program for a mask texture or stencil, multisampled or not, and its bindings: view
+/// uniforms, the mask, the AO, the masked AO written.
+pub(crate) fn program(
+    multisampled: bool,
+    stencil: bool,
+) -> (shader::ShaderSource, [wgpu::BindGroupLayoutEntry; 4]) {
+    let (source, sample_type) = match (stencil, multisampled) {
+        (false, false) => (
+            shader::APPLY_MASK_TEXTURE,
+            wgpu::TextureSampleType::Float { filterable: false },
+        ),
+        (false, true) => (
+            shader::APPLY_MASK_TEXTURE_MULTISAMPLED,
+            wgpu::TextureSampleType::Float { filterable: false },
+        ),
+        (true, false) => (shader::APPLY_MASK_STENCIL, wgpu::TextureSampleType::Uint),
+        (true, true) => (
+            shader::APPLY_MASK_STENCIL_MULTISAMPLED,
+            wgpu::TextureSampleType::Uint,
+        ),
+    };
+    let layout = [
+        bind::uniform(0),
+        bind::texture_with_samples(1, sample_type, multisampled),
+        bind::texture(2, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::storage_texture(3, AO_FORMAT),
+    ];
+    (source, layout)
+}
+
 /// Applies an [`AoMask`] to the AO.
 #[derive(Default)]
 pub struct MaskPass {
@@ -45,40 +75,15 @@ impl MaskPass {
             },
         };
         let kernel = self.kernels.entry(variant).or_insert_with(|| {
-            let (source, sample_type, constants) = match (variant.stencil, variant.multisampled) {
-                (None, multisampled) => (
-                    if multisampled {
-                        shader::APPLY_MASK_TEXTURE_MULTISAMPLED
-                    } else {
-                        shader::APPLY_MASK_TEXTURE
-                    },
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    vec![],
-                ),
-                (Some((reference, read_mask)), multisampled) => (
-                    if multisampled {
-                        shader::APPLY_MASK_STENCIL_MULTISAMPLED
-                    } else {
-                        shader::APPLY_MASK_STENCIL
-                    },
-                    wgpu::TextureSampleType::Uint,
-                    vec![
-                        ("STENCIL_REFERENCE", f64::from(reference)),
-                        ("STENCIL_READ_MASK", f64::from(read_mask)),
-                    ],
-                ),
-            };
-            ComputeKernel::with_constants(
-                ctx.device,
-                &source,
-                &[
-                    bind::uniform(0),
-                    bind::texture_with_samples(1, sample_type, variant.multisampled),
-                    bind::texture(2, wgpu::TextureSampleType::Float { filterable: false }),
-                    bind::storage_texture(3, AO_FORMAT),
+            let (source, layout) = program(variant.multisampled, variant.stencil.is_some());
+            let constants = match variant.stencil {
+                None => vec![],
+                Some((reference, read_mask)) => vec![
+                    ("STENCIL_REFERENCE", f64::from(reference)),
+                    ("STENCIL_READ_MASK", f64::from(read_mask)),
                 ],
-                &constants,
-            )
+            };
+            ComputeKernel::with_constants(ctx.device, &source, &layout, &constants)
         });
         let mask_view = texture.create_view(&wgpu::TextureViewDescriptor {
             aspect: if variant.stencil.is_some() {

@@ -159,7 +159,7 @@ pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 9] {
 }
 
 /// [`layout`] and what `method`'s kernel declares besides: VBAO's back-face thickness at 9.
-fn method_layout(method: Method) -> Vec<wgpu::BindGroupLayoutEntry> {
+pub(crate) fn method_layout(method: Method) -> Vec<wgpu::BindGroupLayoutEntry> {
     let mut entries = layout().to_vec();
     if method == Method::Vbao {
         entries.push(bind::texture(

@@ -347,3 +347,120 @@ pub mod bind {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gpu::PairFormat;
+    use crate::settings::{Method, NormalEncoding};
+    use crate::shader;
+    use linear_depth::DepthInput;
+
+    const DEPTH_INPUTS: [DepthInput; 4] = [
+        DepthInput::Ndc,
+        DepthInput::NdcMultisampled,
+        DepthInput::Linear,
+        DepthInput::LinearMultisampled,
+    ];
+    const PAIRS: [PairFormat; 2] = [PairFormat::Rg32Float, PairFormat::Rgba32Float];
+
+    /// Every program the library compiles with the layout it is compiled with, found as the
+    /// passes find them.
+    fn compiled() -> Vec<(ShaderSource, Vec<wgpu::BindGroupLayoutEntry>)> {
+        let mut all = Vec::new();
+        for input in DEPTH_INPUTS {
+            let i = input as usize;
+            all.push((
+                shader::LINEAR_DEPTH[i],
+                linear_depth::layout(input).to_vec(),
+            ));
+            all.push((shader::BACK_FACES[i], back_faces::layout(input).to_vec()));
+            all.push((
+                shader::UPSAMPLE[i],
+                resample::upsample_layout(input).to_vec(),
+            ));
+            for pair in PAIRS {
+                let layout = resample::downsample_layout(pair, input).to_vec();
+                all.push((shader::DOWNSAMPLE[pair as usize][i], layout));
+            }
+        }
+        for pair in PAIRS {
+            let p = pair as usize;
+            let spatial = [
+                (
+                    shader::SPATIAL_FILTER_HORIZONTAL[p],
+                    spatial_filter::horizontal_layout(pair),
+                ),
+                (
+                    shader::SPATIAL_FILTER_VERTICAL[p],
+                    spatial_filter::vertical_layout(pair),
+                ),
+            ];
+            all.extend(spatial);
+            let coefficients = guided_filter::layout(pair.texture_format()).to_vec();
+            all.push((shader::GUIDED_FILTER_COEFFICIENTS[p], coefficients));
+            all.push((
+                shader::TEMPORAL_FILTER[p],
+                temporal_filter::layout(pair).to_vec(),
+            ));
+        }
+        for encoding in NormalEncoding::ALL {
+            let (program, layout) = decode_normals::program(encoding);
+            all.push((program, layout.to_vec()));
+        }
+        for (multisampled, stencil) in [(false, false), (true, false), (false, true), (true, true)]
+        {
+            let (program, layout) = mask::program(multisampled, stencil);
+            all.push((program, layout.to_vec()));
+        }
+        for format in [wgpu::TextureFormat::R32Float, wgpu::TextureFormat::R16Float] {
+            let (program, layout) = depth_mips::program(format);
+            all.push((program, layout.to_vec()));
+        }
+        // MSVO's kernels run in `MsvoPass`, below.
+        for m in Method::ALL.into_iter().filter(|&m| m != Method::Msvo) {
+            all.push((shader::method(m), method::method_layout(m)));
+        }
+        let method_layout = method::layout().to_vec();
+        all.extend([
+            (
+                shader::NORMALS_FROM_DEPTH,
+                normals_from_depth::layout().to_vec(),
+            ),
+            (shader::EDGE_FILTER, edge_filter::layout().to_vec()),
+            (
+                shader::GUIDED_FILTER_OUTPUT,
+                guided_filter::layout(method::AO_FORMAT).to_vec(),
+            ),
+            (shader::HBAO_ROWS, separable_hbao::rows_layout()),
+            (shader::HBAO_COLUMNS, separable_hbao::columns_layout()),
+            (shader::MSVO_OBSCURANCE, method_layout),
+            (shader::MSVO_MERGE, msvo::merge_layout()),
+            (shader::DEBUG_VIEW, crate::debug::layout().to_vec()),
+            (
+                shader::DEPTH_TO_FLOAT,
+                crate::gpu::depth_to_float_layout().to_vec(),
+            ),
+            // Validated, never compiled: renderers paste it into shaders of their own.
+            (shader::OCCLUSION_FUNCTIONS, Vec::new()),
+        ]);
+        all
+    }
+
+    #[test]
+    fn every_programs_layout_matches_its_wgsl_bindings() {
+        let compiled = compiled();
+        for (program, layout) in &compiled {
+            shader::check_bindings(program, layout).unwrap_or_else(|e| panic!("{e}"));
+        }
+        for program in shader::ALL {
+            assert!(
+                compiled
+                    .iter()
+                    .any(|(p, _)| p.name == program.name && p.parts == program.parts),
+                "{} is compiled with no layout this test checks",
+                program.name
+            );
+        }
+    }
+}

@@ -32,6 +32,18 @@ const MERGE_PASS_NAMES: [&str; MSVO_MAX_LEVELS as usize - 1] = [
     "msvo_merge_3",
 ];
 
+/// The bindings of `shader::MSVO_MERGE`: every AO kernel's, the level's obscurance at 9 and
+/// the coarser level's merged obscurance at 10.
+pub(crate) fn merge_layout() -> Vec<wgpu::BindGroupLayoutEntry> {
+    let level_input = |binding| {
+        bind::texture(
+            binding,
+            wgpu::TextureSampleType::Float { filterable: false },
+        )
+    };
+    [&layout()[..], &[level_input(9), level_input(10)]].concat()
+}
+
 /// The two kernels and their intermediate textures, which follow the depth chain's size.
 pub struct MsvoPass {
     obscurance: ComputeKernel,
@@ -84,19 +96,9 @@ impl MsvoPass {
     /// Compiles both kernels: the bindings of every AO kernel, and for the merge the level's
     /// obscurance (binding 9) and the coarser level's merged obscurance (binding 10).
     pub fn new(device: &wgpu::Device) -> Self {
-        let level_input = |binding| {
-            bind::texture(
-                binding,
-                wgpu::TextureSampleType::Float { filterable: false },
-            )
-        };
         Self {
             obscurance: ComputeKernel::new(device, &shader::MSVO_OBSCURANCE, &layout()),
-            merge: ComputeKernel::new(
-                device,
-                &shader::MSVO_MERGE,
-                &[&layout()[..], &[level_input(9), level_input(10)]].concat(),
-            ),
+            merge: ComputeKernel::new(device, &shader::MSVO_MERGE, &merge_layout()),
             targets: None,
         }
     }

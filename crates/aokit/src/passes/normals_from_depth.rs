@@ -16,6 +16,16 @@ pub const NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
 /// built-in scenes and Sponza (docs/normals.md).
 pub const BEST_RECONSTRUCTION: NormalSource = NormalSource::Depth5tap;
 
+/// The bindings of `shader::NORMALS_FROM_DEPTH`: view uniforms, the linear depth, the normals
+/// written.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 3] {
+    [
+        bind::uniform(0),
+        bind::texture(1, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::storage_texture(2, NORMALS_FORMAT),
+    ]
+}
+
 /// Writes oct32 view-space normals from linear depth.
 pub struct NormalsFromDepthPass {
     /// One kernel per reconstruction, compiled the first time it is used.
@@ -37,11 +47,7 @@ impl NormalsFromDepthPass {
             ComputeKernel::with_constants(
                 device,
                 &shader::NORMALS_FROM_DEPTH,
-                &[
-                    bind::uniform(0),
-                    bind::texture(1, wgpu::TextureSampleType::Float { filterable: false }),
-                    bind::storage_texture(2, NORMALS_FORMAT),
-                ],
+                &layout(),
                 &[("SOURCE", f64::from(source as u32))],
             )
         })

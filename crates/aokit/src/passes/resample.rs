@@ -47,6 +47,41 @@ type DownsampleKey = (DepthInput, Downsample, u32, bool);
 /// What the upsample compiles in: input kind, mode, scale, bent normals, linear depth written.
 type UpsampleKey = (DepthInput, Upsample, u32, bool, bool);
 
+/// The bindings of `shader::DOWNSAMPLE[pair as usize][input as usize]`: view uniforms, the
+/// depth, normals and motion vectors in, then out.
+pub(crate) fn downsample_layout(
+    pair: PairFormat,
+    input: DepthInput,
+) -> [wgpu::BindGroupLayoutEntry; 7] {
+    [
+        bind::uniform(0),
+        input.layout_entry(1),
+        bind::texture(2, wgpu::TextureSampleType::Uint),
+        bind::texture(3, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
+        bind::storage_texture(5, NORMALS_FORMAT),
+        bind::storage_texture(6, pair.texture_format()),
+    ]
+}
+
+/// The bindings of `shader::UPSAMPLE[input as usize]`.
+pub(crate) fn upsample_layout(input: DepthInput) -> [wgpu::BindGroupLayoutEntry; 11] {
+    let float = wgpu::TextureSampleType::Float { filterable: false };
+    [
+        bind::uniform(0),
+        input.layout_entry(1),
+        bind::uniform(2),
+        bind::texture(3, wgpu::TextureSampleType::Uint),
+        bind::texture(4, float),
+        bind::texture(5, float),
+        bind::texture(6, float),
+        bind::storage_texture(7, AO_FORMAT),
+        bind::storage_texture(8, BENT_NORMALS_FORMAT),
+        bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
+        bind::storage_texture(10, LINEAR_DEPTH_FORMAT),
+    ]
+}
+
 /// The downsample and upsample kernels and the upsample's settings buffer.
 ///
 /// A half-resolution frame: down, the AO kernel at the working size, and up again.
@@ -140,22 +175,13 @@ impl ResamplePass {
             frame.bent_normals,
             frame.write_linear_depth,
         );
-        let float = wgpu::TextureSampleType::Float { filterable: false };
         let scale_constant = ("SCALE", f64::from(scale));
         let flag = |on: bool| f64::from(u8::from(on));
         self.downsamples.entry(down).or_insert_with(|| {
             ComputeKernel::with_constants(
                 device,
                 &shader::DOWNSAMPLE[self.pair as usize][frame.input as usize],
-                &[
-                    bind::uniform(0),
-                    frame.input.layout_entry(1),
-                    bind::texture(2, wgpu::TextureSampleType::Uint),
-                    bind::texture(3, float),
-                    bind::storage_texture(4, LINEAR_DEPTH_FORMAT),
-                    bind::storage_texture(5, NORMALS_FORMAT),
-                    bind::storage_texture(6, self.pair.texture_format()),
-                ],
+                &downsample_layout(self.pair, frame.input),
                 &[
                     ("MODE", f64::from(settings.downsample as u32)),
                     scale_constant,
@@ -167,19 +193,7 @@ impl ResamplePass {
             ComputeKernel::with_constants(
                 device,
                 &shader::UPSAMPLE[frame.input as usize],
-                &[
-                    bind::uniform(0),
-                    frame.input.layout_entry(1),
-                    bind::uniform(2),
-                    bind::texture(3, wgpu::TextureSampleType::Uint),
-                    bind::texture(4, float),
-                    bind::texture(5, float),
-                    bind::texture(6, float),
-                    bind::storage_texture(7, AO_FORMAT),
-                    bind::storage_texture(8, BENT_NORMALS_FORMAT),
-                    bind::sampler(9, wgpu::SamplerBindingType::NonFiltering),
-                    bind::storage_texture(10, LINEAR_DEPTH_FORMAT),
-                ],
+                &upsample_layout(frame.input),
                 &[
                     ("MODE", f64::from(settings.upsample as u32)),
                     scale_constant,

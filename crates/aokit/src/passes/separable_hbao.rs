@@ -12,6 +12,21 @@ use crate::shader;
 /// round it to 1/1024 near 2.
 pub const ROW_OCCLUSION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 
+/// The bindings of `shader::HBAO_ROWS`: every AO kernel's, and the row occlusion written.
+pub(crate) fn rows_layout() -> Vec<wgpu::BindGroupLayoutEntry> {
+    [
+        &layout()[..],
+        &[bind::storage_texture(9, ROW_OCCLUSION_FORMAT)],
+    ]
+    .concat()
+}
+
+/// The bindings of `shader::HBAO_COLUMNS`: every AO kernel's, and the row occlusion read.
+pub(crate) fn columns_layout() -> Vec<wgpu::BindGroupLayoutEntry> {
+    let row_occlusion = bind::texture(9, wgpu::TextureSampleType::Float { filterable: false });
+    [&layout()[..], &[row_occlusion]].concat()
+}
+
 /// The two kernels and the rows pass's output, which follows the size the passes run at.
 pub struct SeparableHbaoPass {
     rows: ComputeKernel,
@@ -23,21 +38,9 @@ impl SeparableHbaoPass {
     /// Compiles both kernels: the bindings of every AO kernel, and the rows pass's output at
     /// binding 9, written by the first and read by the second.
     pub fn new(device: &wgpu::Device) -> Self {
-        let with_row_occlusion = |entry| [&layout()[..], &[entry]].concat();
         Self {
-            rows: ComputeKernel::new(
-                device,
-                &shader::HBAO_ROWS,
-                &with_row_occlusion(bind::storage_texture(9, ROW_OCCLUSION_FORMAT)),
-            ),
-            columns: ComputeKernel::new(
-                device,
-                &shader::HBAO_COLUMNS,
-                &with_row_occlusion(bind::texture(
-                    9,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                )),
-            ),
+            rows: ComputeKernel::new(device, &shader::HBAO_ROWS, &rows_layout()),
+            columns: ComputeKernel::new(device, &shader::HBAO_COLUMNS, &columns_layout()),
             row_occlusion: None,
         }
     }

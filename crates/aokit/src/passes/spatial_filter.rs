@@ -33,6 +33,37 @@ pub enum SpatialOutput<'a> {
     AoAndDepth(&'a wgpu::TextureView),
 }
 
+/// The bindings both passes share: view uniforms, filter settings, normals, and each pass's
+/// first input (the AO along rows, the packed AO and depth along columns).
+fn shared_layout() -> [wgpu::BindGroupLayoutEntry; 4] {
+    [
+        bind::uniform(0),
+        bind::uniform(1),
+        bind::texture(2, wgpu::TextureSampleType::Uint),
+        bind::texture(3, wgpu::TextureSampleType::Float { filterable: false }),
+    ]
+}
+
+/// The bindings of `shader::SPATIAL_FILTER_HORIZONTAL[pair as usize]`: the shared ones, the
+/// linear depth, the packed AO and depth written.
+pub(crate) fn horizontal_layout(pair: PairFormat) -> Vec<wgpu::BindGroupLayoutEntry> {
+    let own = [
+        bind::texture(4, wgpu::TextureSampleType::Float { filterable: false }),
+        bind::storage_texture(5, pair.texture_format()),
+    ];
+    [&shared_layout()[..], &own].concat()
+}
+
+/// The bindings of `shader::SPATIAL_FILTER_VERTICAL[pair as usize]`: the shared ones and both
+/// outputs, the one not written bound to a stand-in.
+pub(crate) fn vertical_layout(pair: PairFormat) -> Vec<wgpu::BindGroupLayoutEntry> {
+    let own = [
+        bind::storage_texture(4, AO_FORMAT),
+        bind::storage_texture(5, pair.texture_format()),
+    ];
+    [&shared_layout()[..], &own].concat()
+}
+
 /// The kernels of the filter and its settings buffer.
 pub struct SpatialFilterPass {
     /// Per variant, compiled the first time settings that enable the filter ask for it: the
@@ -95,39 +126,22 @@ impl SpatialFilterPass {
                 ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
                 ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
             ];
-            // View, filter settings, normals, and each pass's first input: the AO along rows,
-            // the packed AO and depth along columns.
-            let shared = [
-                bind::uniform(0),
-                bind::uniform(1),
-                bind::texture(2, wgpu::TextureSampleType::Uint),
-                bind::texture(3, wgpu::TextureSampleType::Float { filterable: false }),
-            ];
-            let horizontal = [
-                bind::texture(4, wgpu::TextureSampleType::Float { filterable: false }),
-                bind::storage_texture(5, self.pair.texture_format()),
-            ];
-            // Both outputs are bound, the one not written to a stand-in.
-            let vertical = [
-                bind::storage_texture(4, AO_FORMAT),
-                bind::storage_texture(5, self.pair.texture_format()),
-            ];
-            let pair = self.pair as usize;
+            let pair = self.pair;
             self.kernels.entry(variant).or_insert_with(|| {
                 let vertical = |packed_output: bool| {
                     let packed = ("PACKED_OUTPUT", f64::from(u8::from(packed_output)));
                     ComputeKernel::with_constants(
                         device,
-                        &shader::SPATIAL_FILTER_VERTICAL[pair],
-                        &[&shared[..], &vertical].concat(),
+                        &shader::SPATIAL_FILTER_VERTICAL[pair as usize],
+                        &vertical_layout(pair),
                         &[&constants[..], &[packed]].concat(),
                     )
                 };
                 [
                     ComputeKernel::with_constants(
                         device,
-                        &shader::SPATIAL_FILTER_HORIZONTAL[pair],
-                        &[&shared[..], &horizontal].concat(),
+                        &shader::SPATIAL_FILTER_HORIZONTAL[pair as usize],
+                        &horizontal_layout(pair),
                         &constants,
                     ),
                     vertical(false),

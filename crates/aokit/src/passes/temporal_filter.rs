@@ -100,6 +100,23 @@ pub enum TemporalInput<'a> {
     Packed(&'a wgpu::TextureView),
 }
 
+/// The bindings of `shader::TEMPORAL_FILTER[pair as usize]`.
+pub(crate) fn layout(pair: PairFormat) -> [wgpu::BindGroupLayoutEntry; 10] {
+    let float = wgpu::TextureSampleType::Float { filterable: false };
+    [
+        bind::uniform(0),
+        bind::uniform(1),
+        bind::texture(2, float),
+        bind::texture(3, float),
+        bind::texture(4, float),
+        bind::texture(5, float),
+        bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
+        bind::storage_texture(7, AO_FORMAT),
+        bind::storage_texture(8, pair.texture_format()),
+        bind::storage_texture(9, AO_FORMAT),
+    ]
+}
+
 /// Runs the temporal filter.
 pub struct TemporalFilterPass {
     settings: TemporalSettings,
@@ -116,19 +133,7 @@ pub struct TemporalFilterPass {
 impl TemporalFilterPass {
     /// Compiles the kernel for each [`TemporalInput`], for histories in `pair`.
     pub fn new(device: &wgpu::Device, settings: &TemporalSettings, pair: PairFormat) -> Self {
-        let float = wgpu::TextureSampleType::Float { filterable: false };
-        let layout = [
-            bind::uniform(0),
-            bind::uniform(1),
-            bind::texture(2, float),
-            bind::texture(3, float),
-            bind::texture(4, float),
-            bind::texture(5, float),
-            bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
-            bind::storage_texture(7, AO_FORMAT),
-            bind::storage_texture(8, pair.texture_format()),
-            bind::storage_texture(9, AO_FORMAT),
-        ];
+        let layout = layout(pair);
         let kernel = |packed: bool| {
             ComputeKernel::with_constants(
                 device,

@@ -1,0 +1,7 @@
+// requires: common/encoding.wgsl
+// Binding 1 of `decode_normals` for encodings held in unorm or float texels.
+// `ENCODING` is the override of decode_normals.wgsl, which follows.
+@group(0) @binding(1) var encoded: texture_2d<f32>;
+fn load_normal(pixel: vec2<u32>) -> vec3<f32> {
+    return decode_normal_float(textureLoad(encoded, pixel, 0), ENCODING);
+}
