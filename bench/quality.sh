@@ -4,7 +4,7 @@
 # Sponza cameras. Takes a few minutes on 2 cores (the references are cached; later runs only
 # rerun the methods).
 #
-#   bash scripts/quality.sh [METHODS]        # METHODS: comma-separated, default: all of them
+#   bash bench/quality.sh [METHODS]        # METHODS: comma-separated, default: all of them
 set -euo pipefail
 cd "$(dirname "$0")/.."
 methods=${1:-all}
@@ -45,7 +45,7 @@ pixels are surfaces seen within about 17 degrees of edge-on (`|n . v| < 0.3`).
 GPU times here come from whatever adapter made the table (named below); on a software rasteriser
 they only rank presets against each other.
 
-Regenerate this page with `bash scripts/quality.sh`. It writes `target/quality/report.html`, the
+Regenerate this page with `bash bench/quality.sh`. It writes `target/quality/report.html`, the
 full report with every image and error map, and copies a few of them here.
 
 HEAD
