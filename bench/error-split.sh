@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Splits the error of the horizon and slice methods at `high` three ways, as docs/methods.md's
+# Splits the error of the horizon and slice methods at `high` three ways, as docs/notes/methods-investigations.md's
 # "Where GTAO's error against HBAO comes from" and "Where VBAO's error against GTAO comes from"
 # tables do:
 #
