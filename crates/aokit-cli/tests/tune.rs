@@ -1,5 +1,5 @@
 //! `aokit tune`: it runs, never makes a preset worse, and the presets the library ships are
-//! the table it wrote (docs/tuning.json).
+//! the table it wrote (bench/data/tuning.json).
 
 use std::path::Path;
 use std::process::Command;
@@ -126,7 +126,7 @@ fn unbounded_tunes_vbao_for_its_mean_error_alone() {
 
 #[test]
 fn the_presets_are_the_tuning_table() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/tuning.json");
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../bench/data/tuning.json");
     let json: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let results = json["results"].as_array().unwrap();
     // Every method but ssao-crytek, sao, ue4-ssao and msvo, whose presets keep their published

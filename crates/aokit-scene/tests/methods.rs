@@ -155,10 +155,11 @@ fn every_method_darkens_room_corners_more_than_open_floor() {
         let open_floor = frame.ao[pixel_of(&frame, Vec3::new(-0.3, 0.0, 2.5))];
         let corner = frame.ao[pixel_of(&frame, Vec3::new(3.93, 0.06, -3.93))];
         let wall_foot = frame.ao[pixel_of(&frame, Vec3::new(0.0, 0.05, -3.95))];
-        // HBAO+ darkens least: its weakness on surfaces seen at grazing angles (docs/methods.md).
+        // HBAO+ darkens least: its weakness on surfaces seen at grazing angles
+        // (docs/methods/hbao-plus.md).
         // Unreal's SSAO darkens the wall's foot least (0.97 here): the floor in front rises
         // towards the eye by half the radius per pixel at this size, and Unreal's weight
-        // drops all but its nearest samples (docs/methods.md, `ue4-ssao`).
+        // drops all but its nearest samples (docs/methods/ue4-ssao.md).
         let wall_margin = if method == Method::Ue4Ssao {
             0.02
         } else {

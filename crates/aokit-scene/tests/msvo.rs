@@ -103,7 +103,7 @@ fn room_corners_occlude_and_the_open_floor_does_not() {
 #[test]
 fn msvo_error_against_the_reference_at_high_is_recorded_and_bounded() {
     let gpu = gpu();
-    // Measured at 160x96 with 128 reference rays (docs/methods.md has the tables at 480x270):
+    // Measured at 160x96 with 128 reference rays (docs/methods/msvo.md has the tables at 480x270):
     // room 0.064, stairs 0.092, where AO 1 everywhere, a kernel that finds no occlusion,
     // scores 0.160 and 0.212, and pairs centred on their level texel's own depth instead of
     // the depth at their midpoint (planes then occlude themselves at the coarse levels) 0.17

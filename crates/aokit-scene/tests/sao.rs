@@ -74,7 +74,7 @@ const SIZE: [u32; 2] = [160, 96];
 #[test]
 fn sao_error_against_the_reference_at_high_is_recorded_and_bounded() {
     let gpu = gpu();
-    // Measured at 160x96 with 128 reference rays (docs/methods.md has the tables at 480x270):
+    // Measured at 160x96 with 128 reference rays (docs/methods/sao.md has the tables at 480x270):
     // room 0.117, stairs 0.164, where AO 1 everywhere, a kernel that finds no occlusion,
     // scores 0.160 and 0.212, and a black one far more. The paper's estimator darkens creases
     // to 0 and fades out far occluders, so it stays well above the horizon methods.

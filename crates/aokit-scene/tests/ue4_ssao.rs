@@ -142,7 +142,7 @@ fn both_versions_leave_an_open_plane_unoccluded_and_darken_room_corners() {
         );
         // Weakly: at 160x96 the radius spans 8 pixels there, and the floor in front of the
         // wall rises towards the eye by half a radius per pixel, so Unreal's weight drops
-        // all but the nearest floor samples (docs/methods.md, "where it fails").
+        // all but the nearest floor samples (docs/methods/ue4-ssao.md, "where it fails").
         assert!(
             open_floor > 0.99 && corner < open_floor - 0.05 && wall_foot < open_floor - 0.01,
             "{}: corner {corner}, wall foot {wall_foot}, open floor {open_floor}",
@@ -175,7 +175,8 @@ fn the_depth_only_version_is_finite_and_in_range_on_every_builtin_scene() {
 #[test]
 fn error_against_the_reference_at_high_is_recorded_and_bounded() {
     let gpu = gpu();
-    // Measured at 160x96 with 128 reference rays (docs/methods.md has the tables at 480x270):
+    // Measured at 160x96 with 128 reference rays (docs/methods/ue4-ssao.md has the tables at
+    // 480x270):
     // normal version room 0.130, stairs 0.161; depth-only 0.145 and 0.187. The bounds sit a
     // little above them and below AO 1 everywhere, a kernel that finds no occlusion (room
     // 0.160, stairs 0.212); a black kernel scores far more.

@@ -1,6 +1,6 @@
 // requires: common/view.wgsl, common/noise.wgsl, common/ao.wgsl, common/slice.wgsl
 // requires: common/horizon.wgsl
-// Separable HBAO (docs/methods.md, "separable HBAO"): hbao.wgsl's horizons along four fixed
+// Separable HBAO (docs/methods/hbao.md, "separable HBAO"): hbao.wgsl's horizons along four fixed
 // screen directions, +x and -x in a pass over rows, then +y and -y in a pass over columns, each
 // reading its line of linear depth from workgroup memory instead of the depth texture. The
 // approach is NVIDIA's compute-shader HBAO in their DirectX 11 SDK sample (SSAO11; Bavoil 2011,

@@ -1,6 +1,6 @@
 //! The presets' values: what `aokit tune` found best for each method at each preset's cost,
 //! over the built-in scenes and Sponza's four cameras at 480x270 (docs/tuning.md has the table,
-//! docs/tuning.json the numbers; `bash scripts/tuning.sh` measures them again, and a test fails
+//! bench/data/tuning.json the numbers; `bash bench/tuning.sh` measures them again, and a test fails
 //! until a new table is copied here).
 
 use crate::settings::{Method, Preset};

@@ -55,7 +55,7 @@ macro_rules! named_enum {
 pub(crate) use named_enum;
 
 named_enum! {
-    /// The AO method a pipeline runs. docs/methods.md has each one's formula and failure modes.
+    /// The AO method a pipeline runs. docs/methods/ has each one's formula and failure modes.
     ///
     /// ```
     /// use aokit::{AoSettings, Method};
@@ -943,7 +943,7 @@ impl Ue4SsaoSettings {
 }
 
 /// Sampling of `msvo`: sample pairs per level, how many levels, and Unity's thickness
-/// modifier (docs/methods.md, "msvo").
+/// modifier (docs/methods/msvo.md).
 ///
 /// ```
 /// use aokit::{AoSettings, Method, MsvoSettings, Preset};
@@ -1035,7 +1035,7 @@ pub struct HbaoSettings {
 }
 
 named_enum! {
-    /// How `hbao` marches its directions (docs/methods.md, "separable HBAO").
+    /// How `hbao` marches its directions (docs/methods/hbao.md, "separable HBAO").
     ///
     /// ```
     /// use aokit::{AoSettings, HbaoVariant, Method, Preset, SEPARABLE_HBAO_MAX_RADIUS_PX};
@@ -1231,7 +1231,7 @@ impl VbaoSettings {
         Self {
             slice_count,
             steps_per_side,
-            // A fraction of the radius, as tuned (docs/tuning.md); docs/methods.md shows what
+            // A fraction of the radius, as tuned (docs/tuning.md); docs/methods/vbao.md shows what
             // thinner and thicker occluders look like.
             thickness: tuned.knob,
             thickness_growth: 0.0,

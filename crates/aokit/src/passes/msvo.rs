@@ -3,7 +3,7 @@
 //! level's own obscurance times the depth-aware upsample of the merged level below it
 //! (`shaders/msvo_merge.wgsl`). The approach is Microsoft MiniEngine's SSAO as Unity
 //! PostProcessing ships it (Post-processing Stack v2, Multi-scale Volumetric Obscurance);
-//! docs/methods.md has the formula and its failures.
+//! docs/methods/msvo.md has the formula and its failures.
 
 use super::method::{MethodPass, layout};
 use super::{ComputeKernel, PassContext, bind};

@@ -1,6 +1,6 @@
 //! Separable HBAO (`hbao.variant = separable`): a pass over rows, then one over columns, each
 //! reading lines of linear depth from workgroup memory (`shaders/hbao_separable.wgsl`;
-//! docs/methods.md has what it trades for the speed).
+//! docs/methods/hbao.md has what it trades for the speed).
 
 use super::method::{MethodPass, layout};
 use super::{ComputeKernel, PassContext, bind};

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Regenerates docs/quality.md, the error tables and pictures of docs/methods.md, and their
-# images: every method against the ray-traced reference on the built-in scenes and the four
+# Regenerates docs/quality.md, the error tables and pictures of docs/methods.md and of the
+# method pages docs/methods/*.md, and their images: every method against the ray-traced reference on the built-in scenes and the four
 # Sponza cameras. Takes a few minutes on 2 cores (the references are cached; later runs only
 # rerun the methods).
 #
-#   bash scripts/quality.sh [METHODS]        # METHODS: comma-separated, default: all of them
+#   bash bench/quality.sh [METHODS]        # METHODS: comma-separated, default: all of them
 set -euo pipefail
 cd "$(dirname "$0")/.."
 methods=${1:-all}
@@ -45,7 +45,7 @@ pixels are surfaces seen within about 17 degrees of edge-on (`|n . v| < 0.3`).
 GPU times here come from whatever adapter made the table (named below); on a software rasteriser
 they only rank presets against each other.
 
-Regenerate this page with `bash scripts/quality.sh`. It writes `target/quality/report.html`, the
+Regenerate this page with `bash bench/quality.sh`. It writes `target/quality/report.html`, the
 full report with every image and error map, and copies a few of them here.
 
 HEAD
@@ -75,8 +75,9 @@ HEAD
     done
 } > docs/quality.md
 
-# docs/methods.md: each method's error table at every preset, and each method on every
-# built-in scene and one Sponza camera, spliced between the page's markers.
+# docs/methods/METHOD.md: each method's error table at every preset, spliced between the page's
+# markers; each method on every built-in scene and one Sponza camera (docs/images/methods/, shown
+# by its page and, all together, by docs/methods.md between its markers).
 pictures=docs/images/methods
 rm -rf "$pictures"
 mkdir -p "$pictures"
@@ -99,10 +100,14 @@ method_list=$(grep '^## ' "$out/metrics-by-method.md" | cut -c4-)
     done
 } > "$out/pictures.md"
 splice() { # splice MARKER FILE: replace what lies between <!-- MARKER --> and <!-- /MARKER -->
+    # in whichever of docs/methods.md and docs/methods/*.md holds the marker
+    local page
+    page=$(grep -l -F -- "<!-- $1 -->" docs/methods.md docs/methods/*.md | head -n 1)
+    [[ -n $page ]] || { echo "no marker $1" >&2; exit 1; }
     MARKER="$1" FILE="$2" perl -0pi -e '
         open my $f, "<", $ENV{FILE} or die; local $/; my $body = <$f>;
         s/(<!-- \Q$ENV{MARKER}\E -->\n).*?(<!-- \/\Q$ENV{MARKER}\E -->)/$1\n$body\n$2/s
-            or die "no marker $ENV{MARKER}\n"' docs/methods.md
+            or die "no marker $ENV{MARKER}\n"' "$page"
 }
 for method in $method_list; do
     awk -v m="## $method" '$0 == m {on = 1; next} /^## / {on = 0} on' \
@@ -123,7 +128,7 @@ variant() { # variant METHOD NAME IMAGES SUFFIX ARGS...: one more error table an
         cp "$out/$name/images/$view-$method-high.png" "$images/$view$suffix.png"
     done
 }
-# docs/methods.md's separable HBAO: each variant with the same four directions and steps (the
+# docs/methods/hbao.md's separable HBAO: each variant with the same four directions and steps (the
 # separable one reads no direction count), so both take 4 x step_count samples per pixel.
 if [[ $methods == all || ,$methods, == *,hbao,* ]]; then
     for v in per-pixel separable; do
@@ -131,7 +136,7 @@ if [[ $methods == all || ,$methods, == *,hbao,* ]]; then
             --set hbao.variant=$v --set hbao.direction_count=4
     done
 fi
-# docs/methods.md's VBAO measuring its occluders from the back faces' depth: --set
+# docs/methods/vbao.md's VBAO measuring its occluders from the back faces' depth: --set
 # vbao.back_faces=true starts from its presets tuned with back faces.
 if [[ $methods == all || ,$methods, == *,vbao,* ]]; then
     variant vbao vbao-back-faces docs/images/vbao-back-faces "" --set vbao.back_faces=true
@@ -144,4 +149,4 @@ for method in gtao vbao hbao hbao-plus; do
             --set sample_depth=interpolated
     fi
 done
-echo "wrote docs/quality.md, docs/methods.md's tables, $images/ and $pictures/"
+echo "wrote docs/quality.md, the tables of docs/methods.md and docs/methods/*.md, $images/ and $pictures/"

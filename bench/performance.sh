@@ -8,14 +8,14 @@
 # docs/performance.md's tables come from these files. Meant for a GPU: on a software adapter
 # the per-pass times mean nothing (docs/bench.md).
 #
-#   bash scripts/performance.sh [AOKIT] [OUT]
+#   bash bench/performance.sh [AOKIT] [OUT]
 #
 # AOKIT defaults to target/release/aokit (build it with `cargo build --release -p aokit-cli`),
 # OUT to target/performance.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=bench-common.sh
-source scripts/bench-common.sh "$@"
+source bench/bench-common.sh "$@"
 configurations=()
 for method in ssao-crytek ssao hbao hbao-plus gtao vbao sao ue4-ssao msvo; do
     for preset in low medium high ultra; do

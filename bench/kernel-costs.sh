@@ -8,14 +8,14 @@
 # these files. Meant for a GPU: on a software adapter the per-pass times mean nothing
 # (docs/bench.md).
 #
-#   bash scripts/kernel-costs.sh [AOKIT] [OUT]
+#   bash bench/kernel-costs.sh [AOKIT] [OUT]
 #
 # AOKIT defaults to target/release/aokit (build it with `cargo build --release -p aokit-cli`),
 # OUT to target/performance.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=bench-common.sh
-source scripts/bench-common.sh "$@"
+source bench/bench-common.sh "$@"
 configurations=("--method gtao --preset high")
 for px in 4 8 16 32 64 128; do
     configurations+=("--method gtao --preset high --set max_radius_px=$px")

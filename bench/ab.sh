@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # Times builds against each other: the same `aokit bench --json` run with each binary in turn,
 # for several rounds, so that drift of the machine (clocks, heat, neighbours) falls on every
-# build alike. Each run's JSON goes to OUT/bBUILD-rROUND.json; then scripts/ab_summary.py prints
+# build alike. Each run's JSON goes to OUT/bBUILD-rROUND.json; then bench/ab_summary.py prints
 # per configuration the wall time and every pass, each build's median over the rounds of its
 # per-run median, and its ratio to the first build. The way optimisations are measured before
 # they stay (docs/performance.md).
 #
-#   bash scripts/ab.sh [-r ROUNDS] [-o OUT] AOKIT_A AOKIT_B [AOKIT_C ...] -- BENCH_OPTION...
+#   bash bench/ab.sh [-r ROUNDS] [-o OUT] AOKIT_A AOKIT_B [AOKIT_C ...] -- BENCH_OPTION...
 #
 # ROUNDS defaults to 3, OUT to target/ab. For example, a change to the temporal filter against
 # the build before it, on a GPU:
 #
-#   bash scripts/ab.sh target/ab/before target/release/aokit -- --scene scenes/sponza.obj \
+#   bash bench/ab.sh target/ab/before target/release/aokit -- --scene scenes/sponza.obj \
 #       --camera atrium --size 1920x1080 --compare \
 #       "--set spatial.enabled=true --set temporal.enabled=true" "--set temporal.enabled=true"
 #
@@ -34,7 +34,7 @@ while [ $# -gt 0 ] && [ "$1" != -- ]; do
     shift
 done
 if [ $# -eq 0 ] || [ ${#builds[@]} -lt 2 ]; then
-    echo "usage: bash scripts/ab.sh [-r ROUNDS] [-o OUT] AOKIT_A AOKIT_B ... -- BENCH_OPTION..." >&2
+    echo "usage: bash bench/ab.sh [-r ROUNDS] [-o OUT] AOKIT_A AOKIT_B ... -- BENCH_OPTION..." >&2
     exit 2
 fi
 shift
@@ -46,4 +46,4 @@ for round in $(seq "$rounds"); do
         echo "round $round: ${builds[$i]}" >&2
     done
 done
-python3 scripts/ab_summary.py "$out" "${builds[@]}"
+python3 bench/ab_summary.py "$out" "${builds[@]}"

@@ -4,10 +4,10 @@
 # methods against the ray-traced reference on three built-in views and Sponza's atrium: the raw
 # AO of frame 0, the spatial filter alone on frame 0, and 12 frames of a still camera without
 # filtering and with temporal accumulation (the last frame's error and the flicker between
-# frames). The references are the ones scripts/quality.sh caches; a run takes about 8 minutes
+# frames). The references are the ones bench/quality.sh caches; a run takes about 8 minutes
 # on 2 cores.
 #
-#   bash scripts/noise.sh
+#   bash bench/noise.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 kinds=(ign blue gtao bayer white hilbert-r2)

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Prints docs/performance.md's GPU tables from the JSON that scripts/performance.sh and
-scripts/gpu-run.sh write.
+"""Prints docs/performance.md's GPU tables from the JSON that bench/performance.sh and
+bench/gpu-run.sh write.
 
-    python3 scripts/performance_tables.py DIR
+    python3 bench/performance_tables.py DIR
 
 DIR is either script's output directory. Prints, in the page's markdown, whichever of these
 DIR holds: the side-by-side tables of gpu-run.sh (aokit against XeGTAO per view and size,
@@ -151,7 +151,7 @@ def denoised(run):
 
 
 def side_by_side_table(out):
-    """scripts/gpu-run.sh's side-by-side runs: each configuration's frame and passes, and its
+    """bench/gpu-run.sh's side-by-side runs: each configuration's frame and passes, and its
     ratio to XeGTAO through naga with the denoiser in the same state (on or off)."""
     for scene, heading in SCENES:
         for path in sorted(out.glob(f"side-by-side-{scene}-*.json")):

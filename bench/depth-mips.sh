@@ -7,7 +7,7 @@
 # 960x540, where Sponza's radius spans far more pixels than at 480x270. The references (128
 # rays per pixel) are cached; the first run traces them (a few minutes on 2 cores).
 #
-#   bash scripts/depth-mips.sh [SIZE]    # default 960x540
+#   bash bench/depth-mips.sh [SIZE]    # default 960x540
 set -euo pipefail
 cd "$(dirname "$0")/.."
 size=${1:-960x540}

@@ -1,8 +1,8 @@
-"""Summarises the runs of scripts/ab.sh: per configuration, the wall time and each pass (and
+"""Summarises the runs of bench/ab.sh: per configuration, the wall time and each pass (and
 with --compare the wall time over the first configuration's), each build's median over the
 rounds of its per-run value, and its ratio to the first build.
 
-    python3 scripts/ab_summary.py OUT BUILD_A BUILD_B ...
+    python3 bench/ab_summary.py OUT BUILD_A BUILD_B ...
 """
 import glob
 import json

@@ -3,25 +3,25 @@
 # and new kernel, raw and with each denoiser, against XeGTAO High with and without its denoiser
 # by naga and by passthrough SPIR-V, interleaved in one `aokit bench --compare` run per view and
 # size: `room` and Sponza's atrium at 1920x1080 and 3840x2160. Then, time left, the per-pass set
-# of scripts/performance.sh. Builds nothing: the GPU machine runs the release binary and the
+# of bench/performance.sh. Builds nothing: the GPU machine runs the release binary and the
 # peer's SPIR-V compiled beforehand on a machine without a GPU:
 #
 #   cargo build --release -p aokit-cli
 #   target/release/aokit peer compile xegtao=PATH/TO/XeGTAO --out target/peer/xegtao
-#   bash scripts/gpu-run.sh OUT [AOKIT] [PEER]
+#   bash bench/gpu-run.sh OUT [AOKIT] [PEER]
 #
 # AOKIT defaults to target/release/aokit, PEER to target/peer/xegtao (without it the XeGTAO
 # rows are left out). Every file goes to OUT: device.txt (adapter, driver, date),
 # side-by-side-SCENE-SIZE.json, passes-sponza-atrium-SIZE.json; then
-# `python3 scripts/performance_tables.py OUT` prints the tables. Takes about 3 minutes on an
+# `python3 bench/performance_tables.py OUT` prints the tables. Takes about 3 minutes on an
 # H100.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=${1:?usage: bash scripts/gpu-run.sh OUT [AOKIT] [PEER]}
+out=${1:?usage: bash bench/gpu-run.sh OUT [AOKIT] [PEER]}
 aokit=${2:-target/release/aokit}
 peer=${3:-target/peer/xegtao}
 # shellcheck source=bench-common.sh
-source scripts/bench-common.sh "$aokit" "$out"
+source bench/bench-common.sh "$aokit" "$out"
 {
     date -u +"date: %Y-%m-%d %H:%M UTC"
     "$aokit" --version

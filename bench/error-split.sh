@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Splits the error of the horizon and slice methods at `high` three ways, as docs/methods.md's
+# Splits the error of the horizon and slice methods at `high` three ways, as docs/notes/methods-investigations.md's
 # "Where GTAO's error against HBAO comes from" and "Where VBAO's error against GTAO comes from"
 # tables do:
 #
@@ -9,9 +9,9 @@
 #   converged    many slices or directions and steps, the estimator without its sampling.
 #
 # Prints one markdown table per method (RMSE against the 512-ray references of
-# scripts/quality.sh, cached). A few minutes on 2 cores.
+# bench/quality.sh, cached). A few minutes on 2 cores.
 #
-#   bash scripts/error-split.sh [METHODS]    # METHODS: comma-separated, default gtao,hbao,vbao
+#   bash bench/error-split.sh [METHODS]    # METHODS: comma-separated, default gtao,hbao,vbao
 set -euo pipefail
 cd "$(dirname "$0")/.."
 methods=${1:-gtao,hbao,vbao}
