@@ -10,6 +10,27 @@ mod text;
 use crate::metrics::{Metrics, SequenceMetrics};
 
 /// One method at one preset, scored against a view's reference.
+///
+/// ```
+/// use aokit_eval::{compare, report::MethodResult};
+/// // A 2x1 image: one pixel right, one 0.2 too bright.
+/// let (ao, reference, mask) = ([0.5, 0.9], [0.5, 0.7], [true, true]);
+/// let all = compare([2, 1], &ao, &reference, &mask);
+/// let result = MethodResult {
+///     method: "gtao".into(),
+///     preset: "high".into(),
+///     all,
+///     edges: compare([2, 1], &ao, &reference, &[false, true]),
+///     grazing: compare([2, 1], &ao, &reference, &[false, false]),
+///     sequence: None,
+///     gpu_ms: None,
+///     samples_per_pixel: 18,
+///     ao_png: aokit_eval::encode_png_grey([2, 1], &ao)?,
+///     error_png: Vec::new(),
+/// };
+/// assert!((result.all.bias - 0.1).abs() < 1e-6);
+/// # Ok::<(), aokit_eval::EvalError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct MethodResult {
     /// Method name, such as `gtao`.
@@ -38,6 +59,17 @@ pub struct MethodResult {
 }
 
 /// One camera view: its reference and every method scored on it.
+///
+/// ```
+/// use aokit_eval::report::ViewResult;
+/// let view = ViewResult {
+///     name: "room / front".into(),
+///     reference_png: aokit_eval::encode_png_grey([1, 1], &[0.8])?,
+///     methods: Vec::new(),
+/// };
+/// assert!(view.methods.is_empty());
+/// # Ok::<(), aokit_eval::EvalError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct ViewResult {
     /// Shown as the section heading and in the `view` column.
@@ -49,6 +81,22 @@ pub struct ViewResult {
 }
 
 /// A whole comparison run.
+///
+/// ```
+/// use aokit_eval::report::{Report, ViewResult};
+/// let report = Report {
+///     title: "aokit: AO methods against the ray-traced reference".into(),
+///     notes: vec!["480x270 pixels".into()],
+///     error_range: 0.5,
+///     legend_png: Vec::new(),
+///     views: vec![ViewResult {
+///         name: "room / front".into(),
+///         reference_png: Vec::new(),
+///         methods: Vec::new(),
+///     }],
+/// };
+/// assert!(report.markdown().contains("room / front"));
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Report {
     /// Page title and Markdown heading.
@@ -67,22 +115,48 @@ pub struct Report {
 impl Report {
     /// One row per view, method and preset under a header row; `gpu_ms` empty when unknown,
     /// full precision numbers (`inf` for an exact match's PSNR, `NaN` for an empty selection).
+    ///
+    /// ```
+    /// # let report = aokit_eval::report::Report { title: "run".into(), notes: Vec::new(),
+    /// #     error_range: 0.5, legend_png: Vec::new(), views: Vec::new() };
+    /// std::fs::write(std::env::temp_dir().join("metrics.csv"), report.csv())?;
+    /// # Ok::<(), std::io::Error>(())
+    /// ```
     pub fn csv(&self) -> String {
         csv::render(self)
     }
 
     /// The title, notes and a GitHub table per view.
+    ///
+    /// ```
+    /// # let report = aokit_eval::report::Report { title: "run".into(), notes: Vec::new(),
+    /// #     error_range: 0.5, legend_png: Vec::new(), views: Vec::new() };
+    /// assert!(report.markdown().starts_with("# run"));
+    /// ```
     pub fn markdown(&self) -> String {
         markdown::render(self)
     }
 
     /// Per method, a GitHub table of its RMSE (and bias) against the reference in every view,
     /// one row per preset: how a method's error moves with its cost.
+    ///
+    /// ```
+    /// # let report = aokit_eval::report::Report { title: "run".into(), notes: Vec::new(),
+    /// #     error_range: 0.5, legend_png: Vec::new(), views: Vec::new() };
+    /// println!("{}", report.markdown_by_method());
+    /// ```
     pub fn markdown_by_method(&self) -> String {
         markdown::render_by_method(self)
     }
 
     /// One offline HTML page: images embedded as `data:` URIs, inline CSS and SVG, no scripts.
+    ///
+    /// ```
+    /// # let report = aokit_eval::report::Report { title: "run".into(), notes: Vec::new(),
+    /// #     error_range: 0.5, legend_png: Vec::new(), views: Vec::new() };
+    /// let page = report.html();
+    /// assert!(page.contains("<html") && !page.contains("<script"));
+    /// ```
     pub fn html(&self) -> String {
         html::render(self)
     }

@@ -35,6 +35,12 @@ impl Builtin {
     pub const ALL: [Builtin; 4] = [Builtin::Room, Builtin::Stairs, Builtin::Thin, Builtin::Open];
 
     /// The name `--scene` takes.
+    ///
+    /// ```
+    /// use aokit_scene::Builtin;
+    /// let names: Vec<&str> = Builtin::ALL.iter().map(|b| b.name()).collect();
+    /// assert_eq!(names, ["room", "stairs", "thin", "open"]);
+    /// ```
     pub fn name(self) -> &'static str {
         match self {
             Builtin::Room => "room",

@@ -255,6 +255,21 @@ struct CompositeUniforms {
 
 /// Where and how the frame was seen, for the composite. See [`CompositePass::encode`] for a
 /// whole frame.
+///
+/// ```
+/// use aokit_scene::composite::{CompositeView, Lighting};
+/// use aokit_scene::shadow::SunView;
+/// let scene = aokit_scene::Builtin::Room.build();
+/// let sun = SunView::new(Lighting::default().sun_direction, &scene.bounds);
+/// let projection = aokit::Projection::perspective(1.0, 16.0 / 9.0, 0.1, None);
+/// let eye = glam::Vec3::new(0.0, 1.5, 4.0);
+/// let view = CompositeView {
+///     projection: &projection,
+///     view_from_world: glam::Mat4::look_at_rh(eye, glam::Vec3::ZERO, glam::Vec3::Y),
+///     sun: &sun,
+/// };
+/// assert!(view.sun.texel_size > 0.0);
+/// ```
 pub struct CompositeView<'a> {
     /// The camera's projection.
     pub projection: &'a Projection,

@@ -196,6 +196,18 @@ impl ExternalAo {
 
     /// GPU time of each pass of the last run, when timing is on: see
     /// [`ExternalAo::enable_timing`].
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+    /// #     -> Result<(), Box<dyn std::error::Error>> {
+    /// if external.enable_timing(gpu) {
+    ///     external.run(gpu, 0)?;
+    ///     for time in external.last_times(gpu).transpose()?.unwrap_or_default() {
+    ///         println!("{}: {:.3} ms", time.name, time.ms);
+    ///     }
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn last_times(&self, gpu: &GpuContext) -> Option<Result<Vec<PassTime>, GpuError>> {
         self.pipeline.last_pass_times(&gpu.device)
     }

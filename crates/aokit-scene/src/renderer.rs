@@ -268,6 +268,18 @@ impl Renderer {
 
     /// GPU time of each AO pass of the last frame, when timing is on: see
     /// [`Renderer::enable_timing`].
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), Box<dyn std::error::Error>> {
+    /// if renderer.enable_timing(gpu) {
+    ///     renderer.render(gpu, camera, [640, 360], 0)?;
+    ///     let total: f64 = renderer.last_ao_times(gpu).transpose()?.unwrap_or_default()
+    ///         .iter().map(|time| time.ms).sum();
+    ///     println!("AO: {total:.3} ms");
+    /// }
+    /// # Ok(()) }
+    /// ```
     pub fn last_ao_times(&self, gpu: &GpuContext) -> Option<Result<Vec<PassTime>, GpuError>> {
         self.ao.last_pass_times(&gpu.device)
     }

@@ -150,7 +150,14 @@ impl GpuContext {
         pollster::block_on(Self::headless_with_features_async(wanted))
     }
 
-    /// The async form of [`GpuContext::headless_with_features`].
+    /// The async form of [`GpuContext::headless_with_features`], for a caller with an executor
+    /// of its own.
+    ///
+    /// ```no_run
+    /// # async fn f() -> Result<(), aokit::GpuError> {
+    /// let gpu = aokit::GpuContext::headless_with_features_async(wgpu::Features::empty()).await?;
+    /// # Ok(()) }
+    /// ```
     pub async fn headless_with_features_async(wanted: wgpu::Features) -> Result<Self, GpuError> {
         let descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
         let backends = descriptor.backends;
@@ -314,6 +321,15 @@ pub enum PairFormat {
 
 impl PairFormat {
     /// `Rg32Float` where `device` can write it, else `Rgba32Float`.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device) {
+    /// use aokit::gpu::PairFormat;
+    /// // wgpu's GL backend has no two-channel storage formats.
+    /// let pair = PairFormat::of(device);
+    /// assert!(pair == PairFormat::Rg32Float || pair == PairFormat::Rgba32Float);
+    /// # }
+    /// ```
     pub fn of(device: &wgpu::Device) -> Self {
         if writes_storage(device, wgpu::TextureFormat::Rg32Float) {
             Self::Rg32Float
@@ -323,6 +339,12 @@ impl PairFormat {
     }
 
     /// The texture format of the targets.
+    ///
+    /// ```
+    /// use aokit::gpu::PairFormat;
+    /// assert_eq!(PairFormat::Rg32Float.texture_format(), wgpu::TextureFormat::Rg32Float);
+    /// assert_eq!(PairFormat::Rgba32Float.texture_format(), wgpu::TextureFormat::Rgba32Float);
+    /// ```
     pub fn texture_format(self) -> wgpu::TextureFormat {
         match self {
             Self::Rg32Float => wgpu::TextureFormat::Rg32Float,

@@ -29,6 +29,7 @@ mod spiral;
 pub mod timing;
 mod uniforms;
 
+pub use debug::DebugView;
 pub use error::AoError;
 pub use gpu::{AdapterKind, GpuContext, GpuError};
 pub use inputs::{AoInputs, AoMask, InputError};

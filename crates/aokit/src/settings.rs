@@ -37,6 +37,13 @@ macro_rules! named_enum {
             pub const ALL: [$name; [$($text),+].len()] = [$($name::$variant),+];
 
             /// The name used on the command line and in settings files.
+            ///
+            #[doc = concat!("```\nuse aokit::", stringify!($name), ";\n")]
+            /// // Every value reads back from its name, as `--set` and settings files give it.
+            #[doc = concat!("for value in ", stringify!($name), "::ALL {")]
+            #[doc = concat!("    assert_eq!(value.name().parse::<", stringify!($name), ">(), Ok(value));")]
+            /// }
+            /// ```
             pub fn name(self) -> &'static str {
                 match self {
                     $($name::$variant => $text,)+

@@ -771,6 +771,12 @@ pub fn check_layout(
 }
 
 /// `[(name, offset)]` of a `#[repr(C)]` struct's fields, for [`check_layout`].
+///
+/// ```
+/// #[repr(C)]
+/// struct Pair { a: f32, b: [f32; 2] }
+/// assert_eq!(aokit::field_offsets!(Pair { a, b }), &[("a", 0), ("b", 4)]);
+/// ```
 #[macro_export]
 macro_rules! field_offsets {
     ($ty:ty { $($field:ident),* $(,)? }) => {

@@ -34,6 +34,32 @@ pub struct PassTime {
 /// [`last_pass_times`] (see [`PassTime`]). Public so that passes outside aokit (a tool's peer
 /// implementation, timed beside aokit's) are timed the same way.
 ///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, pipeline: &wgpu::ComputePipeline,
+/// #      bind_group: &wgpu::BindGroup) -> Result<(), aokit::GpuError> {
+/// use aokit::timing::PassTimer;
+/// let Some(mut timer) = PassTimer::new(device, queue) else {
+///     return Ok(()); // no TIMESTAMP_QUERY on this device
+/// };
+/// timer.begin_frame();
+/// let mut encoder = device.create_command_encoder(&Default::default());
+/// {
+///     let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+///         label: Some("my_pass"),
+///         timestamp_writes: timer.pass("my_pass"),
+///     });
+///     pass.set_pipeline(pipeline);
+///     pass.set_bind_group(0, bind_group, &[]);
+///     pass.dispatch_workgroups(240, 135, 1);
+/// }
+/// timer.resolve(&mut encoder);
+/// queue.submit([encoder.finish()]);
+/// for time in timer.read(device)? {
+///     println!("{}: {:.3} ms", time.name, time.ms);
+/// }
+/// # Ok(()) }
+/// ```
+///
 /// [`AoPipeline`]: crate::AoPipeline
 /// [`enable_timing`]: crate::AoPipeline::enable_timing
 /// [`last_pass_times`]: crate::AoPipeline::last_pass_times
@@ -47,6 +73,12 @@ pub struct PassTimer {
 
 impl PassTimer {
     /// A timer, or `None` when the device lacks `TIMESTAMP_QUERY`.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext) {
+    /// let timed = aokit::timing::PassTimer::new(&gpu.device, &gpu.queue).is_some();
+    /// # }
+    /// ```
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Option<Self> {
         if !device.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
             return None;
@@ -81,11 +113,27 @@ impl PassTimer {
     }
 
     /// Forgets the passes of the previous frame.
+    ///
+    /// ```no_run
+    /// # fn f(timer: &mut aokit::timing::PassTimer) {
+    /// // At the start of each frame's recording, before its first `pass`.
+    /// timer.begin_frame();
+    /// # }
+    /// ```
     pub fn begin_frame(&mut self) {
         self.names.clear();
     }
 
     /// Timestamp writes for the next pass, or `None` once the set is full.
+    ///
+    /// ```no_run
+    /// # fn f(timer: &mut aokit::timing::PassTimer, encoder: &mut wgpu::CommandEncoder) {
+    /// let pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+    ///     label: Some("blur"),
+    ///     timestamp_writes: timer.pass("blur"),
+    /// });
+    /// # }
+    /// ```
     pub fn pass(&mut self, name: &'static str) -> Option<wgpu::ComputePassTimestampWrites<'_>> {
         let index = self.names.len() as u32;
         if index >= MAX_PASSES {
@@ -100,6 +148,13 @@ impl PassTimer {
     }
 
     /// Records the copy of this frame's timestamps to the read-back buffer.
+    ///
+    /// ```no_run
+    /// # fn f(timer: &aokit::timing::PassTimer, encoder: &mut wgpu::CommandEncoder) {
+    /// // After the frame's last timed pass, into the same encoder.
+    /// timer.resolve(encoder);
+    /// # }
+    /// ```
     pub fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
         let count = 2 * self.names.len() as u32;
         if count == 0 {
@@ -111,6 +166,12 @@ impl PassTimer {
 
     /// Reads the last resolved frame's pass times; call after its commands were submitted.
     /// Blocks until the GPU has finished them.
+    ///
+    /// ```no_run
+    /// # fn f(timer: &aokit::timing::PassTimer, device: &wgpu::Device) -> Result<(), aokit::GpuError> {
+    /// let total_ms: f64 = timer.read(device)?.iter().map(|time| time.ms).sum();
+    /// # Ok(()) }
+    /// ```
     pub fn read(&self, device: &wgpu::Device) -> Result<Vec<PassTime>, GpuError> {
         let count = 2 * self.names.len() as u64;
         if count == 0 {

@@ -106,6 +106,28 @@ pub struct ComputeKernel {
 impl ComputeKernel {
     /// Compiles `source` with a bind group layout of `entries` at group 0.
     ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device) {
+    /// use aokit::passes::{ComputeKernel, bind};
+    /// use aokit::shader::ShaderSource;
+    /// const CLEAR: ShaderSource = ShaderSource {
+    ///     name: "clear",
+    ///     parts: &["
+    /// @group(0) @binding(0) var target: texture_storage_2d<r32float, write>;
+    /// @compute @workgroup_size(8, 8)
+    /// fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    ///     textureStore(target, id.xy, vec4<f32>(1.0));
+    /// }"],
+    /// };
+    /// let kernel = ComputeKernel::new(
+    ///     device,
+    ///     &CLEAR,
+    ///     &[bind::storage_texture(0, wgpu::TextureFormat::R32Float)],
+    /// );
+    /// assert_eq!(kernel.name(), "clear");
+    /// # }
+    /// ```
+    ///
     /// # Panics
     /// When `source` does not parse or has no compute entry point `main`: shader text is part of
     /// the program, and every library shader is validated by the tests.
@@ -282,6 +304,12 @@ impl ComputeKernel {
 /// ```
 pub mod bind {
     /// A uniform buffer, of any size: each dispatch checks it against the shader's struct.
+    ///
+    /// ```
+    /// // `@group(0) @binding(0) var<uniform> view: ViewUniforms;`
+    /// let entry = aokit::passes::bind::uniform(0);
+    /// assert!(matches!(entry.ty, wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, .. }));
+    /// ```
     pub fn uniform(binding: u32) -> wgpu::BindGroupLayoutEntry {
         entry(
             binding,
@@ -294,6 +322,12 @@ pub mod bind {
     }
 
     /// A single-sampled 2D texture (`texture_2d<T>` or `texture_depth_2d`, by `sample_type`).
+    ///
+    /// ```
+    /// // `@group(0) @binding(3) var normals: texture_2d<u32>;`
+    /// let entry = aokit::passes::bind::texture(3, wgpu::TextureSampleType::Uint);
+    /// assert!(matches!(entry.ty, wgpu::BindingType::Texture { multisampled: false, .. }));
+    /// ```
     pub fn texture(
         binding: u32,
         sample_type: wgpu::TextureSampleType,
@@ -302,6 +336,13 @@ pub mod bind {
     }
 
     /// A 2D texture, multisampled (`texture_multisampled_2d`, read by sample index) or not.
+    ///
+    /// ```
+    /// // `@group(0) @binding(1) var depth: texture_depth_multisampled_2d;`
+    /// use aokit::passes::bind;
+    /// let entry = bind::texture_with_samples(1, wgpu::TextureSampleType::Depth, true);
+    /// assert!(matches!(entry.ty, wgpu::BindingType::Texture { multisampled: true, .. }));
+    /// ```
     pub fn texture_with_samples(
         binding: u32,
         sample_type: wgpu::TextureSampleType,
@@ -319,6 +360,15 @@ pub mod bind {
 
     /// A write-only 2D storage texture of `format`, as the shader's
     /// `texture_storage_2d<format, write>` declares it.
+    ///
+    /// ```
+    /// // `@group(0) @binding(4) var ao_out: texture_storage_2d<r32float, write>;`
+    /// let entry = aokit::passes::bind::storage_texture(4, wgpu::TextureFormat::R32Float);
+    /// assert!(matches!(
+    ///     entry.ty,
+    ///     wgpu::BindingType::StorageTexture { access: wgpu::StorageTextureAccess::WriteOnly, .. }
+    /// ));
+    /// ```
     pub fn storage_texture(
         binding: u32,
         format: wgpu::TextureFormat,
@@ -334,6 +384,13 @@ pub mod bind {
     }
 
     /// A sampler of binding type `ty`, which must suit the textures it samples.
+    ///
+    /// ```
+    /// // `@group(0) @binding(5) var point_clamp: sampler;` over unfilterable depth.
+    /// use aokit::passes::bind;
+    /// let entry = bind::sampler(5, wgpu::SamplerBindingType::NonFiltering);
+    /// assert_eq!(entry.ty, wgpu::BindingType::Sampler(wgpu::SamplerBindingType::NonFiltering));
+    /// ```
     pub fn sampler(binding: u32, ty: wgpu::SamplerBindingType) -> wgpu::BindGroupLayoutEntry {
         entry(binding, wgpu::BindingType::Sampler(ty))
     }
