@@ -2,6 +2,8 @@
 //! gathered in one test binary (one link instead of one per file). Each file is a module, so a
 //! test is named `module::test`, as in `cargo test -p aokit-cli --test cli ground_truth::`.
 
+mod common;
+
 mod animate;
 mod bench;
 mod cli;
