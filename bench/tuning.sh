@@ -2,7 +2,7 @@
 # Regenerates bench/data/tuning.json and the table of docs/tuning.md: `aokit tune` over the built-in
 # scenes and the four Sponza cameras at 480x270 against 512-ray references (cached after the
 # first run; about 10 minutes on 2 cores). The presets (crates/aokit/src/presets.rs) are this
-# table: crates/aokit-cli/tests/tune.rs fails until a changed table is copied there.
+# table: crates/aokit-cli/tests/cli/tune.rs fails until a changed table is copied there.
 #
 #   bash bench/tuning.sh
 set -euo pipefail

@@ -934,7 +934,7 @@ mod adapter_tests {
     /// wgpu's GL backend (llvmpipe's here) lacks `Rg32Float` storage textures alone: aokit
     /// takes its adapter, stores the two-channel targets in `Rgba32Float` there, and finds
     /// every other format it writes. The frames it renders there are compared with Vulkan's in
-    /// `aokit-scene/tests/backends.rs`.
+    /// `aokit-scene/tests/gpu/backends.rs`.
     #[test]
     fn gl_adapters_are_usable_with_four_channel_pairs() {
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {

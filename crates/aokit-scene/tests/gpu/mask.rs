@@ -2,7 +2,7 @@
 //! fractional mask values, changes nothing elsewhere, and stays exact with every filter on and
 //! below full resolution, since it is the frame's last pass.
 
-mod common;
+use crate::common;
 
 use aokit::gpu::{create_texture_2d, read_texture_f32};
 use aokit::{

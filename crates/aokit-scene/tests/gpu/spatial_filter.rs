@@ -2,7 +2,7 @@
 //! CPU implementations of the same separable bilateral blur and guided filter, and the two
 //! kinds' errors against the ray-traced reference (docs/denoise.md).
 
-mod common;
+use crate::common;
 
 use aokit::{AoSettings, DepthWeight, SpatialKind, SpatialSettings};
 use aokit_eval::depth_edge_mask;

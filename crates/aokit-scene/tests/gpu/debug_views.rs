@@ -2,7 +2,7 @@
 //! edges mark silhouettes and creases but not planes, and views the outputs cannot give are
 //! refused naming the setting.
 
-mod common;
+use crate::common;
 
 use aokit::debug::{AoDebug, DebugStyle, DebugView};
 use aokit::{AoInputs, AoPipeline, AoSettings, Method, NormalEncoding, Preset, Resolution};

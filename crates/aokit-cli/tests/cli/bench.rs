@@ -1,8 +1,10 @@
 //! `aokit bench`, at tiny sizes: the structure of its output, never the times' magnitudes.
 
-use std::process::{Command, Output};
+use std::process::Output;
 
 use serde_json::Value;
+
+use crate::common::{command, output, text};
 
 /// A tiny, quick run: every test starts from these.
 const TINY: [&str; 8] = [
@@ -11,16 +13,7 @@ const TINY: [&str; 8] = [
 
 fn bench(args: &[&str]) -> Output {
     let dir = tempfile::tempdir().unwrap();
-    Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .arg("bench")
-        .args(args)
-        .current_dir(dir.path())
-        .output()
-        .expect("run aokit")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
+    output(command(dir.path(), &["bench"]).args(args))
 }
 
 /// Runs a bench that must succeed; returns stdout and stderr.

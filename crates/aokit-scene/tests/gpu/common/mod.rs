@@ -1,4 +1,4 @@
-//! Helpers the GPU tests share: each test file is its own crate and uses some of them.
+//! Helpers the GPU tests share: each test module uses some of them.
 #![allow(dead_code)]
 
 use aokit::gpu::upload_texture_2d;

@@ -1,6 +1,6 @@
 //! Every AO method on the built-in scenes, on whatever adapter exists (lavapipe in CI).
 
-mod common;
+use crate::common;
 
 use aokit::{
     AoSettings, DepthMips, GpuContext, Method, NoiseKind, NoiseSettings, Preset, SampleDepth,

@@ -3,7 +3,7 @@
 //! adapter exists (lavapipe in CI). The checks every method shares (range, sky, open plane,
 //! corners) are in methods.rs.
 
-mod common;
+use crate::common;
 
 use aokit::{AoSettings, GpuContext, Method, MsvoSettings, Preset, Resolution};
 use aokit_scene::{Builtin, Frame, Scene};

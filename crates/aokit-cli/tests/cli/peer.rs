@@ -8,6 +8,8 @@ use std::process::{Command, Output};
 
 use serde_json::Value;
 
+use crate::common::{command, failure, ok, output};
+
 fn stand_in() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/peer-stand-in")
 }
@@ -18,27 +20,7 @@ fn peer_arg(dir: &Path) -> String {
 
 /// Runs aokit in `dir` with `env` added.
 fn aokit(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> Output {
-    let mut command = Command::new(env!("CARGO_BIN_EXE_aokit"));
-    command.args(args).current_dir(dir);
-    for (key, value) in env {
-        command.env(key, value);
-    }
-    command.output().expect("run aokit")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
-
-fn ok(out: &Output) -> String {
-    assert!(out.status.success(), "{}", text(&out.stderr));
-    text(&out.stdout)
-}
-
-/// The error text of a run that must fail.
-fn failure(out: &Output) -> String {
-    assert!(!out.status.success(), "succeeded: {}", text(&out.stdout));
-    text(&out.stderr)
+    output(command(dir, args).envs(env.iter().copied()))
 }
 
 /// Whether glslangValidator runs here.

@@ -3,7 +3,7 @@
 //! occluded, its error against the ray-traced reference beside per-pixel HBAO's at the same
 //! samples, the radius clamp at the workgroup's apron, and the filters and the mask after it.
 
-mod common;
+use crate::common;
 
 use aokit::gpu::read_texture_f32;
 use aokit::{

@@ -1,6 +1,6 @@
 //! The temporal filter over frame sequences, on whatever adapter exists (lavapipe in CI).
 
-mod common;
+use crate::common;
 
 use aokit::gpu::read_texture_f32;
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset};

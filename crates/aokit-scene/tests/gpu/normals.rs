@@ -1,8 +1,8 @@
 //! Normal encodings and sources through the scene renderer, on whatever adapter exists
 //! (lavapipe in CI). `measure_for_docs` prints the tables of docs/normals.md:
-//! `cargo test --release -p aokit-scene --test normals -- --ignored --nocapture`.
+//! `cargo test --release -p aokit-scene --test gpu normals:: -- --ignored --nocapture`.
 
-mod common;
+use crate::common;
 
 use aokit::normals::angle_degrees;
 use aokit::{AoSettings, GpuContext, NormalEncoding, NormalSource};

@@ -5,7 +5,7 @@
 //! Skipped (with a notice) where no GL adapter exists, unless `AOKIT_REQUIRE_GL` is set, as CI
 //! sets it.
 
-mod common;
+use crate::common;
 
 use aokit::gpu::PairFormat;
 use aokit::{AoSettings, GpuContext, Method, Preset, Resolution, SpatialKind};

@@ -1,16 +1,13 @@
 //! `aokit reference`, `aokit ao` and `aokit compare`, run in fresh temporary directories.
 
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
+
+use crate::common::{command, output, text};
 
 fn aokit(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .args(args)
-        .current_dir(dir)
-        // A cache of the test's own, so a run never reuses another's references.
-        .env("AOKIT_CACHE", dir.join("cache"))
-        .output()
-        .expect("run aokit")
+    // A cache of the test's own, so a run never reuses another's references.
+    output(command(dir, args).env("AOKIT_CACHE", dir.join("cache")))
 }
 
 fn ok(dir: &Path, args: &[&str]) -> String {
@@ -18,9 +15,9 @@ fn ok(dir: &Path, args: &[&str]) -> String {
     assert!(
         out.status.success(),
         "aokit {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
+        text(&out.stderr)
     );
-    String::from_utf8_lossy(&out.stdout).into_owned()
+    text(&out.stdout)
 }
 
 fn exr(path: &Path) -> Vec<f32> {

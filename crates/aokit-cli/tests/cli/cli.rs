@@ -1,19 +1,8 @@
 //! The `aokit` binary, run in fresh temporary directories.
 
 use std::path::Path;
-use std::process::{Command, Output};
 
-fn aokit(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run aokit")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use crate::common::{aokit, command, output, text};
 
 fn read_exr_channel(path: &Path, name: &str) -> (Vec<f32>, [usize; 2]) {
     use exr::prelude::*;
@@ -210,12 +199,10 @@ fn bad_arguments_exit_2_and_name_the_problem() {
 #[test]
 fn an_adapter_name_that_matches_nothing_lists_the_adapters() {
     let dir = tempfile::tempdir().unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .args(["render", "--size", "8x8"])
-        .env("WGPU_ADAPTER_NAME", "no-such-gpu-9000")
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let out = output(
+        command(dir.path(), &["render", "--size", "8x8"])
+            .env("WGPU_ADAPTER_NAME", "no-such-gpu-9000"),
+    );
     let stderr = text(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(
@@ -228,12 +215,8 @@ fn an_adapter_name_that_matches_nothing_lists_the_adapters() {
 fn a_machine_without_an_adapter_gets_an_install_hint() {
     let dir = tempfile::tempdir().unwrap();
     // Metal does not exist on Linux or Windows, so asking only for it finds no adapter.
-    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .args(["render", "--size", "8x8"])
-        .env("WGPU_BACKEND", "metal")
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let out =
+        output(command(dir.path(), &["render", "--size", "8x8"]).env("WGPU_BACKEND", "metal"));
     let stderr = text(&out.stderr);
     if cfg!(target_os = "macos") {
         return;

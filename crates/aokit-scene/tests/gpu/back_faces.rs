@@ -1,7 +1,7 @@
 //! VBAO measuring its occluders from the back faces' depth (`vbao.back_faces`), on lavapipe in
 //! CI: the thickness it reads, its error against the reference, and the inputs it refuses.
 
-mod common;
+use crate::common;
 
 use aokit::gpu::{create_texture_2d, read_texture_f32};
 use aokit::{

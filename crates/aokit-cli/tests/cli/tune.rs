@@ -2,38 +2,30 @@
 //! the table it wrote (bench/data/tuning.json).
 
 use std::path::Path;
-use std::process::Command;
 
 use aokit::{AoSettings, Method, Preset};
 use serde_json::Value;
+
+use crate::common::{command, ok, output};
 
 /// Runs `aokit tune` on the built-in room, one round at the `low` preset, with `args` added,
 /// in a fresh directory; returns the directory and its tune.json.
 fn tune_room(args: &[&str]) -> (tempfile::TempDir, Value) {
     let dir = tempfile::tempdir().unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .args([
-            "tune",
-            "--view",
-            "room",
-            "--presets",
-            "low",
-            "--rounds",
-            "1",
-            "--out",
-            "t",
-            "--cache",
-            "cache",
-        ])
-        .args(args)
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let tune = [
+        "tune",
+        "--view",
+        "room",
+        "--presets",
+        "low",
+        "--rounds",
+        "1",
+        "--out",
+        "t",
+        "--cache",
+        "cache",
+    ];
+    ok(&output(command(dir.path(), &tune).args(args)));
     let json = std::fs::read_to_string(dir.path().join("t/tune.json")).unwrap();
     let json = serde_json::from_str(&json).unwrap();
     (dir, json)

@@ -9,7 +9,7 @@
 //! checks that every resolve stays within the conventions' tolerance over all pixels, and that
 //! a min resolve beats an averaged one at the edges.
 
-mod common;
+use crate::common;
 
 use aokit::gpu::{read_texture, read_texture_f32, upload_texture_2d};
 use aokit::{AoInputs, AoPipeline, AoSettings, Method, NormalEncoding, Preset};

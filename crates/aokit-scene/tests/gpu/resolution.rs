@@ -2,7 +2,7 @@
 //! CI): every combination of resolution, downsample, upsample and filter placement, motion
 //! vectors at working resolution, and the distance to full-resolution AO on the built-in scenes.
 
-mod common;
+use crate::common;
 
 use aokit::gpu::{read_texture_f32, read_texture_rgba16f, upload_texture_2d};
 use aokit::normals::pack_oct32;

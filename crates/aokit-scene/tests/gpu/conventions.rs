@@ -5,7 +5,7 @@
 //! against the reference traced through the same camera, with one tolerance, and against the
 //! `Depth32Float` AO of its camera.
 
-mod common;
+use crate::common;
 
 use aokit::gpu::{read_texture, read_texture_f32, upload_texture_2d};
 use aokit::normals::{encode_texels, unpack_oct32};

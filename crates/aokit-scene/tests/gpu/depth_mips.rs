@@ -3,7 +3,7 @@
 //! kernels unchanged where no sample reaches a coarser level, their error against the
 //! reference with it on, and the error a device without fp16 storage gets.
 
-mod common;
+use crate::common;
 
 use aokit::{
     AoError, AoInputs, AoPipeline, AoSettings, DepthMips, Method, Preset, Projection, SampleDepth,

@@ -2,7 +2,7 @@
 //! against the ray-traced reference, on whatever adapter exists (lavapipe in CI). The checks
 //! every method shares (range, sky, open plane, corners, clamps) are in methods.rs.
 
-mod common;
+use crate::common;
 
 use aokit::{AoInputs, AoPipeline, AoSettings, Method, Preset, Projection};
 use aokit_scene::Builtin;

@@ -1,19 +1,8 @@
 //! `aokit render`'s composite flags, run in fresh temporary directories.
 
 use std::path::Path;
-use std::process::{Command, Output};
 
-fn aokit(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run aokit")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use crate::common::{aokit, text};
 
 /// Renders the room at a small size into `dir/out` with `extra` flags; returns (ao.png, lit.png)
 /// pixels.

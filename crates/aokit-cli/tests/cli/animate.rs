@@ -1,17 +1,13 @@
 //! `aokit render --animate`, run in fresh temporary directories.
 
 use std::path::Path;
-use std::process::Command;
+
+use crate::common::{command, output, text};
 
 /// Runs `aokit render` with `args` in `dir`, returning its stderr; panics if it fails.
 fn render(dir: &Path, args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_aokit"))
-        .arg("render")
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run aokit");
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    let out = output(command(dir, &["render"]).args(args));
+    let stderr = text(&out.stderr);
     assert!(out.status.success(), "{args:?}: {stderr}");
     stderr
 }

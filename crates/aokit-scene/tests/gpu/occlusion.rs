@@ -1,7 +1,7 @@
 //! Occlusion in shading, on whatever adapter exists (lavapipe in CI): the WGSL functions against
 //! their CPU reference, and the lit composite's multi-bounce and specular occlusion.
 
-mod common;
+use crate::common;
 
 use aokit::occlusion::{
     multi_bounce_closed_form, multi_bounce_gtao, specular_occlusion_frostbite,

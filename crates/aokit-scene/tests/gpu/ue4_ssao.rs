@@ -4,7 +4,7 @@
 //! whatever adapter exists (lavapipe in CI). The default version also runs in every method's checks
 //! in methods.rs.
 
-mod common;
+use crate::common;
 
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, Preset, Projection};
 use aokit_scene::{Builtin, Frame, Scene};

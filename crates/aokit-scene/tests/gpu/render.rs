@@ -1,6 +1,6 @@
 //! GPU tests on whatever adapter exists (lavapipe in CI), at small sizes.
 
-mod common;
+use crate::common;
 
 use aokit::{AoSettings, GpuContext, Preset, Projection};
 use aokit_scene::external::{self, Passes};

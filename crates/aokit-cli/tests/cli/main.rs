@@ -1,0 +1,13 @@
+//! The `aokit` binary, run in fresh temporary directories: aokit-cli's integration tests,
+//! gathered in one test binary (one link instead of one per file). Each file is a module, so a
+//! test is named `module::test`, as in `cargo test -p aokit-cli --test cli ground_truth::`.
+
+mod common;
+
+mod animate;
+mod bench;
+mod cli;
+mod composite;
+mod ground_truth;
+mod peer;
+mod tune;
