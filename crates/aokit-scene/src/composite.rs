@@ -262,10 +262,10 @@ struct CompositeUniforms {
 /// let scene = aokit_scene::Builtin::Room.build();
 /// let sun = SunView::new(Lighting::default().sun_direction, &scene.bounds);
 /// let projection = aokit::Projection::perspective(1.0, 16.0 / 9.0, 0.1, None);
-/// let eye = glam::Vec3::new(0.0, 1.5, 4.0);
 /// let view = CompositeView {
 ///     projection: &projection,
-///     view_from_world: glam::Mat4::look_at_rh(eye, glam::Vec3::ZERO, glam::Vec3::Y),
+///     // The camera at the world's origin, looking down -Z.
+///     view_from_world: glam::Mat4::IDENTITY,
 ///     sun: &sun,
 /// };
 /// assert!(view.sun.texel_size > 0.0);
