@@ -394,9 +394,8 @@ impl AoPipeline {
                 At::Input => (size, &self.view_uniforms),
                 At::Working => (plan.working, &self.working_view_uniforms),
             };
-            let frame = (step, plan.scale);
             self.passes
-                .record(&mut ctx, queue, &settings, inputs, frame, &views);
+                .record(&mut ctx, queue, &settings, inputs, step, &views);
             if let Pass::Temporal { .. } = step.pass {
                 let history = &self.passes.histories[&inputs.view_id];
                 views.history = history.as_ref().map(|h| h.ao().clone());

@@ -106,8 +106,9 @@ pub(crate) enum Pass {
         normals: Target,
         motion_vectors: bool,
     },
-    /// The renderer's back-face depth and `depth` -> [`Target::BackThickness`].
-    BackFaces { depth: Target },
+    /// The renderer's back-face depth and `depth` -> [`Target::BackThickness`], `scale`
+    /// input pixels to a texel.
+    BackFaces { depth: Target, scale: u32 },
     /// `depth` -> [`Target::DepthMips`].
     DepthMips {
         reduction: DepthReduction,
@@ -252,6 +253,7 @@ impl FramePlan {
                 At::Working,
                 Pass::BackFaces {
                     depth: working_depth,
+                    scale,
                 },
             );
         }

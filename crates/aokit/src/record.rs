@@ -125,7 +125,7 @@ impl Passes {
         queue: &wgpu::Queue,
         settings: &AoSettings,
         frame: &AoInputs<'_>,
-        (step, scale): (&Step, u32),
+        step: &Step,
         views: &Views<'_>,
     ) {
         let device = ctx.device;
@@ -185,7 +185,7 @@ impl Passes {
                     },
                 );
             }
-            Pass::BackFaces { depth } => {
+            Pass::BackFaces { depth, scale } => {
                 let back_depth = frame.back_depth.expect("checked before planning");
                 let output = view(Target::BackThickness);
                 self.back_faces

@@ -512,7 +512,8 @@ fn vbao_back_faces_run_before_the_kernel() {
     assert_eq!(
         step(&plan, "back_faces").pass,
         Pass::BackFaces {
-            depth: Target::WorkingLinearDepth
+            depth: Target::WorkingLinearDepth,
+            scale: 2
         }
     );
     assert!(matches!(
@@ -609,7 +610,7 @@ fn reads(pass: &Pass) -> Vec<Target> {
         Pass::DecodeNormals { .. } => vec![Target::InputNormals],
         Pass::NormalsFromDepth { .. } => vec![Target::LinearDepth],
         Pass::Downsample { depth, normals, .. } => vec![depth, normals],
-        Pass::BackFaces { depth } | Pass::DepthMips { depth, .. } => vec![depth],
+        Pass::BackFaces { depth, .. } | Pass::DepthMips { depth, .. } => vec![depth],
         Pass::DepthMipAtlas { depth, .. } => vec![depth],
         Pass::Kernel { kernel, normals } => match kernel {
             Kernel::Method { depth, .. } | Kernel::SeparableHbao { depth } => vec![depth, normals],
