@@ -3,7 +3,7 @@
 //! [`AoPipeline::encode`](crate::AoPipeline::encode) makes the textures it names and records its
 //! steps one by one.
 
-use crate::passes::depth_mips::{DepthReduction, atlas_format};
+use crate::passes::kernel::depth_mips::{DepthReduction, atlas_format};
 use crate::settings::{
     AoSettings, FilterResolution, Method, NormalEncoding, NormalSource, NormalSpace, SpatialKind,
 };

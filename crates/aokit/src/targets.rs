@@ -2,11 +2,11 @@
 //! layout stays the same.
 
 use crate::gpu::{PairFormat, create_texture_2d};
-use crate::passes::back_faces::THICKNESS_FORMAT;
-use crate::passes::depth_mips::DepthMipsPass;
-use crate::passes::linear_depth::LINEAR_DEPTH_FORMAT;
-use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
-use crate::passes::normals_from_depth::NORMALS_FORMAT;
+use crate::passes::input::back_faces::THICKNESS_FORMAT;
+use crate::passes::input::linear_depth::LINEAR_DEPTH_FORMAT;
+use crate::passes::input::normals_from_depth::NORMALS_FORMAT;
+use crate::passes::kernel::depth_mips::DepthMipsPass;
+use crate::passes::kernel::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
 use crate::plan::{FramePlan, Pass, Target};
 
 /// A texture and the view the passes bind.
