@@ -324,8 +324,8 @@ impl TemporalUniforms {
     }
 }
 
-/// Mirrors `UpsampleUniforms` in `shaders/resample/upsample.wgsl`: the one resampling setting that is
-/// a value rather than a choice of code path (those are the shaders' `override`s).
+/// Mirrors `UpsampleUniforms` in `shaders/resample/upsample.wgsl`: the one resampling setting that
+/// is a value rather than a choice of code path (those are the shaders' `override`s).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub(crate) struct UpsampleUniforms {

@@ -1,7 +1,7 @@
-//! Between the input's resolution and the working resolution (`shaders/resample/downsample.wgsl` and
-//! `shaders/resample/upsample.wgsl`; formulas and measurements in docs/denoise.md): linear depth, normals
-//! and motion vectors down to the working resolution by choosing one pixel per block, and AO and
-//! bent normals back up guided by the full-resolution depth.
+//! Between the input's resolution and the working resolution (`shaders/resample/downsample.wgsl`
+//! and `shaders/resample/upsample.wgsl`; formulas and measurements in docs/denoise.md): linear
+//! depth, normals and motion vectors down to the working resolution by choosing one pixel per
+//! block, and AO and bent normals back up guided by the full-resolution depth.
 
 use std::collections::HashMap;
 

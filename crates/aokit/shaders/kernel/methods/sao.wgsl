@@ -3,8 +3,8 @@
 // Scalable Ambient Obscurance (McGuire, Mara and Luebke, HPG 2012): `ao.count` taps on a
 // spiral of `ao.steps` turns around the pixel (spiral.rs chooses the turns), each read from the
 // depth MIP level its distance calls for, scored by the paper's obscurance estimator. Binding
-// `linear_depth` holds the MIP chain (passes/kernel/depth_mips.rs), whose level 0 is the working depth
-// every shared function reads.
+// `linear_depth` holds the MIP chain (passes/kernel/depth_mips.rs), whose level 0 is the working
+// depth every shared function reads.
 
 // Taps within 2^3 = 8 pixels read level 0; each doubling of the distance beyond reads one level
 // coarser (the paper's LOG_MAX_OFFSET, its q' = 8). Far taps of neighbouring pixels then land

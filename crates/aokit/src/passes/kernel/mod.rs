@@ -1,4 +1,5 @@
-//! The kernel stage: a method's AO (and bent normals) at working resolution, and the depth MIP chains the kernels read.
+//! The kernel stage: a method's AO (and bent normals) at working resolution, and the depth MIP
+//! chains the kernels read.
 
 pub(crate) mod depth_mips;
 pub(crate) mod method;

@@ -1,6 +1,6 @@
 //! Multi-scale volumetric obscurance (`msvo`): the obscurance of each level of the depth MIP
-//! chain (`shaders/kernel/msvo/msvo_obscurance.wgsl`), then the levels merged from the coarsest up, each
-//! level's own obscurance times the depth-aware upsample of the merged level below it
+//! chain (`shaders/kernel/msvo/msvo_obscurance.wgsl`), then the levels merged from the coarsest up,
+//! each level's own obscurance times the depth-aware upsample of the merged level below it
 //! (`shaders/kernel/msvo/msvo_merge.wgsl`). The approach is Microsoft MiniEngine's SSAO as Unity
 //! PostProcessing ships it (Post-processing Stack v2, Multi-scale Volumetric Obscurance);
 //! docs/methods.md has the formula and its failures.

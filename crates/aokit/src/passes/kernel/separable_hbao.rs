@@ -1,6 +1,7 @@
 //! Separable HBAO (`hbao.variant = separable`): a pass over rows, then one over columns, each
-//! reading lines of linear depth from workgroup memory (`shaders/kernel/separable_hbao/hbao_separable.wgsl`;
-//! docs/methods.md has what it trades for the speed).
+//! reading lines of linear depth from workgroup memory
+//! (`shaders/kernel/separable_hbao/hbao_separable.wgsl`; docs/methods.md has what it trades for the
+//! speed).
 
 use crate::gpu::create_texture_2d;
 use crate::passes::kernel::method::{MethodPass, layout};
