@@ -57,7 +57,7 @@ named_enum! {
 }
 
 impl DebugView {
-    /// The `VIEW_*` code of `shaders/debug_view.wgsl`.
+    /// The `VIEW_*` code of `shaders/output/debug_view.wgsl`.
     fn shader_code(self) -> u32 {
         match self {
             DebugView::Depth | DebugView::WorkingDepth => 0,

@@ -2,7 +2,7 @@
 
 use glam::Mat4;
 
-use crate::passes::temporal_filter::MOTION_VECTOR_FORMATS;
+use crate::passes::filter::temporal_filter::MOTION_VECTOR_FORMATS;
 use crate::projection::Projection;
 use crate::settings::NormalEncoding;
 

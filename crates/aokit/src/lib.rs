@@ -21,11 +21,14 @@ pub mod normals;
 pub mod occlusion;
 pub mod passes;
 pub mod pipeline;
+mod plan;
 mod presets;
 pub mod projection;
+mod record;
 pub mod settings;
 pub mod shader;
 mod spiral;
+mod targets;
 pub mod timing;
 mod uniforms;
 

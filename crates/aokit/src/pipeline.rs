@@ -1,170 +1,17 @@
 //! [`AoPipeline`]: owns the passes and the intermediate textures, and wires them per frame.
 
-use std::collections::HashMap;
-
 use crate::error::AoError;
-use crate::gpu::{PairFormat, create_texture_2d, create_uniform_buffer, missing_storage_formats};
+use crate::gpu::{create_uniform_buffer, missing_storage_formats};
 use crate::inputs::AoInputs;
 use crate::passes::PassContext;
-use crate::passes::back_faces::{BackFacesPass, THICKNESS_FORMAT};
-use crate::passes::decode_normals::DecodeNormalsPass;
-use crate::passes::depth_mips::{DepthMipsPass, DepthReduction, atlas_format};
-use crate::passes::edge_filter::EdgeFilterPass;
-use crate::passes::guided_filter::GuidedFilterPass;
-use crate::passes::linear_depth::{DepthInput, LINEAR_DEPTH_FORMAT, LinearDepthPass};
-use crate::passes::mask::MaskPass;
-use crate::passes::method::{AO_FORMAT, BENT_NORMALS_FORMAT, MethodPass};
-use crate::passes::msvo::MsvoPass;
-use crate::passes::normals_from_depth::{NORMALS_FORMAT, NormalsFromDepthPass};
-use crate::passes::resample::{DownsampleTargets, ResampleFrame, ResamplePass};
-use crate::passes::separable_hbao::SeparableHbaoPass;
-use crate::passes::spatial_filter::{SpatialFilterPass, SpatialOutput};
-use crate::passes::temporal_filter::{FrameMotion, History, TemporalFilterPass, TemporalInput};
-use crate::settings::{
-    AoSettings, FilterResolution, Method, NormalEncoding, NormalSource, NormalSpace, SpatialKind,
-};
+use crate::passes::input::linear_depth::DepthInput;
+use crate::passes::kernel::depth_mips::atlas_format;
+use crate::plan::{At, FrameInputs, FramePlan, Pass, Target};
+use crate::record::{Passes, Views};
+use crate::settings::{AoSettings, Method};
+use crate::targets::{Layout, Targets};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
-
-/// A texture and the view the passes bind.
-type Target = (wgpu::Texture, wgpu::TextureView);
-
-/// What the intermediate textures are made for; any change remakes them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Layout {
-    /// The input's size.
-    size: [u32; 2],
-    /// The kernel's size: `size` at full resolution.
-    working: [u32; 2],
-    bent_normals: bool,
-    /// Size of the spatial filter's textures, when it is on.
-    spatial: Option<[u32; 2]>,
-    /// Whether the spatial filter hands the temporal filter its AO and depth packed in one
-    /// texture (the bilateral kind with the temporal filter on).
-    spatial_packed: bool,
-    /// Whether the downsample writes motion vectors, for a temporal filter at working
-    /// resolution.
-    working_motion: bool,
-    /// Whether an exclusion mask is applied.
-    mask: bool,
-    /// Whether the method reads a depth MIP chain.
-    depth_mips: bool,
-    /// The format of the [`AoSettings::depth_mips`] atlas, when the kernel reads one.
-    depth_mip_atlas: Option<wgpu::TextureFormat>,
-    /// Whether VBAO measures its occluders from the back faces.
-    back_faces: bool,
-}
-
-/// The intermediate textures.
-struct Targets {
-    layout: Layout,
-    /// Linear depth at the input's size.
-    linear_depth: Target,
-    /// oct32 normals decoded from the input or reconstructed from depth, at the input's size.
-    normals: Target,
-    /// Below full resolution, the kernel's inputs at working size and the upsampled outputs.
-    working: Option<WorkingTargets>,
-    /// The kernel's AO, at working size.
-    ao: Target,
-    /// The kernel's bent normals, at working size.
-    bent_normals: Option<Target>,
-    /// The spatial filter's textures, when it is on.
-    spatial: Option<SpatialTargets>,
-    /// The AO with the exclusion mask applied, at the input's size.
-    masked_ao: Option<Target>,
-    /// The working depth's MIP chain, for a method that reads one; its view shows every level.
-    depth_mips: Option<Target>,
-    /// The [`AoSettings::depth_mips`] chain, for a kernel that reads far samples from it.
-    depth_mip_atlas: Option<Target>,
-    /// The occluders' thickness from the back faces, at working size.
-    back_thickness: Option<Target>,
-}
-
-/// The downsample's and the upsample's textures.
-struct WorkingTargets {
-    linear_depth: Target,
-    normals: Target,
-    motion_vectors: Option<Target>,
-    /// The AO at the input's size.
-    upsampled_ao: Target,
-    /// The bent normals at the input's size.
-    upsampled_bent_normals: Option<Target>,
-}
-
-/// The spatial filter's AO and depth after the bilateral kind's horizontal pass (or the guided
-/// kind's window lines, in the same format), and its filtered AO: `R32Float`, or with
-/// `ao_and_depth` (`Layout::spatial_packed`) the AO and depth in the pair format.
-struct SpatialTargets {
-    packed_view: wgpu::TextureView,
-    ao: Target,
-    ao_and_depth: bool,
-}
-
-impl Targets {
-    fn new(device: &wgpu::Device, layout: Layout, pair: PairFormat) -> Self {
-        let usage = wgpu::TextureUsages::STORAGE_BINDING
-            | wgpu::TextureUsages::TEXTURE_BINDING
-            | wgpu::TextureUsages::COPY_SRC;
-        let make = |label, size, format| {
-            let texture = create_texture_2d(device, label, size, format, usage);
-            let view = texture.create_view(&Default::default());
-            (texture, view)
-        };
-        let Layout { size, working, .. } = layout;
-        let bent = layout.bent_normals;
-        Self {
-            layout,
-            linear_depth: make("aokit linear depth", size, LINEAR_DEPTH_FORMAT),
-            normals: make("aokit normals", size, NORMALS_FORMAT),
-            working: (working != size).then(|| WorkingTargets {
-                linear_depth: make("aokit working linear depth", working, LINEAR_DEPTH_FORMAT),
-                normals: make("aokit working normals", working, NORMALS_FORMAT),
-                motion_vectors: layout
-                    .working_motion
-                    .then(|| make("aokit working motion", working, pair.texture_format())),
-                upsampled_ao: make("aokit upsampled ao", size, AO_FORMAT),
-                upsampled_bent_normals: bent
-                    .then(|| make("aokit upsampled bent normals", size, BENT_NORMALS_FORMAT)),
-            }),
-            ao: make("aokit ao", working, AO_FORMAT),
-            bent_normals: bent.then(|| make("aokit bent normals", working, BENT_NORMALS_FORMAT)),
-            spatial: layout.spatial.map(|size| SpatialTargets {
-                packed_view: make(
-                    "aokit spatial filter ao and depth",
-                    size,
-                    pair.texture_format(),
-                )
-                .1,
-                ao: if layout.spatial_packed {
-                    make(
-                        "aokit spatially filtered ao and depth",
-                        size,
-                        pair.texture_format(),
-                    )
-                } else {
-                    make("aokit spatially filtered ao", size, AO_FORMAT)
-                },
-                ao_and_depth: layout.spatial_packed,
-            }),
-            masked_ao: layout
-                .mask
-                .then(|| make("aokit masked ao", size, AO_FORMAT)),
-            depth_mips: layout.depth_mips.then(|| {
-                let texture = DepthMipsPass::create_texture(device, working);
-                let view = texture.create_view(&Default::default());
-                (texture, view)
-            }),
-            depth_mip_atlas: layout.depth_mip_atlas.map(|format| {
-                let texture = DepthMipsPass::create_atlas(device, working, format);
-                let view = texture.create_view(&Default::default());
-                (texture, view)
-            }),
-            back_thickness: layout
-                .back_faces
-                .then(|| make("aokit back-face thickness", working, THICKNESS_FORMAT)),
-        }
-    }
-}
 
 /// Validates `settings` and checks that `device` can run them: the passes write the storage
 /// formats of `gpu::STORAGE_FORMATS`, and `depth_mips = fp16` writes R16Float.
@@ -183,108 +30,33 @@ fn check_settings(device: &wgpu::Device, settings: &AoSettings) -> Result<(), Ao
     Ok(())
 }
 
-/// What the filters read, at the resolution they run at: `ao` may be what they return.
-struct FilterInputs<'t, 'f> {
-    ao: &'t Target,
-    linear_depth: &'f wgpu::TextureView,
-    normals: &'f wgpu::TextureView,
-    /// In pixels of that resolution.
-    motion_vectors: Option<&'f wgpu::TextureView>,
+/// Checks a frame's inputs against `settings` and the device; returns the input's size.
+fn check_inputs(
+    device: &wgpu::Device,
+    settings: &AoSettings,
+    inputs: &AoInputs<'_>,
+) -> Result<[u32; 2], AoError> {
+    let size = inputs.validate(settings.normals.encoding)?;
+    inputs.projection.validate()?;
+    let max = device.limits().max_texture_dimension_2d;
+    if size[0] > max || size[1] > max {
+        return Err(AoError::TooLarge { size, max });
+    }
+    let back_faces = settings.method == Method::Vbao && settings.vbao.back_faces;
+    if back_faces && inputs.back_depth.is_none() {
+        return Err(AoError::MissingBackDepth);
+    }
+    Ok(size)
 }
 
-/// The spatial and temporal filters and each view's temporal history.
-struct Denoiser {
-    spatial: SpatialFilterPass,
-    guided: GuidedFilterPass,
-    edges: EdgeFilterPass,
-    /// Compiled the first time the temporal filter is on.
-    temporal: Option<TemporalFilterPass>,
-    /// Each view's temporal history, by [`AoInputs::view_id`].
-    histories: HashMap<u32, Option<History>>,
-    /// The format of the temporal histories, for the pass compiled on first use.
-    pair: PairFormat,
-}
-
-impl Denoiser {
-    /// Records the spatial and then the temporal filter, each when `settings` turn it on, at
-    /// `ctx`'s resolution. Returns the filtered AO (`input.ao` itself with both off) and, with
-    /// the temporal filter on, its rejected-history mask.
-    fn encode<'t>(
-        &'t mut self,
-        ctx: &mut PassContext<'_>,
-        queue: &wgpu::Queue,
-        settings: &AoSettings,
-        frame: &AoInputs<'_>,
-        spatial: Option<&'t SpatialTargets>,
-        input: FilterInputs<'t, '_>,
-    ) -> (&'t Target, Option<&'t wgpu::Texture>) {
-        let packed = spatial.is_some_and(|targets| targets.ao_and_depth);
-        let ao = match spatial {
-            Some(targets) => {
-                match settings.spatial.kind {
-                    SpatialKind::Bilateral => self.spatial.encode(
-                        ctx,
-                        &input.ao.1,
-                        input.linear_depth,
-                        input.normals,
-                        &targets.packed_view,
-                        if packed {
-                            SpatialOutput::AoAndDepth(&targets.ao.1)
-                        } else {
-                            SpatialOutput::Ao(&targets.ao.1)
-                        },
-                    ),
-                    SpatialKind::Guided => self.guided.encode(
-                        ctx,
-                        &input.ao.1,
-                        input.linear_depth,
-                        &targets.packed_view,
-                        &targets.ao.1,
-                    ),
-                    SpatialKind::Edges => self.edges.encode(
-                        ctx,
-                        &input.ao.1,
-                        input.linear_depth,
-                        input.normals,
-                        &targets.ao.1,
-                    ),
-                }
-                &targets.ao
-            }
-            None => input.ao,
-        };
-        if !settings.temporal.enabled {
-            // Off, histories go: when it is turned on again the old frames are stale.
-            self.histories.clear();
-            return (ao, None);
-        }
-        let history = self.histories.entry(frame.view_id).or_insert(None);
-        let temporal = self.temporal.get_or_insert_with(|| {
-            TemporalFilterPass::new(ctx.device, &settings.temporal, self.pair)
-        });
-        temporal.encode(
-            ctx,
-            queue,
-            history,
-            &FrameMotion {
-                view_from_world: frame.view_from_world,
-                projection: frame.projection,
-                motion_vectors: input.motion_vectors,
-                reset: frame.reset_history,
-            },
-            if packed {
-                TemporalInput::Packed(&ao.1)
-            } else {
-                TemporalInput::Separate {
-                    ao: &ao.1,
-                    linear_depth: input.linear_depth,
-                }
-            },
-        );
-        let history = history
-            .as_ref()
-            .expect("the temporal filter keeps a history");
-        (history.ao(), Some(&history.rejected().0))
+/// What the plan needs to know of `inputs`, whose depth is `size` pixels.
+fn describe(inputs: &AoInputs<'_>, size: [u32; 2]) -> FrameInputs {
+    FrameInputs {
+        size,
+        normals: inputs.normals.is_some(),
+        motion_vectors: inputs.motion_vectors.is_some(),
+        mask: inputs.mask.is_some(),
+        orthographic: inputs.projection.is_orthographic(),
     }
 }
 
@@ -408,30 +180,12 @@ pub struct AoPipeline {
     /// `ViewUniforms` of the input's size, and of the working size.
     view_uniforms: wgpu::Buffer,
     working_view_uniforms: wgpu::Buffer,
-    linear_depth: LinearDepthPass,
-    back_faces: BackFacesPass,
-    mask: MaskPass,
-    normals_from_depth: NormalsFromDepthPass,
-    decode_normals: DecodeNormalsPass,
+    passes: Passes,
     /// A view of the input normals of the last frame, kept for [`AoOutputs::normals_view`] when
     /// the kernels read them as they are.
     input_normals_view: Option<wgpu::TextureView>,
-    method: MethodPass,
-    /// Runs instead of `method`'s kernel for `hbao.variant = separable`; compiled the first
-    /// time that is chosen.
-    separable_hbao: Option<SeparableHbaoPass>,
-    /// Runs instead of a single kernel for `msvo`; compiled the first time that is chosen.
-    msvo: Option<MsvoPass>,
-    denoiser: Denoiser,
-    /// Compiled the first time the resolution is below full.
-    resample: Option<ResamplePass>,
-    /// Made the first time a method reads a depth MIP chain; each reduction's kernel compiles
-    /// on first use.
-    depth_mips: Option<DepthMipsPass>,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
-    /// How this device stores the two-channel targets, probed once.
-    pair: PairFormat,
 }
 
 impl AoPipeline {
@@ -457,7 +211,6 @@ impl AoPipeline {
         settings: &AoSettings,
     ) -> Result<Self, AoError> {
         check_settings(device, settings)?;
-        let pair = PairFormat::of(device);
         Ok(Self {
             settings: *settings,
             view_uniforms: create_uniform_buffer::<ViewUniforms>(device, "aokit view"),
@@ -465,28 +218,10 @@ impl AoPipeline {
                 device,
                 "aokit working view",
             ),
-            linear_depth: LinearDepthPass::default(),
-            back_faces: BackFacesPass::default(),
-            mask: MaskPass::default(),
-            normals_from_depth: NormalsFromDepthPass::new(device),
-            decode_normals: DecodeNormalsPass::new(device),
+            passes: Passes::new(device, queue, settings),
             input_normals_view: None,
-            method: MethodPass::new(device, queue, settings),
-            separable_hbao: None,
-            msvo: None,
-            denoiser: Denoiser {
-                spatial: SpatialFilterPass::new(device, queue, &settings.spatial, pair),
-                guided: GuidedFilterPass::new(device, queue, &settings.spatial, pair),
-                edges: EdgeFilterPass::new(device, queue, &settings.spatial),
-                temporal: None,
-                histories: HashMap::new(),
-                pair,
-            },
-            resample: None,
-            depth_mips: None,
             targets: None,
             timer: None,
-            pair,
         })
     }
 
@@ -578,19 +313,7 @@ impl AoPipeline {
     ) -> Result<(), AoError> {
         check_settings(device, settings)?;
         self.settings = *settings;
-        self.method.set_settings(device, queue, settings);
-        self.denoiser
-            .spatial
-            .set_settings(device, queue, &settings.spatial);
-        self.denoiser
-            .guided
-            .set_settings(device, queue, &settings.spatial);
-        self.denoiser
-            .edges
-            .set_settings(device, queue, &settings.spatial);
-        if let Some(temporal) = &mut self.denoiser.temporal {
-            temporal.set_settings(&settings.temporal);
-        }
+        self.passes.set_settings(device, queue, settings);
         Ok(())
     }
 
@@ -630,65 +353,32 @@ impl AoPipeline {
         inputs: &AoInputs<'a>,
     ) -> Result<AoOutputs<'a>, AoError> {
         let settings = self.settings;
-        let encoding = settings.normals.encoding;
-        let size = inputs.validate(encoding)?;
-        inputs.projection.validate()?;
-        let max = device.limits().max_texture_dimension_2d;
-        if size[0] > max || size[1] > max {
-            return Err(AoError::TooLarge { size, max });
-        }
-        let back_faces = settings.method == Method::Vbao && settings.vbao.back_faces;
-        if back_faces && inputs.back_depth.is_none() {
-            return Err(AoError::MissingBackDepth);
-        }
-        let working = settings.resolution.working_size(size);
-        // A 1x1 image is its own working image at any resolution: it runs as at full.
-        let scale = if working == size {
-            1
-        } else {
-            settings.resolution.scale()
-        };
-        // Below full resolution the filters run before the upsample, at working resolution,
-        // unless the settings move them after it.
-        let filter_full = scale > 1 && settings.filter_resolution == FilterResolution::Full;
-        let layout = Layout {
-            size,
-            working,
-            bent_normals: settings.bent_normals,
-            spatial: settings
-                .spatial
-                .enabled
-                .then_some(if filter_full { size } else { working }),
-            spatial_packed: settings.spatial.enabled
-                && settings.spatial.kind == SpatialKind::Bilateral
-                && settings.temporal.enabled,
-            working_motion: scale > 1
-                && !filter_full
-                && settings.temporal.enabled
-                && inputs.motion_vectors.is_some(),
-            mask: inputs.mask.is_some(),
-            depth_mips: settings.method.reads_depth_mips(),
-            depth_mip_atlas: atlas_format(&settings),
-            back_faces,
-        };
+        let size = check_inputs(device, &settings, inputs)?;
+        let plan = FramePlan::new(&settings, &describe(inputs, size));
+        let layout = Layout::of(&plan);
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
-            self.targets = Some(Targets::new(device, layout, self.pair));
+            self.targets = Some(Targets::new(device, layout, self.passes.pair));
         }
-        let targets = self.targets.as_ref().expect("targets were just created");
+        let targets = self.targets.as_ref().expect("targets were just made");
         let (projection, frame_index) = (&inputs.projection, inputs.frame_index);
-        queue.write_buffer(
-            &self.view_uniforms,
-            0,
-            bytemuck::bytes_of(&ViewUniforms::new(projection, size, frame_index)),
-        );
-        // Written at full resolution too (where it equals the other), so that the passes
-        // between downsample and upsample bind it whatever the resolution.
-        queue.write_buffer(
-            &self.working_view_uniforms,
-            0,
-            bytemuck::bytes_of(&ViewUniforms::scaled(projection, size, scale, frame_index)),
-        );
+        let uniforms = ViewUniforms::new(projection, size, frame_index);
+        queue.write_buffer(&self.view_uniforms, 0, bytemuck::bytes_of(&uniforms));
+        // Written at full resolution too (where it equals the other): the working steps bind
+        // it whatever the resolution.
+        let scaled = ViewUniforms::scaled(projection, size, plan.scale, frame_index);
+        queue.write_buffer(&self.working_view_uniforms, 0, bytemuck::bytes_of(&scaled));
 
+        self.input_normals_view = inputs.normals.map(|n| n.create_view(&Default::default()));
+        let motion_vectors = inputs
+            .motion_vectors
+            .map(|t| t.create_view(&Default::default()));
+        let mut views = Views {
+            targets,
+            input_depth: &DepthInput::view(inputs.depth),
+            input_normals: self.input_normals_view.as_ref(),
+            motion_vectors: motion_vectors.as_ref(),
+            history: None,
+        };
         if let Some(timer) = self.timer.as_mut() {
             timer.begin_frame();
         }
@@ -699,256 +389,65 @@ impl AoPipeline {
             size,
             timer: self.timer.as_mut(),
         };
-        // Input normals the settings use are read as they are when oct32, else decoded; without
-        // them (or when the source is depth) the normals are reconstructed.
-        let source = settings.normals.source;
-        self.input_normals_view = inputs
-            .normals
-            .filter(|_| source == NormalSource::Buffer)
-            .map(|n| n.create_view(&Default::default()));
-        // The linear depth pass runs at full resolution, and where normals are reconstructed
-        // from its output. Otherwise the downsample and the upsample read the renderer's depth
-        // themselves, and the upsample writes the full-resolution linear depth: one pass less.
-        let linear_pass = scale == 1 || self.input_normals_view.is_none();
-        let input_view;
-        let (resample_input, resample_depth) = if linear_pass {
-            self.linear_depth
-                .encode(&mut ctx, inputs.depth, &targets.linear_depth.1);
-            (DepthInput::Linear, &targets.linear_depth.1)
-        } else {
-            input_view = DepthInput::view(inputs.depth);
-            (DepthInput::of(inputs.depth), &input_view)
-        };
-        let world = settings.normals.space == NormalSpace::World;
-        let (normals, normals_view) = match (inputs.normals, &self.input_normals_view) {
-            (Some(texture), Some(view)) if encoding == NormalEncoding::Oct32 && !world => {
-                (texture, view)
+        for step in &plan.steps {
+            (ctx.size, ctx.view_uniforms) = match step.at {
+                At::Input => (size, &self.view_uniforms),
+                At::Working => (plan.working, &self.working_view_uniforms),
+            };
+            self.passes
+                .record(&mut ctx, queue, &settings, inputs, step, &views);
+            if let Pass::Temporal { .. } = step.pass {
+                let history = &self.passes.histories[&inputs.view_id];
+                views.history = history.as_ref().map(|h| h.ao().clone());
             }
-            (_, Some(view)) => {
-                let to_view = if world {
-                    glam::Mat3::from_mat4(inputs.view_from_world)
-                } else {
-                    glam::Mat3::IDENTITY
-                };
-                self.decode_normals.encode(
-                    &mut ctx,
-                    queue,
-                    encoding,
-                    to_view,
-                    view,
-                    &targets.normals.1,
-                );
-                (&targets.normals.0, &targets.normals.1)
-            }
-            (_, None) => {
-                self.normals_from_depth.encode(
-                    &mut ctx,
-                    source,
-                    &targets.linear_depth.1,
-                    &targets.normals.1,
-                );
-                (&targets.normals.0, &targets.normals.1)
-            }
-        };
-        let motion_vectors = inputs
-            .motion_vectors
-            .map(|t| t.create_view(&Default::default()));
-
-        // Below full resolution: depth, normals and the motion the filters need, downsampled.
-        let resample = targets.working.as_ref().map(|working| {
-            let pass = self
-                .resample
-                .get_or_insert_with(|| ResamplePass::new(device, self.pair));
-            pass.prepare(
-                device,
-                queue,
-                &settings,
-                ResampleFrame {
-                    input: resample_input,
-                    motion_vectors: layout.working_motion,
-                    bent_normals: settings.bent_normals,
-                    write_linear_depth: !linear_pass,
-                },
-            );
-            (&*pass, working)
-        });
-        ctx.size = working;
-        ctx.view_uniforms = &self.working_view_uniforms;
-        let (working_depth, working_normals) = match resample {
-            Some((pass, working)) => {
-                pass.downsample(
-                    &mut ctx,
-                    resample_depth,
-                    normals_view,
-                    motion_vectors.as_ref().filter(|_| layout.working_motion),
-                    &DownsampleTargets {
-                        linear_depth: &working.linear_depth.1,
-                        normals: &working.normals.1,
-                        motion_vectors: working.motion_vectors.as_ref().map(|(_, v)| v),
-                    },
-                );
-                (&working.linear_depth.1, &working.normals.1)
-            }
-            None => (&targets.linear_depth.1, normals_view),
-        };
-        let back_thickness = targets.back_thickness.as_ref().map(|(_, view)| {
-            let back_depth = inputs.back_depth.expect("checked with the settings");
-            self.back_faces
-                .encode(&mut ctx, scale, back_depth, working_depth, view);
-            view
-        });
-        let working_texture = match &targets.working {
-            Some(working) => &working.linear_depth.0,
-            None => &targets.linear_depth.0,
-        };
-        // A method that reads a depth MIP chain binds it where the others bind the working
-        // depth, which is its level 0.
-        let kernel_depth = match (&targets.depth_mips, DepthReduction::of(settings.method)) {
-            (Some((chain, view)), Some(reduction)) => {
-                self.depth_mips
-                    .get_or_insert_with(DepthMipsPass::default)
-                    .encode(&mut ctx, reduction, working_texture, chain);
-                view
-            }
-            _ => working_depth,
-        };
-        if let Some((atlas, _)) = &targets.depth_mip_atlas {
-            self.depth_mips
-                .get_or_insert_with(DepthMipsPass::default)
-                .encode_atlas(
-                    &mut ctx,
-                    working_texture,
-                    atlas,
-                    projection.is_orthographic(),
-                );
         }
-        if settings.method == Method::Msvo {
-            let (chain, _) = targets
-                .depth_mips
-                .as_ref()
-                .expect("msvo reads a depth MIP chain");
-            self.msvo
-                .get_or_insert_with(|| MsvoPass::new(device))
-                .encode(
-                    &mut ctx,
-                    &self.method,
-                    chain,
-                    working_normals,
-                    &targets.ao.1,
-                    settings.msvo.levels,
-                );
-        } else if settings.separable_hbao() {
-            self.separable_hbao
-                .get_or_insert_with(|| SeparableHbaoPass::new(device))
-                .encode(
-                    &mut ctx,
-                    &self.method,
-                    working_depth,
-                    working_normals,
-                    &targets.ao.1,
-                );
-        } else {
-            self.method.encode(
-                &mut ctx,
-                settings.method,
-                projection.is_orthographic(),
-                kernel_depth,
-                working_normals,
-                &targets.ao.1,
-                targets.bent_normals.as_ref().map(|(_, view)| view),
-                targets.depth_mip_atlas.as_ref().map(|(_, view)| view),
-                back_thickness,
-            );
+        if views.history.is_none() {
+            // Off, histories go: when it is turned on again the old frames are stale.
+            self.passes.histories.clear();
         }
-
-        // The upsample of `ao` and the bent normals; `ctx` must be at the input's size.
-        let upsample = |ctx: &mut PassContext<'_>, ao: &wgpu::TextureView| {
-            resample.map(|(pass, working)| {
-                pass.upsample(
-                    ctx,
-                    resample_depth,
-                    normals_view,
-                    working_depth,
-                    ao,
-                    &working.upsampled_ao.1,
-                    targets
-                        .bent_normals
-                        .as_ref()
-                        .zip(working.upsampled_bent_normals.as_ref())
-                        .map(|((_, from), (_, to))| (from, to)),
-                    (!linear_pass).then_some(&targets.linear_depth.1),
-                );
-                working
-            })
-        };
-        let filter_inputs = if filter_full {
-            ctx.size = size;
-            ctx.view_uniforms = &self.view_uniforms;
-            let working = upsample(&mut ctx, &targets.ao.1).expect("below full resolution");
-            FilterInputs {
-                ao: &working.upsampled_ao,
-                linear_depth: &targets.linear_depth.1,
-                normals: normals_view,
-                motion_vectors: motion_vectors.as_ref(),
-            }
-        } else {
-            FilterInputs {
-                ao: &targets.ao,
-                linear_depth: working_depth,
-                normals: working_normals,
-                motion_vectors: match &targets.working {
-                    Some(working) => working.motion_vectors.as_ref().map(|(_, v)| v),
-                    None => motion_vectors.as_ref(),
-                },
-            }
-        };
-        let (filtered, history_rejected) = self.denoiser.encode(
-            &mut ctx,
-            queue,
-            &settings,
-            inputs,
-            targets.spatial.as_ref(),
-            filter_inputs,
-        );
-        let ao = if filter_full {
-            filtered
-        } else {
-            ctx.size = size;
-            ctx.view_uniforms = &self.view_uniforms;
-            upsample(&mut ctx, &filtered.1).map_or(filtered, |w| &w.upsampled_ao)
-        };
-        let ao = match (&inputs.mask, &targets.masked_ao) {
-            (Some(mask), Some(masked)) => {
-                self.mask.encode(&mut ctx, mask, &ao.1, &masked.1);
-                masked
-            }
-            _ => ao,
-        };
-        let bent_normals = match &targets.working {
-            Some(working) => working.upsampled_bent_normals.as_ref(),
-            None => targets.bent_normals.as_ref(),
-        };
         if let Some(timer) = &self.timer {
             timer.resolve(encoder);
         }
-        Ok(AoOutputs {
+        Ok(self.outputs(&plan, inputs))
+    }
+
+    /// The textures `plan` left its results in.
+    fn outputs<'a>(&'a self, plan: &FramePlan, inputs: &AoInputs<'a>) -> AoOutputs<'a> {
+        let targets = self.targets.as_ref().expect("made by encode");
+        let history = self
+            .passes
+            .histories
+            .get(&inputs.view_id)
+            .and_then(Option::as_ref);
+        let made = |target| targets.get(target).expect("the plan's targets are made");
+        let ao = match plan.ao {
+            Target::History => history.expect("the temporal filter ran").ao(),
+            target => made(target),
+        };
+        let (normals, normals_view) = match plan.normals {
+            Target::InputNormals => (
+                inputs.normals.expect("planned with input normals"),
+                self.input_normals_view.as_ref().expect("made by encode"),
+            ),
+            target => (&made(target).0, &made(target).1),
+        };
+        let bent_normals = plan.bent_normals.map(made);
+        let optional = |target| targets.get(target).map(|(texture, _)| texture);
+        AoOutputs {
             ao: &ao.0,
             ao_view: &ao.1,
             raw_ao: &targets.ao.0,
             raw_ao_view: &targets.ao.1,
-            working_size: working,
+            working_size: plan.working,
             linear_depth: &targets.linear_depth.0,
-            working_linear_depth: match &targets.working {
-                Some(working) => &working.linear_depth.0,
-                None => &targets.linear_depth.0,
-            },
+            working_linear_depth: &made(plan.working_depth).0,
             normals,
             normals_view,
             bent_normals: bent_normals.map(|(texture, _)| texture),
             bent_normals_view: bent_normals.map(|(_, view)| view),
-            history_rejected,
-            depth_mips: targets.depth_mips.as_ref().map(|(texture, _)| texture),
-            depth_mip_atlas: targets.depth_mip_atlas.as_ref().map(|(texture, _)| texture),
-        })
+            history_rejected: history.map(|h| &h.rejected().0),
+            depth_mips: optional(Target::DepthMips),
+            depth_mip_atlas: optional(Target::DepthMipAtlas),
+        }
     }
 }

@@ -146,7 +146,7 @@ macro_rules! per_depth_input {
 pub const LINEAR_DEPTH: [ShaderSource; 4] = per_depth_input!(
     "linear_depth",
     [VIEW],
-    [include_str!("../shaders/linear_depth.wgsl")]
+    [include_str!("../shaders/input/linear_depth.wgsl")]
 );
 
 /// Each working texel's occluder thickness from the back faces' depth, for
@@ -154,7 +154,7 @@ pub const LINEAR_DEPTH: [ShaderSource; 4] = per_depth_input!(
 pub const BACK_FACES: [ShaderSource; 4] = per_depth_input!(
     "back_faces",
     [VIEW, RESAMPLE],
-    [include_str!("../shaders/back_faces.wgsl")]
+    [include_str!("../shaders/input/back_faces.wgsl")]
 );
 
 /// Normals reconstructed from linear depth.
@@ -163,7 +163,7 @@ pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
     parts: &[
         VIEW,
         ENCODING,
-        include_str!("../shaders/normals_from_depth.wgsl"),
+        include_str!("../shaders/input/normals_from_depth.wgsl"),
     ],
 };
 
@@ -180,7 +180,7 @@ pub const DECODE_NORMALS_UINT: ShaderSource = ShaderSource {
         VIEW,
         ENCODING,
         ENCODED_UINT,
-        include_str!("../shaders/decode_normals.wgsl"),
+        include_str!("../shaders/input/decode_normals.wgsl"),
     ],
 };
 
@@ -191,7 +191,7 @@ pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
         VIEW,
         ENCODING,
         ENCODED_FLOAT,
-        include_str!("../shaders/decode_normals.wgsl"),
+        include_str!("../shaders/input/decode_normals.wgsl"),
     ],
 };
 
@@ -222,7 +222,7 @@ macro_rules! per_pair_format {
 
 /// The spatial filter's tile, weights and entry point; each pass file adds its axis, workgroup
 /// shape and textures.
-const SPATIAL_FILTER: &str = include_str!("../shaders/spatial_filter.wgsl");
+const SPATIAL_FILTER: &str = include_str!("../shaders/filter/spatial_filter.wgsl");
 
 /// First pass of the spatial filter: along rows, AO and linear depth in, both packed out; per
 /// [`PairFormat`](crate::gpu::PairFormat).
@@ -232,7 +232,7 @@ pub const SPATIAL_FILTER_HORIZONTAL: [ShaderSource; 2] = per_pair_format!(
         VIEW,
         ENCODING,
         SPATIAL_FILTER,
-        include_str!("../shaders/spatial_filter_horizontal.wgsl")
+        include_str!("../shaders/filter/spatial_filter_horizontal.wgsl")
     ]
 );
 
@@ -244,7 +244,7 @@ pub const SPATIAL_FILTER_VERTICAL: [ShaderSource; 2] = per_pair_format!(
         VIEW,
         ENCODING,
         SPATIAL_FILTER,
-        include_str!("../shaders/spatial_filter_vertical.wgsl")
+        include_str!("../shaders/filter/spatial_filter_vertical.wgsl")
     ]
 );
 
@@ -252,12 +252,16 @@ pub const SPATIAL_FILTER_VERTICAL: [ShaderSource; 2] = per_pair_format!(
 /// AO out.
 pub const EDGE_FILTER: ShaderSource = ShaderSource {
     name: "edge_filter",
-    parts: &[VIEW, ENCODING, include_str!("../shaders/edge_filter.wgsl")],
+    parts: &[
+        VIEW,
+        ENCODING,
+        include_str!("../shaders/filter/edge_filter.wgsl"),
+    ],
 };
 
 /// The guided filter's settings, tile and indexing; each pass file adds its textures and entry
 /// point.
-const GUIDED_FILTER: &str = include_str!("../shaders/guided_filter.wgsl");
+const GUIDED_FILTER: &str = include_str!("../shaders/filter/guided_filter.wgsl");
 
 /// First pass of the guided filter: AO and linear depth in, each window's line (slope and value
 /// at its centre) out; per [`PairFormat`](crate::gpu::PairFormat).
@@ -266,7 +270,7 @@ pub const GUIDED_FILTER_COEFFICIENTS: [ShaderSource; 2] = per_pair_format!(
     [
         VIEW,
         GUIDED_FILTER,
-        include_str!("../shaders/guided_filter_coefficients.wgsl")
+        include_str!("../shaders/filter/guided_filter_coefficients.wgsl")
     ]
 );
 
@@ -276,14 +280,14 @@ pub const GUIDED_FILTER_OUTPUT: ShaderSource = ShaderSource {
     parts: &[
         VIEW,
         GUIDED_FILTER,
-        include_str!("../shaders/guided_filter_output.wgsl"),
+        include_str!("../shaders/filter/guided_filter_output.wgsl"),
     ],
 };
 
 /// The temporal filter, per [`PairFormat`](crate::gpu::PairFormat).
 pub const TEMPORAL_FILTER: [ShaderSource; 2] = per_pair_format!(
     "temporal_filter",
-    [VIEW, include_str!("../shaders/temporal_filter.wgsl")]
+    [VIEW, include_str!("../shaders/filter/temporal_filter.wgsl")]
 );
 
 /// The mask texture's weight in `apply_mask`, after [`FLOAT_INPUT`] or its multisampled form.
@@ -300,7 +304,7 @@ const MASK_STENCIL: &str = include_str!("../shaders/common/inputs/stencil.wgsl")
 const MASK_STENCIL_MULTISAMPLED: &str =
     include_str!("../shaders/common/inputs/stencil_multisampled.wgsl");
 
-const APPLY_MASK_PASS: &str = include_str!("../shaders/apply_mask.wgsl");
+const APPLY_MASK_PASS: &str = include_str!("../shaders/output/apply_mask.wgsl");
 
 /// AO 1 where a mask texture says so.
 pub const APPLY_MASK_TEXTURE: ShaderSource = ShaderSource {
@@ -339,12 +343,12 @@ pub const APPLY_MASK_STENCIL_MULTISAMPLED: ShaderSource = ShaderSource {
 /// Debug views of a frame's intermediates.
 pub const DEBUG_VIEW: ShaderSource = ShaderSource {
     name: "debug_view",
-    parts: &[ENCODING, include_str!("../shaders/debug_view.wgsl")],
+    parts: &[ENCODING, include_str!("../shaders/output/debug_view.wgsl")],
 };
 
 /// The settings the downsample and the upsample share; each pass file adds its textures and
 /// entry point.
-const RESAMPLE: &str = include_str!("../shaders/resample.wgsl");
+const RESAMPLE: &str = include_str!("../shaders/resample/resample.wgsl");
 
 /// Linear depth, normals and motion vectors from the input's resolution to the working one,
 /// per [`PairFormat`](crate::gpu::PairFormat) and kind of depth input.
@@ -352,12 +356,12 @@ pub const DOWNSAMPLE: [[ShaderSource; 4]; 2] = [
     per_depth_input!(
         "downsample",
         [VIEW, RESAMPLE, PAIR_STORAGE[0]],
-        [include_str!("../shaders/downsample.wgsl")]
+        [include_str!("../shaders/resample/downsample.wgsl")]
     ),
     per_depth_input!(
         "downsample",
         [VIEW, RESAMPLE, PAIR_STORAGE[1]],
-        [include_str!("../shaders/downsample.wgsl")]
+        [include_str!("../shaders/resample/downsample.wgsl")]
     ),
 ];
 
@@ -366,14 +370,14 @@ pub const DOWNSAMPLE: [[ShaderSource; 4]; 2] = [
 pub const UPSAMPLE: [ShaderSource; 4] = per_depth_input!(
     "upsample",
     [VIEW, ENCODING, RESAMPLE],
-    [include_str!("../shaders/upsample.wgsl")]
+    [include_str!("../shaders/resample/upsample.wgsl")]
 );
 
 /// A program on the AO kernels' interface ([`AO`] and what it needs), then `snippets`, then
 /// its own file. The per-pixel method kernels take [`AO_ENTRY`] as their first snippet; the
 /// multi-pass methods bring entry points of their own.
 macro_rules! ao_program {
-    ($name:literal $(, $snippet:expr)*) => {
+    ($dir:literal, $name:literal $(, $snippet:expr)*) => {
         ShaderSource {
             name: $name,
             parts: &[
@@ -382,34 +386,34 @@ macro_rules! ao_program {
                 NOISE,
                 AO,
                 $($snippet,)*
-                include_str!(concat!("../shaders/", $name, ".wgsl")),
+                include_str!(concat!("../shaders/", $dir, "/", $name, ".wgsl")),
             ],
         }
     };
 }
 
 /// Crytek's sphere-sampling SSAO.
-pub const SSAO_CRYTEK: ShaderSource = ao_program!("ssao_crytek", AO_ENTRY);
+pub const SSAO_CRYTEK: ShaderSource = ao_program!("kernel/methods", "ssao_crytek", AO_ENTRY);
 /// Normal-oriented hemisphere SSAO.
-pub const SSAO: ShaderSource = ao_program!("ssao", AO_ENTRY);
+pub const SSAO: ShaderSource = ao_program!("kernel/methods", "ssao", AO_ENTRY);
 /// Horizon-based AO.
-pub const HBAO: ShaderSource = ao_program!("hbao", AO_ENTRY, SLICE, HORIZON);
+pub const HBAO: ShaderSource = ao_program!("kernel/methods", "hbao", AO_ENTRY, SLICE, HORIZON);
 /// HBAO+'s normal-based estimator.
-pub const HBAO_PLUS: ShaderSource = ao_program!("hbao_plus", AO_ENTRY, SLICE);
+pub const HBAO_PLUS: ShaderSource = ao_program!("kernel/methods", "hbao_plus", AO_ENTRY, SLICE);
 /// Ground-truth based AO.
-pub const GTAO: ShaderSource = ao_program!("gtao", AO_ENTRY, SLICE);
+pub const GTAO: ShaderSource = ao_program!("kernel/methods", "gtao", AO_ENTRY, SLICE);
 /// Visibility bitmask AO.
-pub const VBAO: ShaderSource = ao_program!("vbao", AO_ENTRY, SLICE);
+pub const VBAO: ShaderSource = ao_program!("kernel/methods", "vbao", AO_ENTRY, SLICE);
 /// Scalable Ambient Obscurance.
-pub const SAO: ShaderSource = ao_program!("sao", AO_ENTRY, SUBSAMPLE_CHAIN);
+pub const SAO: ShaderSource = ao_program!("kernel/methods", "sao", AO_ENTRY, SUBSAMPLE_CHAIN);
 /// Unreal Engine 4's legacy SSAO: mirrored sample pairs scored by the angle between them.
-pub const UE4_SSAO: ShaderSource = ao_program!("ue4_ssao", AO_ENTRY);
+pub const UE4_SSAO: ShaderSource = ao_program!("kernel/methods", "ue4_ssao", AO_ENTRY);
 
 /// Where the texels of the subsampled depth MIP chain that `sao` and `msvo` read come from.
 pub(crate) const SUBSAMPLE_CHAIN: &str = include_str!("../shaders/common/subsample_chain.wgsl");
 
 /// What `msvo`'s two passes share.
-const MSVO: &str = include_str!("../shaders/msvo.wgsl");
+const MSVO: &str = include_str!("../shaders/kernel/msvo/msvo.wgsl");
 
 /// `msvo`'s obscurance at one level of the depth MIP chain: the kernels' interface without
 /// their entry point, then its own, one thread per texel of the level.
@@ -420,11 +424,12 @@ const MSVO: &str = include_str!("../shaders/msvo.wgsl");
 /// assert_eq!(shader::method(Method::Msvo).name, shader::MSVO_OBSCURANCE.name);
 /// assert!(shader::MSVO_MERGE.source().contains("fn shape_ao("));
 /// ```
-pub const MSVO_OBSCURANCE: ShaderSource = ao_program!("msvo_obscurance", MSVO, SUBSAMPLE_CHAIN);
+pub const MSVO_OBSCURANCE: ShaderSource =
+    ao_program!("kernel/msvo", "msvo_obscurance", MSVO, SUBSAMPLE_CHAIN);
 
 /// `msvo`'s merge of one level: its obscurance times the depth-aware upsample of the merged
 /// level below it, shaped at the working level into the method's AO.
-pub const MSVO_MERGE: ShaderSource = ao_program!("msvo_merge", MSVO);
+pub const MSVO_MERGE: ShaderSource = ao_program!("kernel/msvo", "msvo_merge", MSVO);
 
 /// Levels 1 to 4 of a depth MIP chain from its level 0, by the reduction its `REDUCTION`
 /// override names (SAO's subsample, `ue4-ssao`'s furthest depth, or the mean on one surface
@@ -433,7 +438,7 @@ pub const DEPTH_MIPS: ShaderSource = ShaderSource {
     name: "depth_mips",
     parts: &[
         include_str!("../shaders/common/formats/level_r32float.wgsl"),
-        include_str!("../shaders/depth_mips.wgsl"),
+        include_str!("../shaders/kernel/depth_mips.wgsl"),
     ],
 };
 
@@ -442,7 +447,7 @@ pub const DEPTH_MIPS_FP16: ShaderSource = ShaderSource {
     name: "depth_mips",
     parts: &[
         include_str!("../shaders/common/formats/level_r16float.wgsl"),
-        include_str!("../shaders/depth_mips.wgsl"),
+        include_str!("../shaders/kernel/depth_mips.wgsl"),
     ],
 };
 
@@ -473,7 +478,7 @@ pub fn method(method: Method) -> ShaderSource {
 
 /// Separable HBAO's tile, line lookup, march and entry point; each pass file adds its axis and
 /// textures.
-const HBAO_SEPARABLE: &str = include_str!("../shaders/hbao_separable.wgsl");
+const HBAO_SEPARABLE: &str = include_str!("../shaders/kernel/separable_hbao/hbao_separable.wgsl");
 
 /// First pass of separable HBAO (`hbao.variant = separable`): the +x and -x horizons of every
 /// pixel from its row of linear depth in workgroup memory, their occlusion summed into an
@@ -486,7 +491,13 @@ const HBAO_SEPARABLE: &str = include_str!("../shaders/hbao_separable.wgsl");
 /// assert_eq!([1920u32.div_ceil(x), 1080u32.div_ceil(y)], [15, 1080]);
 /// # Ok::<(), String>(())
 /// ```
-pub const HBAO_ROWS: ShaderSource = ao_program!("hbao_rows", SLICE, HORIZON, HBAO_SEPARABLE);
+pub const HBAO_ROWS: ShaderSource = ao_program!(
+    "kernel/separable_hbao",
+    "hbao_rows",
+    SLICE,
+    HORIZON,
+    HBAO_SEPARABLE
+);
 
 /// Second pass of separable HBAO: the +y and -y horizons from each column in workgroup memory,
 /// added to the rows pass's occlusion and stored as the AO, shaped as every method's is.
@@ -501,7 +512,13 @@ pub const HBAO_ROWS: ShaderSource = ao_program!("hbao_rows", SLICE, HORIZON, HBA
 /// assert!(shader::HBAO_COLUMNS.source().contains("fn store_ao("));
 /// # Ok::<(), String>(())
 /// ```
-pub const HBAO_COLUMNS: ShaderSource = ao_program!("hbao_columns", SLICE, HORIZON, HBAO_SEPARABLE);
+pub const HBAO_COLUMNS: ShaderSource = ao_program!(
+    "kernel/separable_hbao",
+    "hbao_columns",
+    SLICE,
+    HORIZON,
+    HBAO_SEPARABLE
+);
 
 /// The shading helpers of [`OCCLUSION`] alone: no entry point, validated so that the snippet
 /// renderers paste into their own shaders is known to compile.

@@ -94,7 +94,7 @@ pub(crate) struct AoUniforms {
 }
 
 /// `AoUniforms::flags` bits, mirrored as constants in `common/ao.wgsl`. Bent normals are the
-/// kernels' `BENT_NORMALS` override instead (passes/method.rs).
+/// kernels' `BENT_NORMALS` override instead (passes/kernel/method.rs).
 pub(crate) mod flags {
     /// Divide slice integrals by their unoccluded integrals (GTAO).
     pub const NORMALIZE_SLICES: u32 = 1;
@@ -199,7 +199,7 @@ impl AoUniforms {
     }
 }
 
-/// Mirrors `DecodeUniforms` in `shaders/decode_normals.wgsl`: a `mat3x3<f32>`, each column
+/// Mirrors `DecodeUniforms` in `shaders/input/decode_normals.wgsl`: a `mat3x3<f32>`, each column
 /// padded to 16 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -216,7 +216,7 @@ impl DecodeUniforms {
     }
 }
 
-/// Mirrors `DebugUniforms` in `shaders/debug_view.wgsl`.
+/// Mirrors `DebugUniforms` in `shaders/output/debug_view.wgsl`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub(crate) struct DebugUniforms {
@@ -229,7 +229,7 @@ pub(crate) struct DebugUniforms {
     pub orthographic: u32,
 }
 
-/// Mirrors `SpatialUniforms` in `shaders/spatial_filter.wgsl`: the spatial filter's weights,
+/// Mirrors `SpatialUniforms` in `shaders/filter/spatial_filter.wgsl`: the spatial filter's weights,
 /// the sigmas as reciprocals so that the shader multiplies. The radius, the depth weight's kind
 /// and whether normals weigh in are the shader's `override`s.
 #[repr(C)]
@@ -250,7 +250,7 @@ impl SpatialUniforms {
     }
 }
 
-/// Mirrors `GuidedUniforms` in `shaders/guided_filter.wgsl`: the guided filter's
+/// Mirrors `GuidedUniforms` in `shaders/filter/guided_filter.wgsl`: the guided filter's
 /// regularisation. The window radius is the shader's `override`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -266,7 +266,7 @@ impl GuidedUniforms {
     }
 }
 
-/// Mirrors `TemporalUniforms` in `shaders/temporal_filter.wgsl`.
+/// Mirrors `TemporalUniforms` in `shaders/filter/temporal_filter.wgsl`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub(crate) struct TemporalUniforms {
@@ -324,8 +324,8 @@ impl TemporalUniforms {
     }
 }
 
-/// Mirrors `UpsampleUniforms` in `shaders/upsample.wgsl`: the one resampling setting that is
-/// a value rather than a choice of code path (those are the shaders' `override`s).
+/// Mirrors `UpsampleUniforms` in `shaders/resample/upsample.wgsl`: the one resampling setting that
+/// is a value rather than a choice of code path (those are the shaders' `override`s).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub(crate) struct UpsampleUniforms {

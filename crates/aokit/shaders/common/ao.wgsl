@@ -42,7 +42,7 @@ struct AoUniforms {
 const FLAG_NORMALIZE_SLICES: u32 = 1u;
 
 // AoSettings::bent_normals, compiled in rather than a flag: a kernel without bent normals holds
-// none of their code. The per-pixel kernels get it from the settings (passes/method.rs); the
+// none of their code. The per-pixel kernels get it from the settings (passes/kernel/method.rs); the
 // others have no bent normals.
 override BENT_NORMALS: bool = false;
 
@@ -57,12 +57,12 @@ override BENT_NORMALS: bool = false;
 // The noise tile of `blue` and `white` noise, two values per texel, repeated over the image (a
 // 1x1 stand-in for the kinds computed here).
 @group(0) @binding(7) var noise_tile: texture_2d<f32>;
-// With DEPTH_MIPS on, the working depth's MIP chain in one texture (passes/depth_mips.rs,
+// With DEPTH_MIPS on, the working depth's MIP chain in one texture (passes/kernel/depth_mips.rs,
 // `DepthMipsPass::create_atlas`): level L's texel t, covering pixels t * 2^L to (t + 1) * 2^L,
 // at atlas_origin(L) + t. A 1x1 stand-in otherwise, never read.
 @group(0) @binding(8) var depth_mips: texture_2d<f32>;
 // How far samples read the chain (AoSettings::depth_mips), one of the DEPTH_MIPS_* codes
-// (`DepthMipsRead` in passes/method.rs). The pipeline compiles each kernel for one of them,
+// (`DepthMipsRead` in passes/kernel/method.rs). The pipeline compiles each kernel for one of them,
 // so that the code of the others, and of the chain when it is off, is not in it.
 override DEPTH_MIPS: u32 = 0u;
 // Every sample reads the working depth.
@@ -138,7 +138,7 @@ struct SeenSurface {
 }
 
 // Coarser levels the depth MIP chain has: up to 4, each at least 2 texels on a side so that a
-// gather's 2x2 footprint fits in it (`atlas_levels` in passes/depth_mips.rs).
+// gather's 2x2 footprint fits in it (`atlas_levels` in passes/kernel/depth_mips.rs).
 fn mip_levels() -> u32 {
     let shorter = u32(min(view.size.x, view.size.y));
     return min(4u, max(firstLeadingBit(shorter), 1u) - 1u);

@@ -3,7 +3,7 @@
 // which SAO and msvo read): each level keeps, of the 2x2 texels below each of its texels, the
 // one at offset (y & 1, x & 1), clamped to that level.
 
-// Coarsest level the chain holds (`LEVELS` - 1 in passes/depth_mips.rs).
+// Coarsest level the chain holds (`LEVELS` - 1 in passes/kernel/depth_mips.rs).
 const CHAIN_COARSEST: u32 = 4u;
 
 // The level-0 texel whose depth texel `t` of `level` (at most CHAIN_COARSEST) holds.

@@ -3,20 +3,12 @@
 //! The pass structs are the pipeline's own; [`ComputeKernel`] and [`bind`] are public so that
 //! companion crates write their passes the same way.
 
-pub(crate) mod back_faces;
-pub(crate) mod decode_normals;
-pub(crate) mod depth_mips;
-pub(crate) mod edge_filter;
-pub(crate) mod guided_filter;
-pub(crate) mod linear_depth;
-pub(crate) mod mask;
-pub(crate) mod method;
-pub(crate) mod msvo;
-pub(crate) mod normals_from_depth;
+// By stage, in the order a frame runs them.
+pub(crate) mod filter;
+pub(crate) mod input;
+pub(crate) mod kernel;
+pub(crate) mod output;
 pub(crate) mod resample;
-pub(crate) mod separable_hbao;
-pub(crate) mod spatial_filter;
-pub(crate) mod temporal_filter;
 
 use crate::shader::ShaderSource;
 use crate::timing::PassTimer;
@@ -411,7 +403,11 @@ mod tests {
     use crate::gpu::PairFormat;
     use crate::settings::{Method, NormalEncoding};
     use crate::shader;
-    use linear_depth::DepthInput;
+    use filter::{edge_filter, guided_filter, spatial_filter, temporal_filter};
+    use input::linear_depth::{self, DepthInput};
+    use input::{back_faces, decode_normals, normals_from_depth};
+    use kernel::{depth_mips, method, msvo, separable_hbao};
+    use output::mask;
 
     const DEPTH_INPUTS: [DepthInput; 4] = [
         DepthInput::Ndc,

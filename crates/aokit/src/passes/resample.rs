@@ -1,16 +1,16 @@
-//! Between the input's resolution and the working resolution (`shaders/downsample.wgsl` and
-//! `shaders/upsample.wgsl`; formulas and measurements in docs/denoise.md): linear depth, normals
-//! and motion vectors down to the working resolution by choosing one pixel per block, and AO and
-//! bent normals back up guided by the full-resolution depth.
+//! Between the input's resolution and the working resolution (`shaders/resample/downsample.wgsl`
+//! and `shaders/resample/upsample.wgsl`; formulas and measurements in docs/denoise.md): linear
+//! depth, normals and motion vectors down to the working resolution by choosing one pixel per
+//! block, and AO and bent normals back up guided by the full-resolution depth.
 
 use std::collections::HashMap;
 
-use super::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
-use super::temporal_filter::MOTION_VECTOR_FORMATS;
-use super::{ComputeKernel, PassContext, bind};
 use crate::gpu::{PairFormat, create_uniform_buffer, stand_in_view};
-use crate::passes::linear_depth::{DepthInput, LINEAR_DEPTH_FORMAT};
-use crate::passes::normals_from_depth::NORMALS_FORMAT;
+use crate::passes::filter::temporal_filter::MOTION_VECTOR_FORMATS;
+use crate::passes::input::linear_depth::{DepthInput, LINEAR_DEPTH_FORMAT};
+use crate::passes::input::normals_from_depth::NORMALS_FORMAT;
+use crate::passes::kernel::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
+use crate::passes::{ComputeKernel, PassContext, bind};
 use crate::settings::{AoSettings, Downsample, Upsample};
 use crate::shader;
 use crate::uniforms::UpsampleUniforms;

@@ -1,0 +1,207 @@
+//! The spatial denoiser's `edges` kind: one 3x3 edge-aware pass with the bilateral kind's
+//! weights (`shaders/filter/edge_filter.wgsl`; measurements in docs/denoise.md).
+
+use std::collections::HashMap;
+
+use crate::gpu::create_uniform_buffer;
+use crate::passes::kernel::method::AO_FORMAT;
+use crate::passes::{ComputeKernel, PassContext, bind};
+use crate::settings::{DepthWeight, SpatialKind, SpatialSettings};
+use crate::shader;
+use crate::uniforms::SpatialUniforms;
+
+/// The bindings of `shader::EDGE_FILTER`: view uniforms, filter settings, the AO, the linear
+/// depth, the normals, the filtered AO written.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 6] {
+    let float = wgpu::TextureSampleType::Float { filterable: false };
+    [
+        bind::uniform(0),
+        bind::uniform(1),
+        bind::texture(2, float),
+        bind::texture(3, float),
+        bind::texture(4, wgpu::TextureSampleType::Uint),
+        bind::storage_texture(5, AO_FORMAT),
+    ]
+}
+
+/// The filter's kernels and its settings buffer.
+pub struct EdgeFilterPass {
+    /// Per depth weight and whether normals weigh in (the shader's overrides), compiled the
+    /// first time settings of the edges kind ask for them.
+    kernels: HashMap<(DepthWeight, bool), ComputeKernel>,
+    /// The variant of the settings last given, when they select the edges kind.
+    current: Option<(DepthWeight, bool)>,
+    uniforms: wgpu::Buffer,
+}
+
+impl EdgeFilterPass {
+    /// Creates the settings buffer and uploads `settings`, compiling a kernel if they select
+    /// the edges kind.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &SpatialSettings) -> Self {
+        let mut pass = Self {
+            kernels: HashMap::new(),
+            current: None,
+            uniforms: create_uniform_buffer::<SpatialUniforms>(device, "aokit edge filter"),
+        };
+        pass.set_settings(device, queue, settings);
+        pass
+    }
+
+    /// Uploads validated settings for later `encode`s, compiling the kernel the first time
+    /// settings of the edges kind ask for its variant.
+    pub fn set_settings(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        settings: &SpatialSettings,
+    ) {
+        let enabled = settings.enabled && settings.kind == SpatialKind::Edges;
+        self.current = enabled.then_some((settings.depth_weight, settings.normal_power > 0.0));
+        if let Some((depth_weight, normal_weight)) = self.current {
+            self.kernels
+                .entry((depth_weight, normal_weight))
+                .or_insert_with(|| {
+                    ComputeKernel::with_constants(
+                        device,
+                        &shader::EDGE_FILTER,
+                        &layout(),
+                        &[
+                            ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
+                            ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
+                        ],
+                    )
+                });
+        }
+        queue.write_buffer(
+            &self.uniforms,
+            0,
+            bytemuck::bytes_of(&SpatialUniforms::new(settings)),
+        );
+    }
+
+    /// Records the pass: `ao` filtered across its 3x3 neighbourhoods of `linear_depth` and
+    /// oct32 `normals` into `output` (`R32Float`, as the AO kernels write).
+    ///
+    /// # Panics
+    /// When the settings last given do not select the edges kind.
+    pub fn encode(
+        &self,
+        ctx: &mut PassContext<'_>,
+        ao: &wgpu::TextureView,
+        linear_depth: &wgpu::TextureView,
+        normals: &wgpu::TextureView,
+        output: &wgpu::TextureView,
+    ) {
+        let kernel = self
+            .current
+            .map(|variant| &self.kernels[&variant])
+            .expect("the edge filter runs only with settings that select it");
+        let view = wgpu::BindingResource::TextureView;
+        ctx.dispatch(
+            kernel,
+            &[
+                self.uniforms.as_entire_binding(),
+                view(ao),
+                view(linear_depth),
+                view(normals),
+                view(output),
+            ],
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::GpuContext;
+    use crate::passes::filter::spatial_filter::tests::{
+        Image, SIZE, STEP_X, gpu, hash, image, run_filter, standard_deviation,
+    };
+
+    #[test]
+    fn constants_match_wgsl() {
+        let module = shader::EDGE_FILTER.validate().unwrap();
+        for (name, weight) in [
+            ("DEPTH_GAUSSIAN", DepthWeight::Gaussian),
+            ("DEPTH_THRESHOLD", DepthWeight::Threshold),
+        ] {
+            assert_eq!(
+                shader::u32_constant(&module, name),
+                Some(weight as u32),
+                "{name}"
+            );
+        }
+    }
+
+    fn filter(gpu: &GpuContext, settings: &SpatialSettings, image: &Image) -> Vec<f32> {
+        let pass = EdgeFilterPass::new(&gpu.device, &gpu.queue, settings);
+        run_filter(gpu, image, |ctx, t| {
+            pass.encode(ctx, &t.ao, &t.depth, &t.normals, &t.output);
+        })
+    }
+
+    /// The edges kind with each depth weight, with and without normals.
+    fn variants() -> Vec<SpatialSettings> {
+        let edges = SpatialSettings {
+            enabled: true,
+            kind: SpatialKind::Edges,
+            ..SpatialSettings::default()
+        };
+        vec![
+            edges,
+            SpatialSettings {
+                normal_power: 0.0,
+                ..edges
+            },
+            SpatialSettings {
+                depth_weight: DepthWeight::Threshold,
+                ..edges
+            },
+        ]
+    }
+
+    #[test]
+    fn constant_ao_stays_constant_and_sky_stays_one() {
+        let gpu = gpu();
+        let flat = image(|_, _, _| 0.37);
+        for settings in variants() {
+            for (i, &ao) in filter(&gpu, &settings, &flat).iter().enumerate() {
+                let expected = if flat.depth[i] == 0.0 { 1.0 } else { 0.37 };
+                assert!(
+                    (ao - expected).abs() < 1e-5,
+                    "{settings:?}: pixel {i} reads {ao}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_depth_step_keeps_its_step_and_noise_drops_on_both_planes() {
+        let gpu = gpu();
+        let level = |near| if near { 0.2 } else { 0.7 };
+        let noisy = image(|near, x, y| level(near) + 0.1 * hash(x, y));
+        for settings in variants() {
+            let filtered = filter(&gpu, &settings, &noisy);
+            let mut sides = [Vec::new(), Vec::new()];
+            for (i, &ao) in filtered.iter().enumerate() {
+                if noisy.depth[i] == 0.0 {
+                    continue;
+                }
+                let near = i as u32 % SIZE[0] < STEP_X;
+                // Nothing crosses the step: each side stays within its own noise.
+                let low = level(near);
+                assert!(
+                    (low..=low + 0.1).contains(&ao),
+                    "{settings:?}: pixel {i} reads {ao}"
+                );
+                sides[usize::from(near)].push((ao, noisy.ao[i]));
+            }
+            for side in &sides {
+                let after = standard_deviation(side.iter().map(|v| v.0));
+                let before = standard_deviation(side.iter().map(|v| v.1));
+                // Nine taps at most: about a third of the noise's deviation goes.
+                assert!(after < 0.75 * before, "{settings:?}: {before} -> {after}");
+            }
+        }
+    }
+}
