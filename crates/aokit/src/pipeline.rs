@@ -136,7 +136,8 @@ pub struct AoOutputs<'a> {
     /// With the temporal filter on: `R32Float`, 1 where this frame rejected its history
     /// (disocclusions, the screen's edges, a reset) and showed the current frame alone, 0 where
     /// it blended. A debug view of where ghosting or fresh noise can show. At the filters'
-    /// size: [`AoOutputs::working_size`], or the input's with [`FilterResolution::Full`].
+    /// size: [`AoOutputs::working_size`], or the input's with
+    /// [`FilterResolution::Full`](crate::FilterResolution::Full).
     pub history_rejected: Option<&'a wgpu::Texture>,
     /// With a method that reads one (`sao`, `ue4-ssao`, see
     /// [`Method::reads_depth_mips`](crate::Method::reads_depth_mips)): the depth MIP chain its
