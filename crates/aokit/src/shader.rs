@@ -224,6 +224,10 @@ macro_rules! per_pair_format {
 /// shape and textures.
 const SPATIAL_FILTER: &str = include_str!("../shaders/filter/spatial_filter.wgsl");
 
+/// The bilateral weights' settings buffer and code paths, which the bilateral and edges kinds
+/// of the spatial filter share.
+const BILATERAL_WEIGHTS: &str = include_str!("../shaders/filter/bilateral_weights.wgsl");
+
 /// First pass of the spatial filter: along rows, AO and linear depth in, both packed out; per
 /// [`PairFormat`](crate::gpu::PairFormat).
 pub const SPATIAL_FILTER_HORIZONTAL: [ShaderSource; 2] = per_pair_format!(
@@ -231,6 +235,7 @@ pub const SPATIAL_FILTER_HORIZONTAL: [ShaderSource; 2] = per_pair_format!(
     [
         VIEW,
         ENCODING,
+        BILATERAL_WEIGHTS,
         SPATIAL_FILTER,
         include_str!("../shaders/filter/spatial_filter_horizontal.wgsl")
     ]
@@ -243,6 +248,7 @@ pub const SPATIAL_FILTER_VERTICAL: [ShaderSource; 2] = per_pair_format!(
     [
         VIEW,
         ENCODING,
+        BILATERAL_WEIGHTS,
         SPATIAL_FILTER,
         include_str!("../shaders/filter/spatial_filter_vertical.wgsl")
     ]
@@ -255,6 +261,7 @@ pub const EDGE_FILTER: ShaderSource = ShaderSource {
     parts: &[
         VIEW,
         ENCODING,
+        BILATERAL_WEIGHTS,
         include_str!("../shaders/filter/edge_filter.wgsl"),
     ],
 };

@@ -1,4 +1,4 @@
-// requires: common/view.wgsl, common/encoding.wgsl
+// requires: common/view.wgsl, common/encoding.wgsl, filter/bilateral_weights.wgsl
 // Spatial filter, `edges` kind: one pass of a 3x3 edge-aware blur (docs/denoise.md), the shape
 // of XeGTAO's denoiser (Strugar 2021, https://github.com/GameTechDev/XeGTAO): where the
 // bilateral kind spends two passes and a workgroup tile on a 7-tap line each way, this reads
@@ -13,30 +13,10 @@
 // settings and the centre's weight 1. Pixels without a surface, and texels outside the image,
 // never contribute; a pixel without a surface keeps AO 1.
 
-// The bilateral kind's `SpatialUniforms` (uniforms.rs), the same settings buffer layout.
-struct SpatialUniforms {
-    spatial_scale: f32,
-    depth_scale: f32,
-    normal_power: f32,
-}
-
-@group(0) @binding(1) var<uniform> spatial: SpatialUniforms;
 @group(0) @binding(2) var ao_in: texture_2d<f32>;
 @group(0) @binding(3) var linear_depth: texture_2d<f32>;
 @group(0) @binding(4) var normals: texture_2d<u32>;
 @group(0) @binding(5) var ao_out: texture_storage_2d<r32float, write>;
-
-// `DepthWeight as u32` in Rust (a test compares them).
-const DEPTH_GAUSSIAN: u32 = 0u;
-const DEPTH_THRESHOLD: u32 = 1u;
-
-// Fixed per pipeline, as in spatial_filter.wgsl: DEPTH_GAUSSIAN or DEPTH_THRESHOLD, and whether
-// normals weigh in (normal_power > 0); without it no normal is loaded.
-override DEPTH_WEIGHT: u32;
-override NORMAL_WEIGHT: bool;
-
-// log2(e): the depth and normal factors' base-2 logarithms add up and one exp2 gives both.
-const LOG2_E: f32 = 1.44269504;
 
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {

@@ -1,4 +1,4 @@
-// requires: common/view.wgsl, common/encoding.wgsl
+// requires: common/view.wgsl, common/encoding.wgsl, filter/bilateral_weights.wgsl
 // Spatial filter: a separable bilateral blur of the AO (docs/denoise.md), run as two passes, one
 // per axis. A program is this file plus one pass file (spatial_filter_horizontal.wgsl or
 // spatial_filter_vertical.wgsl) that sets `AXIS` and the workgroup shape and defines
@@ -17,33 +17,14 @@
 // the weight sum never vanishes. Pixels without a surface (sky, outside the image) never
 // contribute, and keep AO 1.
 
-struct SpatialUniforms {
-    // 1 / sigma: pixel offsets times this are in units of the spatial standard deviation.
-    spatial_scale: f32,
-    // 1 / depth_sigma: relative depth differences times this are in units of depth_sigma.
-    depth_scale: f32,
-    // Exponent of the normal weight (> 0 where NORMAL_WEIGHT).
-    normal_power: f32,
-}
-
-@group(0) @binding(1) var<uniform> spatial: SpatialUniforms;
 @group(0) @binding(2) var normals: texture_2d<u32>;
-
-// `DepthWeight as u32` in Rust (a test compares them).
-const DEPTH_GAUSSIAN: u32 = 0u;
-const DEPTH_THRESHOLD: u32 = 1u;
 
 // `MAX_SPATIAL_RADIUS` in Rust (a test compares them).
 const MAX_RADIUS: u32 = 8u;
 
-// The choices of code path, fixed per pipeline (why: resample.wgsl's header; here lavapipe
-// compiled both passes afresh every frame while they were uniforms).
-// Kernel radius in pixels, 1 to MAX_RADIUS.
+// Kernel radius in pixels, 1 to MAX_RADIUS, fixed per pipeline as the depth and normal weights'
+// paths are (bilateral_weights.wgsl).
 override RADIUS: u32;
-// DEPTH_GAUSSIAN or DEPTH_THRESHOLD.
-override DEPTH_WEIGHT: u32;
-// Whether normals weigh in (normal_power > 0); without it no normal is loaded.
-override NORMAL_WEIGHT: bool;
 
 // Threads per workgroup, one per pixel of the segment: two 32-wide or one 64-wide SIMD group,
 // and long enough that the apron of a radius-8 kernel adds only 25% more loads (an 8x8 tile
@@ -55,10 +36,6 @@ const TILE: u32 = LINE + 2u * MAX_RADIUS;
 // threads of a SIMD group, which span the segments, read neighbouring words.
 var<workgroup> tile_ao_depth: array<vec2<f32>, TILE * ACROSS>;
 var<workgroup> tile_normal: array<vec3<f32>, TILE * ACROSS>;
-
-// log2(e): each factor of the weight is a power of e or of the facing cosine, so their base-2
-// logarithms add up and one exp2 gives the weight.
-const LOG2_E: f32 = 1.44269504;
 
 // The weight of a neighbour `offset` pixels from the centre whose depth is `depth`, against the
 // centre's normal `n0`; `relative_scale` is depth_scale over the centre's depth (> 0).
