@@ -42,8 +42,8 @@ configurations=(
 # naga and passed through (docs/peers.md).
 if [ -d "$peer" ]; then
     configurations+=(
-        "--peer xegtao=$peer --preset high"
-        "--peer xegtao=$peer --preset high --set spatial.enabled=true"
+        "--peer xegtao=$peer --preset high${AOKIT_PEER_SET:+ $AOKIT_PEER_SET}"
+        "--peer xegtao=$peer --preset high --set spatial.enabled=true${AOKIT_PEER_SET:+ $AOKIT_PEER_SET}"
     )
 else
     echo "gpu-run: no peer SPIR-V at $peer: timing aokit alone" >&2
