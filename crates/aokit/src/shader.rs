@@ -681,6 +681,35 @@ impl ShaderSource {
             .ok_or_else(|| format!("{}: no compute entry point `main`", self.name))
     }
 
+    /// The side of the square block of pixels each thread of `main` covers: the program's
+    /// `const TEXELS_PER_THREAD: u32`, or 1 where it declares none. A dispatch covers the image
+    /// with workgroup size times this many pixels a workgroup.
+    ///
+    /// ```
+    /// use aokit::shader;
+    /// // The linear depth pass converts 2x2 pixels a thread, the kernels one.
+    /// assert_eq!(shader::LINEAR_DEPTH[0].texels_per_thread()?, 2);
+    /// assert_eq!(shader::GTAO.texels_per_thread()?, 1);
+    /// # Ok::<(), String>(())
+    /// ```
+    pub fn texels_per_thread(&self) -> Result<u32, String> {
+        let module = self.parse(&self.source())?;
+        let Some((_, constant)) = module
+            .constants
+            .iter()
+            .find(|(_, c)| c.name.as_deref() == Some("TEXELS_PER_THREAD"))
+        else {
+            return Ok(1);
+        };
+        match module.global_expressions[constant.init] {
+            naga::Expression::Literal(naga::Literal::U32(n)) if n > 0 => Ok(n),
+            _ => Err(format!(
+                "{}: TEXELS_PER_THREAD must be a positive u32 literal",
+                self.name
+            )),
+        }
+    }
+
     /// Parses and validates the program with naga, as wgpu does, without a device. Returns the
     /// module so tests can inspect it (e.g. struct layouts).
     ///

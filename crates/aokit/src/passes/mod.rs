@@ -90,9 +90,10 @@ pub struct ComputeKernel {
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
     label: &'static str,
-    /// Width and height of `main`'s workgroup, read from the WGSL so that the dispatch cannot
+    /// Width and height in pixels of the block one workgroup of `main` covers: its workgroup
+    /// size times its `TEXELS_PER_THREAD`, read from the WGSL so that the dispatch cannot
     /// disagree with it.
-    workgroup_size: [u32; 2],
+    workgroup_pixels: [u32; 2],
 }
 
 impl ComputeKernel {
@@ -197,11 +198,12 @@ impl ComputeKernel {
             cache: None,
         });
         let [width, height, _] = source.workgroup_size().unwrap_or_else(|e| panic!("{e}"));
+        let texels = source.texels_per_thread().unwrap_or_else(|e| panic!("{e}"));
         Self {
             pipeline,
             layout,
             label: source.name,
-            workgroup_size: [width, height],
+            workgroup_pixels: [width * texels, height * texels],
         }
     }
 
@@ -220,7 +222,8 @@ impl ComputeKernel {
     }
 
     /// Binds `resources` in order (binding 0, 1, ...) and dispatches one thread per pixel of
-    /// `size` (workgroups of the shader's size, the last row and column partly outside), with
+    /// `size`, or per block of pixels where the shader declares `TEXELS_PER_THREAD`
+    /// (workgroups of the shader's size, the last row and column partly outside), with
     /// timestamps around the pass when `timestamps` is given.
     ///
     /// ```no_run
@@ -272,7 +275,7 @@ impl ComputeKernel {
         });
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, &bind_group, &[]);
-        let [width, height] = self.workgroup_size;
+        let [width, height] = self.workgroup_pixels;
         pass.dispatch_workgroups(size[0].div_ceil(width), size[1].div_ceil(height), 1);
     }
 }
