@@ -17,6 +17,29 @@
 @group(0) @binding(3) var linear_depth: texture_2d<f32>;
 @group(0) @binding(4) var normals: texture_2d<u32>;
 @group(0) @binding(5) var ao_out: texture_storage_2d<r32float, write>;
+@group(0) @binding(6) var point_clamp: sampler;
+
+// The 3x3 neighbourhoods are read in four gathers each, at the corners the centre texel shares
+// with its neighbours, rather than nine loads (XeGTAO's denoiser gathers too). A gather at the
+// corner `corner` (in pixels) returns x = (left, bottom), y = (right, bottom), z = (right,
+// top), w = (left, top) of the 2x2 texels around it; the taps come out row by row from the top
+// left. Texels outside the image read as the edge (the sampler clamps); their weight drops them.
+fn gather_3x3(t: texture_2d<f32>, corner: vec2<f32>) -> array<f32, 9> {
+    let a = textureGather(0, t, point_clamp, corner * view.inv_size);
+    let b = textureGather(0, t, point_clamp, (corner + vec2<f32>(1.0, 0.0)) * view.inv_size);
+    let c = textureGather(0, t, point_clamp, (corner + vec2<f32>(0.0, 1.0)) * view.inv_size);
+    let d = textureGather(0, t, point_clamp, (corner + vec2<f32>(1.0, 1.0)) * view.inv_size);
+    return array<f32, 9>(a.w, a.z, b.z, a.x, a.y, b.y, c.x, c.y, d.y);
+}
+
+// gather_3x3 of the oct32 normals.
+fn gather_normals_3x3(corner: vec2<f32>) -> array<u32, 9> {
+    let a = textureGather(0, normals, point_clamp, corner * view.inv_size);
+    let b = textureGather(0, normals, point_clamp, (corner + vec2<f32>(1.0, 0.0)) * view.inv_size);
+    let c = textureGather(0, normals, point_clamp, (corner + vec2<f32>(0.0, 1.0)) * view.inv_size);
+    let d = textureGather(0, normals, point_clamp, (corner + vec2<f32>(1.0, 1.0)) * view.inv_size);
+    return array<u32, 9>(a.w, a.z, b.z, a.x, a.y, b.y, c.x, c.y, d.y);
+}
 
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
@@ -24,52 +47,53 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let centre = vec2<i32>(id.xy);
-    let depth = textureLoad(linear_depth, centre, 0).r;
+    let depths = gather_3x3(linear_depth, vec2<f32>(id.xy));
+    let depth = depths[4];
     if depth == NO_SURFACE {
         textureStore(ao_out, centre, vec4<f32>(1.0, 0.0, 0.0, 0.0));
         return;
     }
+    let aos = gather_3x3(ao_in, vec2<f32>(id.xy));
+    var packed_normals: array<u32, 9>;
     var n0 = vec3<f32>(0.0);
     if NORMAL_WEIGHT {
-        n0 = unpack_oct32(textureLoad(normals, centre, 0).r);
+        packed_normals = gather_normals_3x3(vec2<f32>(id.xy));
+        n0 = unpack_oct32(packed_normals[4]);
     }
     let relative_scale = spatial.depth_scale / depth;
     // The spatial factor of a neighbour sharing an edge, and of a diagonal one (k^2 = 2): the
     // same for every pixel, so the taps take only their depth's (and normal's) exp2.
     let edge_weight = exp2(-0.5 * LOG2_E * spatial.spatial_scale * spatial.spatial_scale);
-    let last = vec2<i32>(view.size) - 1;
+    let size = vec2<i32>(view.size);
     var sum = 0.0;
     var weight_sum = 0.0;
-    for (var y = -1; y <= 1; y++) {
-        for (var x = -1; x <= 1; x++) {
-            let offset = vec2<i32>(x, y);
-            // Clamped so every load is inside the image; the weight drops what was moved.
-            let at = clamp(centre + offset, vec2<i32>(0), last);
-            let d = textureLoad(linear_depth, at, 0).r;
-            let r = abs(d - depth) * relative_scale;
-            let spatial_weight =
-                select(1.0, edge_weight, x != 0) * select(1.0, edge_weight, y != 0);
-            var log2_w = 0.0;
-            var kept = all(at == centre + offset) && d != NO_SURFACE;
-            if DEPTH_WEIGHT == DEPTH_THRESHOLD {
-                kept = kept && r < 1.0;
-            } else {
-                log2_w -= 0.5 * LOG2_E * r * r;
-            }
-            if NORMAL_WEIGHT {
-                let facing = max(dot(unpack_oct32(textureLoad(normals, at, 0).r), n0), 0.0);
-                // A neighbour facing away weighs nothing (log2(0) is left to the implementation).
-                kept = kept && facing > 0.0;
-                log2_w += spatial.normal_power * log2(facing);
-            }
-            var w = spatial_weight;
-            if DEPTH_WEIGHT != DEPTH_THRESHOLD || NORMAL_WEIGHT {
-                w *= exp2(log2_w);
-            }
-            w = select(0.0, w, kept);
-            sum += w * textureLoad(ao_in, at, 0).r;
-            weight_sum += w;
+    for (var k = 0; k < 9; k++) {
+        let offset = vec2<i32>(k % 3 - 1, k / 3 - 1);
+        let at = centre + offset;
+        let d = depths[k];
+        let r = abs(d - depth) * relative_scale;
+        let spatial_weight =
+            select(1.0, edge_weight, offset.x != 0) * select(1.0, edge_weight, offset.y != 0);
+        var log2_w = 0.0;
+        var kept = all(at >= vec2<i32>(0)) && all(at < size) && d != NO_SURFACE;
+        if DEPTH_WEIGHT == DEPTH_THRESHOLD {
+            kept = kept && r < 1.0;
+        } else {
+            log2_w -= 0.5 * LOG2_E * r * r;
         }
+        if NORMAL_WEIGHT {
+            let facing = max(dot(unpack_oct32(packed_normals[k]), n0), 0.0);
+            // A neighbour facing away weighs nothing (log2(0) is left to the implementation).
+            kept = kept && facing > 0.0;
+            log2_w += spatial.normal_power * log2(facing);
+        }
+        var w = spatial_weight;
+        if DEPTH_WEIGHT != DEPTH_THRESHOLD || NORMAL_WEIGHT {
+            w *= exp2(log2_w);
+        }
+        w = select(0.0, w, kept);
+        sum += w * aos[k];
+        weight_sum += w;
     }
     textureStore(ao_out, centre, vec4<f32>(sum / weight_sum, 0.0, 0.0, 0.0));
 }

@@ -11,8 +11,9 @@ use crate::shader;
 use crate::uniforms::SpatialUniforms;
 
 /// The bindings of `shader::EDGE_FILTER`: view uniforms, filter settings, the AO, the linear
-/// depth, the normals, the filtered AO written.
-pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 6] {
+/// depth, the normals, the filtered AO written, the point-clamp sampler its gathers read
+/// through.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 7] {
     let float = wgpu::TextureSampleType::Float { filterable: false };
     [
         bind::uniform(0),
@@ -21,6 +22,7 @@ pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 6] {
         bind::texture(3, float),
         bind::texture(4, wgpu::TextureSampleType::Uint),
         bind::storage_texture(5, AO_FORMAT),
+        bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
     ]
 }
 
@@ -32,6 +34,7 @@ pub struct EdgeFilterPass {
     /// The variant of the settings last given, when they select the edges kind.
     current: Option<(DepthWeight, bool)>,
     uniforms: wgpu::Buffer,
+    point_clamp: wgpu::Sampler,
 }
 
 impl EdgeFilterPass {
@@ -42,6 +45,10 @@ impl EdgeFilterPass {
             kernels: HashMap::new(),
             current: None,
             uniforms: create_uniform_buffer::<SpatialUniforms>(device, "aokit edge filter"),
+            point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some("aokit edge filter point clamp"),
+                ..Default::default()
+            }),
         };
         pass.set_settings(device, queue, settings);
         pass
@@ -105,6 +112,7 @@ impl EdgeFilterPass {
                 view(linear_depth),
                 view(normals),
                 view(output),
+                wgpu::BindingResource::Sampler(&self.point_clamp),
             ],
         );
     }
