@@ -38,12 +38,22 @@ configurations=(
     "$gtao --set spatial.enabled=true --set spatial.kind=edges"
     "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=0"
 )
-# Each peer configuration runs twice where the adapter takes SPIR-V passed through: through
-# naga and passed through (docs/peers.md).
+# Each peer configuration runs twice where the driver takes the SPIR-V passed through: through
+# naga and passed through (docs/peers.md). A driver that fails to compile it loses the device
+# (NVIDIA 580 did), so a small run in a process of its own tries first; where it fails, the
+# peer runs through naga alone and the reason goes to OUT/passthrough.txt.
 if [ -d "$peer" ]; then
+    shader=""
+    if ! "$aokit" bench --scene room --size 64x64 --frames 1 --warmup 0 --peer "xegtao=$peer" \
+        --set peer.shader=passthrough >/dev/null 2>"$out/passthrough.txt"; then
+        echo "gpu-run: XeGTAO passed through failed (see $out/passthrough.txt): naga only" >&2
+        shader=" --set peer.shader=naga"
+    else
+        rm "$out/passthrough.txt"
+    fi
     configurations+=(
-        "--peer xegtao=$peer --preset high${AOKIT_PEER_SET:+ $AOKIT_PEER_SET}"
-        "--peer xegtao=$peer --preset high --set spatial.enabled=true${AOKIT_PEER_SET:+ $AOKIT_PEER_SET}"
+        "--peer xegtao=$peer --preset high$shader"
+        "--peer xegtao=$peer --preset high --set spatial.enabled=true$shader"
     )
 else
     echo "gpu-run: no peer SPIR-V at $peer: timing aokit alone" >&2

@@ -3,6 +3,7 @@
 //! term; on aokit's depth buffer and normals, timed with aokit's [`PassTimer`].
 
 use std::borrow::Cow;
+use std::sync::{Arc, Mutex};
 
 use anyhow::{Result, bail};
 use aokit::gpu::{create_texture_2d, create_texture_2d_mips, mip_view};
@@ -124,8 +125,28 @@ fn denoise_entries(format: wgpu::TextureFormat) -> Vec<wgpu::BindGroupLayoutEntr
     ]
 }
 
+/// The message of the device's loss, once it is lost (`Device::set_device_lost_callback`).
+#[derive(Clone, Default)]
+struct DeviceLost(Arc<Mutex<Option<String>>>);
+
+impl DeviceLost {
+    /// Watches `device` from now on.
+    fn watch(device: &wgpu::Device) -> Self {
+        let lost = Self::default();
+        let message = lost.0.clone();
+        device.set_device_lost_callback(move |_, text| {
+            *message.lock().unwrap_or_else(|e| e.into_inner()) = Some(text);
+        });
+        lost
+    }
+
+    fn take(&self) -> Option<String> {
+        self.0.lock().unwrap_or_else(|e| e.into_inner()).take()
+    }
+}
+
 /// A compute pipeline from SPIR-V `words`, through naga or passed through; wgpu's validation
-/// errors come back as errors.
+/// errors and the driver's own failures come back as errors.
 fn pass(
     device: &wgpu::Device,
     name: &'static str,
@@ -133,8 +154,10 @@ fn pass(
     words: &[u32],
     path: ShaderPath,
     entries: &[wgpu::BindGroupLayoutEntry],
+    lost: &DeviceLost,
 ) -> Result<Pass> {
-    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let internal = device.push_error_scope(wgpu::ErrorFilter::Internal);
+    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
     let module = match path {
         ShaderPath::Naga => device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(name),
@@ -173,10 +196,37 @@ fn pass(
         compilation_options: Default::default(),
         cache: None,
     });
-    if let Some(error) = pollster::block_on(scope.pop()) {
+    let hint = match path {
+        ShaderPath::Passthrough => " (through naga it may: --set peer.shader=naga)",
+        ShaderPath::Naga => "",
+    };
+    if let Some(error) = pollster::block_on(validation.pop()) {
         bail!(
-            "XeGTAO's {name} pass cannot run through {} on this device: {error}",
+            "XeGTAO's {name} pass cannot run through {} on this device: {error}{hint}",
             path.name()
+        );
+    }
+    // A driver that cannot compile the SPIR-V (NVIDIA's 580 driver answers glslang's passed
+    // through with "NVVM compilation failed") fails the pipeline, and wgpu takes the device for
+    // lost without an error to catch: caught here, it stops the run with the reason rather
+    // than a panic at the next use of the device.
+    if let Some(message) = lost.take() {
+        bail!(
+            "the driver failed to build XeGTAO's {name} pass from the SPIR-V given it {}, and \
+             the device is lost: {message}{hint}",
+            match path {
+                ShaderPath::Passthrough => "as it is",
+                ShaderPath::Naga => "through naga",
+            }
+        );
+    }
+    if let Some(error) = pollster::block_on(internal.pop()) {
+        bail!(
+            "the driver could not build XeGTAO's {name} pass from the SPIR-V given {}:              {error}{hint}",
+            match path {
+                ShaderPath::Passthrough => "it as it is",
+                ShaderPath::Naga => "it through naga",
+            }
         );
     }
     Ok(Pass {
@@ -214,6 +264,7 @@ impl XeGtao {
         let storage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
         let readable = storage | wgpu::TextureUsages::COPY_SRC;
         let term = |label| create_texture_2d(device, label, size, TERM_FORMAT, storage);
+        let lost = DeviceLost::watch(device);
         Ok(Self {
             size,
             settings: settings.clone(),
@@ -224,6 +275,7 @@ impl XeGtao {
                 &shaders.prefilter,
                 path,
                 &prefilter_entries(),
+                &lost,
             )?,
             main: pass(
                 device,
@@ -232,6 +284,7 @@ impl XeGtao {
                 &shaders.main,
                 path,
                 &main_entries(),
+                &lost,
             )?,
             denoise: pass(
                 device,
@@ -240,6 +293,7 @@ impl XeGtao {
                 &shaders.denoise,
                 path,
                 &denoise_entries(TERM_FORMAT),
+                &lost,
             )?,
             denoise_last: pass(
                 device,
@@ -248,6 +302,7 @@ impl XeGtao {
                 &shaders.denoise_last,
                 path,
                 &denoise_entries(FINAL_FORMAT),
+                &lost,
             )?,
             constants: device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("xegtao constants"),
