@@ -113,17 +113,17 @@ impl Ue4SsaoSettings {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct MsvoSettings {
-    /// Depth samples per texel at each level, in mirrored pairs (even, 2 to 64), on a disc of
+    /// Depth samples per texel at each level, in mirrored pairs, on a disc of
     /// 5 texels of the level. The working level costs this many per pixel; each coarser level
     /// a quarter of the one before, so all five at most a third more.
     pub sample_count: u32,
-    /// Levels of the depth MIP chain the obscurance is computed at, 1 to [`MSVO_MAX_LEVELS`]:
+    /// Levels of the depth MIP chain the obscurance is computed at, at most [`MSVO_MAX_LEVELS`]:
     /// level `k` covers radii up to `5 * 2^k` working texels, so the screen radius stops at
     /// `5 * 2^(levels - 1)` ([`AoSettings::effective_max_radius_px`]).
     pub levels: u32,
     /// Unity's thickness modifier (MiniEngine's rejection falloff): a sample more than this
     /// many sphere chords in front of the sphere is taken for a thin occluder and rejected.
-    /// Larger values darken creases and add halos around objects; must be > 0.
+    /// Larger values darken creases and add halos around objects.
     pub thickness: f32,
 }
 
@@ -255,7 +255,7 @@ pub struct GtaoSettings {
     /// plain average is noisy even on open ground; the ratio is exactly 1 there and converges to
     /// the same value as more slices are taken.
     pub normalize_slices: bool,
-    /// The GTAO paper's thickness heuristic, in [0, 1]: how far the horizon falls back towards a
+    /// The GTAO paper's thickness heuristic: how far the horizon falls back towards a
     /// sample that lies below it, so that an occluder the march has passed stops counting, as if
     /// objects were about as thick as they are wide. 0 keeps the highest horizon (a height field).
     pub thickness: f32,

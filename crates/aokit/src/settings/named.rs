@@ -45,6 +45,19 @@ macro_rules! named_enum {
             }
         }
 
+        impl $crate::settings::Field for $name {
+            const NAMES: &'static [&'static str] = &[$($text),+];
+            fn to_value(self) -> $crate::settings::SettingValue {
+                $crate::settings::SettingValue::Choice(self.name())
+            }
+            fn from_value(value: $crate::settings::SettingValue) -> Result<Self, String> {
+                match value {
+                    $crate::settings::SettingValue::Choice(name) => name.parse(),
+                    other => Err(format!("expected a {} name, not {other}", $what)),
+                }
+            }
+        }
+
         impl std::str::FromStr for $name {
             type Err = String;
             fn from_str(s: &str) -> Result<Self, String> {

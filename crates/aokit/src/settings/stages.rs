@@ -47,7 +47,7 @@ pub struct NormalsSettings {
 pub struct NoiseSettings {
     /// Which noise.
     pub kind: NoiseKind,
-    /// Side of the blue-noise tile: 64 or 128.
+    /// Side of the blue-noise tile, in texels.
     pub blue_size: u32,
     /// How the tiled kinds (`blue`, `bayer`, `white`, `hilbert-r2`) move each frame; `ign` and
     /// `gtao` keep their own schedules.
@@ -92,7 +92,7 @@ pub struct SpatialSettings {
     pub enabled: bool,
     /// Which filter runs: the bilateral blur (default) or the guided filter.
     pub kind: SpatialKind,
-    /// Kernel radius of the bilateral filter in pixels, 1..=8: each pass averages
+    /// Kernel radius of the bilateral filter in pixels: each pass averages
     /// `2 * radius + 1` pixels.
     pub radius: u32,
     /// Standard deviation of the Gaussian spatial weight, in pixels.
@@ -106,7 +106,7 @@ pub struct SpatialSettings {
     /// Exponent of the normal weight `max(0, n . n0)^normal_power`; 0 turns the normal weight
     /// off (and its normal loads with it).
     pub normal_power: f32,
-    /// Window radius of the guided filter in pixels, 1..=8: it fits AO against depth in
+    /// Window radius of the guided filter in pixels: it fits AO against depth in
     /// windows of `(2 guided_radius + 1)^2` pixels, and each pixel averages the fits of the
     /// windows that hold it, so its AO mixes pixels up to `2 guided_radius` away.
     pub guided_radius: u32,
@@ -138,7 +138,7 @@ pub struct TemporalSettings {
     /// Filter over frames. Off by default, like the spatial filter: the published tables score
     /// single frames.
     pub enabled: bool,
-    /// Weight of the history in `[0, 1)`: the noise averages over about `1 / (1 - blend)`
+    /// Weight of the history: the noise averages over about `1 / (1 - blend)`
     /// frames, and a change takes as long to show fully.
     pub blend: f32,
     /// History is clipped to the mean of the pixel's 3x3 same-surface neighbours plus or minus

@@ -219,3 +219,158 @@ fn the_separable_hbao_variant_is_refused_to_hbao_plus_and_stops_at_its_apron() {
         assert_eq!(v.name().parse::<HbaoVariant>().unwrap(), v);
     }
 }
+
+#[test]
+fn validate_names_the_key_the_value_and_the_declared_range() {
+    let message = |change: fn(&mut AoSettings)| {
+        let mut s = AoSettings::default();
+        change(&mut s);
+        s.validate().unwrap_err().to_string()
+    };
+    let cases: [(fn(&mut AoSettings), &str); 12] = [
+        (
+            |s| s.radius = 0.0,
+            "setting `radius` = 0 is out of range: a finite number > 0",
+        ),
+        (
+            |s| s.radius_multiplier = 4.5,
+            "setting `radius_multiplier` = 4.5 is out of range: a number in (0, 4]",
+        ),
+        (
+            |s| s.max_radius_px = 0.5,
+            "setting `max_radius_px` = 0.5 is out of range: a finite number >= 1",
+        ),
+        (
+            |s| s.min_radius_px = 300.0,
+            "setting `min_radius_px` = 300 with max_radius_px = 256 is out of range: a number in \
+             [0, max_radius_px]",
+        ),
+        (
+            |s| s.angle_bias = 2.0,
+            "setting `angle_bias` = 2 is out of range: a number in [0, pi/2) (radians)",
+        ),
+        (
+            |s| {
+                s.max_distance = 10.0;
+                s.distance_falloff = 20.0;
+            },
+            "setting `distance_falloff` = 20 with max_distance = 10 is out of range: a number \
+             in [0, max_distance]",
+        ),
+        (
+            |s| s.msvo.sample_count = 7,
+            "setting `msvo.sample_count` = 7 is out of range: an even integer in 2..=64",
+        ),
+        (
+            |s| s.msvo.levels = 6,
+            "setting `msvo.levels` = 6 is out of range: an integer in 1..=5",
+        ),
+        (
+            |s| s.noise.blue_size = 96,
+            "setting `noise.blue_size` = 96 is out of range: 64 or 128",
+        ),
+        (
+            |s| s.temporal.blend = 1.0,
+            "setting `temporal.blend` = 1 is out of range: a number in [0, 1)",
+        ),
+        (
+            |s| s.depth_mip_offset = f32::NAN,
+            "setting `depth_mip_offset` = NaN is out of range: a number in [0, 16] (log2 pixels)",
+        ),
+        (
+            |s| {
+                s.method = Method::HbaoPlus;
+                s.hbao.variant = HbaoVariant::Separable;
+            },
+            "setting `hbao.variant` = separable with method hbao-plus is out of range: per-pixel: \
+             the separable passes integrate hbao's horizons, which hbao-plus does not have",
+        ),
+    ];
+    for (change, expected) in cases {
+        assert_eq!(message(change), expected);
+    }
+}
+
+#[test]
+fn the_declarations_are_unique_and_their_limits_name_earlier_float_settings() {
+    for (i, spec) in SETTINGS.iter().enumerate() {
+        assert!(
+            SETTINGS[..i].iter().all(|s| s.name != spec.name),
+            "{} declared twice",
+            spec.name
+        );
+        assert!(!spec.help.is_empty(), "{}", spec.name);
+        if let SettingKind::Float(FloatRange {
+            max: Some(Limit::Setting { key, .. }),
+            ..
+        }) = spec.kind
+        {
+            let limit = SETTINGS[..i].iter().find(|s| s.name == key);
+            assert!(
+                matches!(limit.map(|s| s.kind), Some(SettingKind::Float(_))),
+                "{}'s limit {key} is not a float setting checked before it",
+                spec.name
+            );
+        }
+        if let SettingKind::Choice(names) = spec.kind {
+            assert!(names.len() >= 2, "{}", spec.name);
+        }
+    }
+}
+
+#[test]
+fn every_setting_reads_back_what_it_sets_and_refuses_other_types() {
+    for method in Method::ALL {
+        for preset in Preset::ALL {
+            let settings = AoSettings::preset(method, preset);
+            for spec in SETTINGS {
+                let mut copy = settings;
+                let value = spec.get(&settings);
+                spec.set(&mut copy, value).unwrap();
+                assert_eq!(copy, settings, "{}", spec.name);
+                assert_eq!(spec.parse(&value.to_string()), Ok(value), "{}", spec.name);
+                let other = match value {
+                    SettingValue::Bool(_) => SettingValue::Choice("x"),
+                    _ => SettingValue::Bool(true),
+                };
+                assert!(matches!(
+                    spec.set(&mut copy, other),
+                    Err(SetError::Invalid { .. })
+                ));
+                assert_eq!(copy, settings, "{}", spec.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn set_by_key_checks_like_validate_and_suggests_a_key() {
+    let mut s = AoSettings::default();
+    s.set("spatial.kind", SettingValue::Choice("guided"))
+        .unwrap();
+    assert_eq!(s.spatial.kind, SpatialKind::Guided);
+    // Floats take integers.
+    s.set("radius", SettingValue::Integer(2)).unwrap();
+    assert_eq!(s.radius, 2.0);
+    let err = s
+        .set("spatial.guided_epsilon", SettingValue::Float(0.0))
+        .unwrap_err();
+    assert_eq!(
+        err,
+        SetError::OutOfRange(SettingsError {
+            field: "spatial.guided_epsilon",
+            value: "0".into(),
+            expected: "a finite number > 0",
+        })
+    );
+    let err = s
+        .set("spatial.kind", SettingValue::Choice("box"))
+        .unwrap_err();
+    assert!(
+        err.to_string().contains("bilateral, guided, edges"),
+        "{err}"
+    );
+    assert_eq!(suggest_setting("gtao.steps"), Some("gtao.steps_per_side"));
+    assert_eq!(suggest_setting("Radius"), Some("radius"));
+    assert_eq!(suggest_setting("zzz"), None);
+}
