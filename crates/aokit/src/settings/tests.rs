@@ -227,7 +227,8 @@ fn validate_names_the_key_the_value_and_the_declared_range() {
         change(&mut s);
         s.validate().unwrap_err().to_string()
     };
-    let cases: [(fn(&mut AoSettings), &str); 12] = [
+    type Change = fn(&mut AoSettings);
+    let cases: [(Change, &str); 12] = [
         (
             |s| s.radius = 0.0,
             "setting `radius` = 0 is out of range: a finite number > 0",
