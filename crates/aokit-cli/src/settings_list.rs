@@ -121,7 +121,7 @@ fn variation(spec: &SettingSpec) -> Option<String> {
 const INTRO: &str = "\
 # Settings
 
-<!-- Generated from the declarations in crates/aokit/src/settings/spec.rs by
+<!-- Generated from the declarations in crates/aokit/src/settings/table.rs by
 `aokit settings --markdown > docs/settings.md`: edit those, not this file. -->
 
 Everything that shapes the AO lives in one struct, `aokit::AoSettings`. The CLI builds it in

@@ -1,5 +1,5 @@
 //! `aokit settings`: every setting's range, default and effective value, and docs/settings.md
-//! as the declarations (crates/aokit/src/settings/spec.rs) generate it.
+//! as the declarations (crates/aokit/src/settings/table.rs) generate it.
 
 use crate::common::{aokit, failure, ok};
 

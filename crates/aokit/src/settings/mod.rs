@@ -12,6 +12,7 @@ mod methods;
 mod named;
 mod spec;
 mod stages;
+mod table;
 #[cfg(test)]
 mod tests;
 mod validate;
@@ -22,8 +23,9 @@ pub use methods::*;
 pub(crate) use named::{find_by_name, named_enum};
 pub(crate) use spec::Field;
 pub use spec::{
-    FloatRange, IntegerRange, Limit, SETTINGS, SetError, SettingKind, SettingSpec, SettingValue,
+    FloatRange, IntegerRange, Limit, SetError, SettingKind, SettingSpec, SettingValue,
     find_setting, suggest_setting,
 };
 pub use stages::*;
+pub use table::SETTINGS;
 pub use validate::*;
