@@ -122,12 +122,18 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         radius_multiplier,
         float(0.0, false, Limit::Value(4.0), true, None),
-        "the kernel's radius over `radius`: screen-space methods under-occlude at the true radius, and sampling a little farther brings them closer to the reference traced at `radius`; 1 samples at `radius`"
+        "the kernel's radius over `radius`: screen-space methods under-occlude at the true radius, \
+         and sampling a little farther brings them closer to the reference traced at `radius`; 1 \
+         samples at `radius`"
     ),
     setting!(
         falloff,
         unit(),
-        "fraction of the radius, at its outer end, over which a sample's influence fades to zero; 0 cuts off hard, as the reference does (used by `gtao`, by the range checks of `ssao` and `ssao-crytek`, and by `ue4-ssao`'s weight, which fades with how far a sample rises towards the eye: its preset's 1 is Unreal Engine 4's linear fade over the whole radius; `sao` has its own in its estimator)"
+        "fraction of the radius, at its outer end, over which a sample's influence fades to zero; \
+         0 cuts off hard, as the reference does (used by `gtao`, by the range checks of `ssao` and \
+         `ssao-crytek`, and by `ue4-ssao`'s weight, which fades with how far a sample rises \
+         towards the eye: its preset's 1 is Unreal Engine 4's linear fade over the whole radius; \
+         `sao` has its own in its estimator)"
     ),
     setting!(
         intensity,
@@ -142,17 +148,27 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         max_radius_px,
         at_least(1.0),
-        "largest screen radius in pixels of the input, at any `resolution` (Max Radius Pixels of the Unity Asset Store package \"Horizon Based Ambient Occlusion\"): nearer surfaces get a world radius that covers this many pixels; `msvo` stops sooner, at its coarsest level's disc"
+        "largest screen radius in pixels of the input, at any `resolution` (Max Radius Pixels of \
+         the Unity Asset Store package \"Horizon Based Ambient Occlusion\"): nearer surfaces get a \
+         world radius that covers this many pixels; `msvo` stops sooner, at its coarsest level's \
+         disc"
     ),
     setting!(
         min_radius_px,
         up_to("max_radius_px", false),
-        "smallest screen radius in pixels of the input: farther surfaces get a world radius widened to cover this many pixels, so distant geometry keeps a contact shadow (a look control: it departs from the world radius and the reference); 0 keeps the world radius, and AO stops where it covers under one pixel"
+        "smallest screen radius in pixels of the input: farther surfaces get a world radius \
+         widened to cover this many pixels, so distant geometry keeps a contact shadow (a look \
+         control: it departs from the world radius and the reference); 0 keeps the world radius, \
+         and AO stops where it covers under one pixel"
     ),
     setting!(
         bias,
         unit(),
-        "self-occlusion bias of `ssao`, `ssao-crytek` and `sao` (the paper's beta, subtracted from `v . n`), and `ue4-ssao`'s flat-surface bias in its depth-only version (a pair occludes only where its two samples together rise this far towards the eye above the pixel), as a fraction of the radius; `sao`'s preset is the paper's, `ue4-ssao`'s Unreal's 5 units at its 200-unit radius"
+        "self-occlusion bias of `ssao`, `ssao-crytek` and `sao` (the paper's beta, subtracted from \
+         `v . n`), and `ue4-ssao`'s flat-surface bias in its depth-only version (a pair occludes \
+         only where its two samples together rise this far towards the eye above the pixel), as a \
+         fraction of the radius; `sao`'s preset is the paper's, `ue4-ssao`'s Unreal's 5 units at \
+         its 200-unit radius"
     ),
     setting!(
         angle_bias,
@@ -163,17 +179,20 @@ pub static SETTINGS: &[SettingSpec] = &[
             false,
             Some("radians")
         ),
-        "angle bias of `hbao` (added to the tangent angle) and `hbao-plus` (its sine is the N.V bias), radians"
+        "angle bias of `hbao` (added to the tangent angle) and `hbao-plus` (its sine is the N.V \
+         bias), radians"
     ),
     setting!(
         step_power,
         within(0.25, 4.0),
-        "step spacing of the marching methods, `1 + t^step_power * (R_px - 1)` pixels: 1 even, 2 crowded near the pixel"
+        "step spacing of the marching methods, `1 + t^step_power * (R_px - 1)` pixels: 1 even, 2 \
+         crowded near the pixel"
     ),
     setting!(
         max_distance,
         at_least(0.0),
-        "view depth beyond which there is no AO; 0: no limit (Max Distance of the Unity Asset Store package \"Horizon Based Ambient Occlusion\")"
+        "view depth beyond which there is no AO; 0: no limit (Max Distance of the Unity Asset \
+         Store package \"Horizon Based Ambient Occlusion\")"
     ),
     setting!(
         distance_falloff,
@@ -203,38 +222,49 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         sao.sample_count,
         count(),
-        "taps on SAO's spiral per pixel (its turns follow from the count: [methods/sao.md](methods/sao.md))"
+        "taps on SAO's spiral per pixel (its turns follow from the count: \
+         [methods/sao.md](methods/sao.md))"
     ),
     setting!(
         msvo.sample_count,
         integers(2, MAX_SAMPLE_COUNT, 2),
-        "depth samples per texel at each level, in mirrored pairs on a disc of 5 texels of the level; the working level costs this many per pixel, the coarser four together at most a third more ([methods/msvo.md](methods/msvo.md))"
+        "depth samples per texel at each level, in mirrored pairs on a disc of 5 texels of the \
+         level; the working level costs this many per pixel, the coarser four together at most a \
+         third more ([methods/msvo.md](methods/msvo.md))"
     ),
     setting!(
         msvo.levels,
         integers(1, MSVO_MAX_LEVELS, 1),
-        "levels of the depth MIP chain the obscurance is computed at and merged from; the screen radius stops at `5 * 2^(levels - 1)` working texels (80 with all five)"
+        "levels of the depth MIP chain the obscurance is computed at and merged from; the screen \
+         radius stops at `5 * 2^(levels - 1)` working texels (80 with all five)"
     ),
     setting!(
         msvo.thickness,
         positive(),
-        "Unity's thickness modifier: a sample more than this many sphere chords in front of the sphere is taken for a thin occluder and rejected; larger darkens creases and adds halos around objects",
+        "Unity's thickness modifier: a sample more than this many sphere chords in front of the \
+         sphere is taken for a thin occluder and rejected; larger darkens creases and adds halos \
+         around objects",
         note = "Unity's default"
     ),
     setting!(
         ue4_ssao.sample_count,
         count(),
-        "sample pairs per pixel, each two depth samples mirrored about the pixel: a pixel reads twice this many depths, so presets give 2, 4, 9 and 27 pairs ([methods/ue4-ssao.md](methods/ue4-ssao.md))"
+        "sample pairs per pixel, each two depth samples mirrored about the pixel: a pixel reads \
+         twice this many depths, so presets give 2, 4, 9 and 27 pairs \
+         ([methods/ue4-ssao.md](methods/ue4-ssao.md))"
     ),
     setting!(
         ue4_ssao.use_normals,
         bool,
-        "`ue4-ssao`'s normal version, each sample's angle measured from the tangent plane; false: the depth-only version, the angle between the two samples of a pair with the flat-surface `bias`"
+        "`ue4-ssao`'s normal version, each sample's angle measured from the tangent plane; false: \
+         the depth-only version, the angle between the two samples of a pair with the flat-surface \
+         `bias`"
     ),
     setting!(
         hbao.direction_count,
         count(),
-        "screen directions over the full circle, rotated per pixel (`hbao`, `hbao-plus`; not read by `hbao.variant = separable`, which has four)"
+        "screen directions over the full circle, rotated per pixel (`hbao`, `hbao-plus`; not read \
+         by `hbao.variant = separable`, which has four)"
     ),
     setting!(
         hbao.step_count,
@@ -244,7 +274,11 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         hbao.variant,
         choice,
-        "how `hbao` runs: one kernel per pixel, or two passes over rows and then columns of depth in workgroup memory, after NVIDIA's compute-shader HBAO: four fixed directions (+-x, +-y), `4 * step_count` samples, the screen radius stopped at 128 texels of the working resolution ([methods/hbao.md](methods/hbao.md#separable-hbao-hbaovariant--separable)); `hbao-plus` accepts only `per-pixel`",
+        "how `hbao` runs: one kernel per pixel, or two passes over rows and then columns of depth \
+         in workgroup memory, after NVIDIA's compute-shader HBAO: four fixed directions (+-x, \
+         +-y), `4 * step_count` samples, the screen radius stopped at 128 texels of the working \
+         resolution ([methods/hbao.md](methods/hbao.md#separable-hbao-hbaovariant--separable)); \
+         `hbao-plus` accepts only `per-pixel`",
         rule = Rule {
             holds: |s| !(s.method == Method::HbaoPlus && s.hbao.variant == HbaoVariant::Separable),
             value: |s| format!("{} with method {}", s.hbao.variant.name(), s.method.name()),
@@ -265,12 +299,14 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         gtao.normalize_slices,
         bool,
-        "divide by the slices' unoccluded integrals (see [gtao.md](methods/gtao.md#slices-normalised-by-their-unoccluded-integrals))"
+        "divide by the slices' unoccluded integrals (see \
+         [gtao.md](methods/gtao.md#slices-normalised-by-their-unoccluded-integrals))"
     ),
     setting!(
         gtao.thickness,
         unit(),
-        "the GTAO paper's thickness heuristic: how far the horizon falls back towards a sample below it"
+        "the GTAO paper's thickness heuristic: how far the horizon falls back towards a sample \
+         below it"
     ),
     setting!(vbao.slice_count, count(), "slices per pixel"),
     setting!(
@@ -291,22 +327,32 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         vbao.back_faces,
         bool,
-        "measure each occluder's thickness from `AoInputs::back_depth` (the depth of the back faces; `aokit ao --back-depth`), `vbao.thickness` then being the least thickness; turning it on in `--set` or a settings file starts from VBAO's presets tuned with back faces (`AoSettings::preset_with_back_faces`, [methods/vbao.md](methods/vbao.md#measured-thickness-vbaoback_faces))"
+        "measure each occluder's thickness from `AoInputs::back_depth` (the depth of the back \
+         faces; `aokit ao --back-depth`), `vbao.thickness` then being the least thickness; turning \
+         it on in `--set` or a settings file starts from VBAO's presets tuned with back faces \
+         (`AoSettings::preset_with_back_faces`, \
+         [methods/vbao.md](methods/vbao.md#measured-thickness-vbaoback_faces))"
     ),
     setting!(
         normals.encoding,
         choice,
-        "how the normal texture is encoded: what the pipeline decodes from the input normals (their texture format must match), what the scene renderer's G-buffer and `aokit ao` upload store ([normals.md](normals.md))"
+        "how the normal texture is encoded: what the pipeline decodes from the input normals \
+         (their texture format must match), what the scene renderer's G-buffer and `aokit ao` \
+         upload store ([normals.md](normals.md))"
     ),
     setting!(
         normals.space,
         choice,
-        "the space of the input normals; world-space ones are turned into view space with `AoInputs::view_from_world` by the decode pass, which then runs for oct32 too (0.026 ms at 1080p on an H100, the decode pass's cost in [performance.md](performance.md))"
+        "the space of the input normals; world-space ones are turned into view space with \
+         `AoInputs::view_from_world` by the decode pass, which then runs for oct32 too (0.026 ms \
+         at 1080p on an H100, the decode pass's cost in [performance.md](performance.md))"
     ),
     setting!(
         normals.source,
         choice,
-        "where the AO's normals come from: the normal texture (without one, `depth-5tap`, the best reconstruction), or reconstructed from depth by the named method ([normals.md](normals.md#normals-from-depth))"
+        "where the AO's normals come from: the normal texture (without one, `depth-5tap`, the best \
+         reconstruction), or reconstructed from depth by the named method \
+         ([normals.md](normals.md#normals-from-depth))"
     ),
     setting!(
         noise.kind,
@@ -321,17 +367,23 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         noise.temporal,
         choice,
-        "how the tiled kinds (`blue`, `bayer`, `white`, `hilbert-r2`) move each frame: both values by the golden ratio's fraction, or by R2's step"
+        "how the tiled kinds (`blue`, `bayer`, `white`, `hilbert-r2`) move each frame: both values \
+         by the golden ratio's fraction, or by R2's step"
     ),
     setting!(
         spatial.enabled,
         bool,
-        "run the spatial filter, an edge-aware blur of the AO ([denoise.md](denoise.md)); off so that the published tables keep scoring raw AO"
+        "run the spatial filter, an edge-aware blur of the AO ([denoise.md](denoise.md)); off so \
+         that the published tables keep scoring raw AO"
     ),
     setting!(
         spatial.kind,
         choice,
-        "which filter: the separable bilateral blur (the keys `radius` to `normal_power` below), He, Sun and Tang's guided filter with log depth as the guide (`guided_radius`, `guided_epsilon`; [denoise.md](denoise.md#guided-filter)), or one pass over each pixel's 3x3 neighbourhood with the bilateral weights (`sigma` to `normal_power`; [denoise.md](denoise.md#edges-kind))"
+        "which filter: the separable bilateral blur (the keys `radius` to `normal_power` below), \
+         He, Sun and Tang's guided filter with log depth as the guide (`guided_radius`, \
+         `guided_epsilon`; [denoise.md](denoise.md#guided-filter)), or one pass over each pixel's \
+         3x3 neighbourhood with the bilateral weights (`sigma` to `normal_power`; \
+         [denoise.md](denoise.md#edges-kind))"
     ),
     setting!(
         spatial.radius,
@@ -351,7 +403,8 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         spatial.depth_sigma,
         positive(),
-        "relative depth difference `|d - d0| / d0` that scales the depth weight: the Gaussian's standard deviation, or the threshold above which a neighbour is rejected"
+        "relative depth difference `|d - d0| / d0` that scales the depth weight: the Gaussian's \
+         standard deviation, or the threshold above which a neighbour is rejected"
     ),
     setting!(
         spatial.normal_power,
@@ -361,12 +414,16 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         spatial.guided_radius,
         integers(1, MAX_SPATIAL_RADIUS, 1),
-        "guided filter window radius in pixels: AO is fitted against depth in windows of `(2 * guided_radius + 1)^2` pixels, and each pixel averages the fits of the windows that hold it"
+        "guided filter window radius in pixels: AO is fitted against depth in windows of `(2 * \
+         guided_radius + 1)^2` pixels, and each pixel averages the fits of the windows that hold \
+         it"
     ),
     setting!(
         spatial.guided_epsilon,
         positive(),
-        "the guided filter's regularisation: the variance of log depth in a window below which its AO is smoothed flat rather than fitted against depth; `sqrt` of it is a relative depth spread (1e-6: 0.1%)"
+        "the guided filter's regularisation: the variance of log depth in a window below which its \
+         AO is smoothed flat rather than fitted against depth; `sqrt` of it is a relative depth \
+         spread (1e-6: 0.1%)"
     ),
     setting!(
         temporal.enabled,
@@ -386,56 +443,76 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         temporal.depth_threshold,
         positive(),
-        "relative depth difference above which reprojected history shows another surface and is rejected"
+        "relative depth difference above which reprojected history shows another surface and is \
+         rejected"
     ),
     setting!(
         temporal.filter_current,
         bool,
-        "blend the 3x3 same-surface mean of the current frame instead of the pixel's own value (the filtered current value of [ybniaobu's Unity YPipeline](https://github.com/ybniaobu/Unity_YPipeline); blurs contact shadows)"
+        "blend the 3x3 same-surface mean of the current frame instead of the pixel's own value \
+         (the filtered current value of [ybniaobu's Unity \
+         YPipeline](https://github.com/ybniaobu/Unity_YPipeline); blurs contact shadows)"
     ),
     setting!(
         resolution,
         choice,
-        "resolution the AO kernel runs at: every pixel, or one texel per 2x2 or 4x4 pixels upsampled back ([denoise.md](denoise.md#resolution)); full so that the published tables stand"
+        "resolution the AO kernel runs at: every pixel, or one texel per 2x2 or 4x4 pixels \
+         upsampled back ([denoise.md](denoise.md#resolution)); full so that the published tables \
+         stand"
     ),
     setting!(
         downsample,
         choice,
-        "which pixel of each block gives a working texel its depth, normal and motion: a fixed one, the nearest, the farthest, or nearest and farthest alternating in a checkerboard"
+        "which pixel of each block gives a working texel its depth, normal and motion: a fixed \
+         one, the nearest, the farthest, or nearest and farthest alternating in a checkerboard"
     ),
     setting!(
         upsample,
         choice,
-        "how each pixel combines the 2x2 working texels around it: those on its surface equally or bilinearly weighted, or bilinearly where all four are on its surface and else the one of nearest depth"
+        "how each pixel combines the 2x2 working texels around it: those on its surface equally or \
+         bilinearly weighted, or bilinearly where all four are on its surface and else the one of \
+         nearest depth"
     ),
     setting!(
         upsample_threshold,
         positive(),
-        "relative depth difference `|d - d0| / d0` below which a working texel shows the pixel's surface in the upsample"
+        "relative depth difference `|d - d0| / d0` below which a working texel shows the pixel's \
+         surface in the upsample"
     ),
     setting!(
         filter_resolution,
         choice,
-        "below full resolution, where the spatial and temporal filters run: before the upsample, on the working texels, or after it, on every pixel"
+        "below full resolution, where the spatial and temporal filters run: before the upsample, \
+         on the working texels, or after it, on every pixel"
     ),
     setting!(
         depth_mips,
         choice,
-        "whether `gtao`, `vbao`, `hbao`, `hbao-plus`, `ssao` and `ssao-crytek` read far samples from a depth MIP chain, and its precision ([depth-mips.md](depth-mips.md)); `fp16` needs R16Float storage on the device"
+        "whether `gtao`, `vbao`, `hbao`, `hbao-plus`, `ssao` and `ssao-crytek` read far samples \
+         from a depth MIP chain, and its precision ([depth-mips.md](depth-mips.md)); `fp16` needs \
+         R16Float storage on the device"
     ),
     setting!(
         depth_mip_offset,
         float(0.0, true, Limit::Value(16.0), true, Some("log2 pixels")),
-        "with `depth_mips` on, a sample `d` pixels out reads level `floor(log2(d) - depth_mip_offset)`, clamped to the chain's levels"
+        "with `depth_mips` on, a sample `d` pixels out reads level `floor(log2(d) - \
+         depth_mip_offset)`, clamped to the chain's levels"
     ),
     setting!(
         sample_depth,
         choice,
-        "how `gtao`, `vbao`, `hbao` and `hbao-plus` read the depth where a sample lands: the texel it lands in, moved onto the view ray through the sample at the same height above the tangent plane (one load), or 1 / depth interpolated over its 2x2 texels (exact on planes; slightly lower error for 1.06 to 1.32 times the frame's time on an H100: [methods.md](methods.md#sample-depth))"
+        "how `gtao`, `vbao`, `hbao` and `hbao-plus` read the depth where a sample lands: the texel \
+         it lands in, moved onto the view ray through the sample at the same height above the \
+         tangent plane (one load), or 1 / depth interpolated over its 2x2 texels (exact on planes; \
+         slightly lower error for 1.06 to 1.32 times the frame's time on an H100: \
+         [methods.md](methods.md#sample-depth))"
     ),
     setting!(
         slice_march,
         choice,
-        "how `gtao`, `vbao`, `hbao` and `hbao-plus` march their slices with the `nearest` read: each side set up once, with the counts and the step power compiled into the kernel, or every sample placed from scratch; the same AO to rounding, at different cost ([gtao.md](methods/gtao.md#the-lean-march))"
+        "how `gtao`, `vbao`, `hbao` and `hbao-plus` march their slices with the `nearest` read: \
+         each side set up once, with the counts and the step power compiled into the kernel, or \
+         every sample placed from scratch; the same AO to rounding, at different cost \
+         ([gtao.md](methods/gtao.md#the-lean-march))"
     ),
 ];
