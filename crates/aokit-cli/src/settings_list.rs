@@ -212,7 +212,9 @@ pub fn markdown() -> String {
         out += "|\n";
     }
     out += AFTER_TABLE;
-    out += "| preset | samples per pixel | `ssao*`/`sao`/`msvo.sample_count` (`ue4_ssao.sample_count`: half, in pairs) | `hbao.direction_count` x `step_count` | `gtao`/`vbao` slices x steps per side |\n";
+    out += "| preset | samples per pixel | `ssao*`/`sao`/`msvo.sample_count` \
+             (`ue4_ssao.sample_count`: half, in pairs) | `hbao.direction_count` x `step_count` \
+             | `gtao`/`vbao` slices x steps per side |\n";
     out += "|--------|----|----|-------|-------|\n";
     for preset in Preset::ALL {
         let s = AoSettings::preset(Method::Gtao, preset);

@@ -446,7 +446,8 @@ impl SettingSpec {
     ///     err.to_string(),
     ///     "setting `spatial.radius` = 9 is out of range: an integer in 1..=8"
     /// );
-    /// assert!(matches!(radius.set(&mut settings, SettingValue::Bool(true)), Err(SetError::Invalid { .. })));
+    /// let wrong_type = radius.set(&mut settings, SettingValue::Bool(true));
+    /// assert!(matches!(wrong_type, Err(SetError::Invalid { .. })));
     /// assert_eq!(settings.spatial.radius, 5);
     /// # Ok::<(), SetError>(())
     /// ```
