@@ -12,6 +12,7 @@ mod reference;
 mod render;
 mod sequence;
 mod settings_args;
+mod settings_list;
 mod tune;
 
 use std::process::ExitCode;
@@ -44,6 +45,9 @@ enum Command {
     /// Prepare a peer (another AO implementation run beside aokit's by bench and compare
     /// --peer): compile its shaders once for machines without its compiler.
     Peer(peer::PeerArgs),
+    /// List every setting with its type, range, default and the value the flags give it;
+    /// --markdown prints docs/settings.md.
+    Settings(settings_list::SettingsListArgs),
 }
 
 fn main() -> ExitCode {
@@ -56,6 +60,7 @@ fn main() -> ExitCode {
         Command::Bench(args) => bench::run(&args),
         Command::Tune(args) => tune::run(&args),
         Command::Peer(args) => peer::run(&args),
+        Command::Settings(args) => settings_list::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
-use aokit::{AoSettings, Method, Preset};
+use aokit::{AoSettings, Method, Preset, settings};
 use clap::Args;
 use serde::Deserialize;
 
@@ -28,7 +28,8 @@ pub struct OverrideArgs {
     /// TOML file with any subset of the settings; applied after the preset.
     #[arg(long, value_name = "FILE.toml")]
     pub settings: Option<PathBuf>,
-    /// Set any setting by its dotted path, e.g. `--set gtao.slice_count=4`; applied last.
+    /// Set any setting by its dotted path, e.g. `--set gtao.slice_count=4`; applied last
+    /// (`aokit settings` lists the keys with their ranges).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
 }
@@ -99,7 +100,17 @@ fn invalid_setting(error: toml::de::Error) -> anyhow::Error {
         .lines()
         .find_map(|line| line.strip_prefix("in `")?.strip_suffix('`'));
     match path {
-        Some(path) => anyhow!("invalid setting `{path}`: {}", error.message()),
+        Some(path) => {
+            // The declaration's type and range, as `aokit settings` shows them.
+            let takes = settings::find_setting(path)
+                .map(|spec| {
+                    let range = spec.kind.range_text();
+                    let sep = if range.is_empty() { "" } else { " " };
+                    format!(" (takes {}{sep}{range})", spec.kind.type_name())
+                })
+                .unwrap_or_default();
+            anyhow!("invalid setting `{path}`: {}{takes}", error.message())
+        }
         None => anyhow!("invalid settings: {}", error.message()),
     }
 }
@@ -118,42 +129,57 @@ fn to_table(settings: &AoSettings) -> Result<toml::Table> {
     }
 }
 
-/// Every leaf path of a settings table, for error messages.
-fn leaf_paths(table: &toml::Table, prefix: &str, out: &mut Vec<String>) {
-    for (key, value) in table {
-        let path = if prefix.is_empty() {
-            key.clone()
-        } else {
-            format!("{prefix}.{key}")
-        };
-        match value {
-            toml::Value::Table(inner) => leaf_paths(inner, &path, out),
-            _ => out.push(path),
-        }
+/// An unknown key, answered with the declared key nearest to it, or else with all of them.
+fn unknown_setting(path: &str) -> anyhow::Error {
+    match settings::suggest_setting(path) {
+        Some(near) => anyhow!(
+            "unknown setting `{path}`: did you mean `{near}`? (`aokit settings` lists every key)"
+        ),
+        None => anyhow!("unknown setting `{path}` (known: {})", known_settings()),
     }
 }
 
-fn known_settings(table: &toml::Table) -> String {
-    let mut paths = Vec::new();
-    leaf_paths(table, "", &mut paths);
-    paths.join(", ")
+/// Every key `--set` and settings files accept: the declarations' (`aokit::settings::SETTINGS`).
+fn known_settings() -> String {
+    let names: Vec<&str> = settings::SETTINGS.iter().map(|spec| spec.name).collect();
+    names.join(", ")
 }
 
-/// Overlays `patch` on `base`, refusing keys `base` does not have.
+/// Whether `path` names a group of settings (`gtao`) rather than one.
+fn is_group(path: &str) -> bool {
+    let prefix = format!("{path}.");
+    settings::SETTINGS
+        .iter()
+        .any(|spec| spec.name.starts_with(&prefix))
+}
+
+/// The first full path under `path` in `value`: a table's first leaf, so that an unknown group
+/// in a file (`[gtoa]`) is named by a key the suggestion can match (`gtoa.slice_count`).
+fn first_leaf(path: String, value: &toml::Value) -> String {
+    match value {
+        toml::Value::Table(table) => match table.iter().next() {
+            Some((key, inner)) => first_leaf(format!("{path}.{key}"), inner),
+            None => path,
+        },
+        _ => path,
+    }
+}
+
+/// Overlays `patch` on `base`, refusing keys that are not declared settings.
 fn merge(base: &mut toml::Table, patch: toml::Table, prefix: &str) -> Result<()> {
-    let known = known_settings(base);
     for (key, value) in patch {
         let path = if prefix.is_empty() {
             key.clone()
         } else {
             format!("{prefix}.{key}")
         };
+        let declared = settings::find_setting(&path).is_some() || is_group(&path);
         match (base.get_mut(&key), value) {
-            (Some(toml::Value::Table(inner)), toml::Value::Table(patch)) => {
+            (Some(toml::Value::Table(inner)), toml::Value::Table(patch)) if declared => {
                 merge(inner, patch, &path)?
             }
-            (Some(slot), value) => *slot = value,
-            (None, _) => bail!("unknown setting `{path}` (known: {known})"),
+            (Some(slot), value) if declared => *slot = value,
+            (_, value) => return Err(unknown_setting(&first_leaf(path, &value))),
         }
     }
     Ok(())
@@ -171,22 +197,35 @@ fn set_path(table: &mut toml::Table, assignment: &str) -> Result<()> {
         .ok()
         .and_then(|mut t| t.remove("v"))
         .unwrap_or_else(|| toml::Value::String(raw.to_string()));
-    let known = known_settings(table);
-    let unknown = || anyhow!("unknown setting `{path}` (known: {known})");
+    if settings::find_setting(path).is_none() {
+        if is_group(path) {
+            let fields: Vec<&str> = settings::SETTINGS
+                .iter()
+                .map(|spec| spec.name)
+                .filter(|name| name.starts_with(&format!("{path}.")))
+                .collect();
+            bail!(
+                "`{path}` is a group of settings; set one of its fields ({})",
+                fields.join(", ")
+            );
+        }
+        return Err(unknown_setting(path));
+    }
     let mut keys = path.split('.').peekable();
     let mut current = table;
     while let Some(key) = keys.next() {
-        let slot = current.get_mut(key).ok_or_else(unknown)?;
+        let slot = current
+            .get_mut(key)
+            .ok_or_else(|| anyhow!("setting `{path}` is declared but not serialised"))?;
         if keys.peek().is_none() {
-            if slot.is_table() {
-                bail!("`{path}` is a group of settings; set one of its fields (known: {known})");
-            }
             *slot = value;
             return Ok(());
         }
-        current = slot.as_table_mut().ok_or_else(unknown)?;
+        current = slot
+            .as_table_mut()
+            .ok_or_else(|| anyhow!("setting `{path}` is declared but not serialised"))?;
     }
-    Err(unknown())
+    Err(unknown_setting(path))
 }
 
 #[cfg(test)]
@@ -247,6 +286,65 @@ mod tests {
         assert!(err.contains("radius"), "{err}");
         let err = args(&["gtao=1"]).resolve(None).unwrap_err().to_string();
         assert!(err.contains("group"), "{err}");
+    }
+
+    /// Every leaf of the serialised settings, by its dotted path.
+    fn leaf_paths(table: &toml::Table, prefix: &str, out: &mut Vec<String>) {
+        for (key, value) in table {
+            let path = if prefix.is_empty() {
+                key.clone()
+            } else {
+                format!("{prefix}.{key}")
+            };
+            match value {
+                toml::Value::Table(inner) => leaf_paths(inner, &path, out),
+                _ => out.push(path),
+            }
+        }
+    }
+
+    #[test]
+    fn every_serialised_setting_is_declared_and_every_declaration_is_serialised() {
+        let mut paths = Vec::new();
+        leaf_paths(&to_table(&AoSettings::default()).unwrap(), "", &mut paths);
+        let mut declared: Vec<String> = settings::SETTINGS
+            .iter()
+            .map(|spec| spec.name.to_string())
+            .collect();
+        paths.sort();
+        declared.sort();
+        assert_eq!(paths, declared);
+    }
+
+    #[test]
+    fn mistyped_keys_get_a_suggestion_and_groups_list_their_fields() {
+        let err = args(&["spatial.sigam=2"])
+            .resolve(None)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("did you mean `spatial.sigma`?"), "{err}");
+        let err = args(&["frobnicate=2"])
+            .resolve(None)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("known:") && err.contains("gtao.slice_count"),
+            "{err}"
+        );
+        let err = args(&["msvo=2"]).resolve(None).unwrap_err().to_string();
+        assert!(err.contains("msvo.levels"), "{err}");
+        let err = args(&["gtao.slice_count=2.5"])
+            .resolve(None)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("(takes integer 1..=64)"), "{err}");
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("s.toml");
+        std::fs::write(&file, "[gtoa]\nslice_count = 7\n").unwrap();
+        let mut a = args(&[]);
+        a.overrides.settings = Some(file);
+        let err = format!("{:#}", a.resolve(None).unwrap_err());
+        assert!(err.contains("did you mean `gtao.slice_count`?"), "{err}");
     }
 
     #[test]
