@@ -375,6 +375,7 @@ pub(crate) mod tests {
     fn settings() -> Vec<SpatialSettings> {
         let base = SpatialSettings {
             enabled: true,
+            kind: SpatialKind::Bilateral,
             ..SpatialSettings::default()
         };
         vec![
