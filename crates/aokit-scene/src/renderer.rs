@@ -95,6 +95,9 @@ pub enum RenderError {
     /// The camera is degenerate.
     #[error("{0}")]
     Camera(String),
+    /// Normals handed in on the CPU are unusable where there is a surface.
+    #[error("normals: {0}")]
+    Normals(String),
     /// The AO pipeline refused its inputs or settings.
     #[error(transparent)]
     Ao(#[from] AoError),
