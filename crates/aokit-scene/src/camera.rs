@@ -127,10 +127,45 @@ impl Camera {
                 self.name
             ));
         }
+        // The length squares each coordinate: past ~1e19 it overflows to infinity, and the
+        // normalised direction becomes zero, which the parallel check below would misreport.
+        if !forward.length().is_finite() {
+            return Err(format!(
+                "camera `{}`: eye {} and target {} are too far apart (their distance overflows \
+                 32-bit floats)",
+                self.name, self.eye, self.target
+            ));
+        }
         if forward.length() < 1e-6 {
             return Err(format!(
                 "camera `{}`: eye and target are the same point",
                 self.name
+            ));
+        }
+        if !(self.up.length() > 1e-6 && self.up.length().is_finite()) {
+            return Err(format!(
+                "camera `{}`: up {} has no direction (zero length)",
+                self.name, self.up
+            ));
+        }
+        // Explicit planes are checked here, before any work: the projection would refuse them
+        // only once it is built (after a reference was traced, or by `aokit ao` reading the
+        // camera.json written with them).
+        if let Some(near) = self.near
+            && !(near.is_finite() && near > 0.0)
+        {
+            return Err(format!(
+                "camera `{}`: near plane {near} must be positive and finite",
+                self.name
+            ));
+        }
+        if let Some(far) = self.far
+            && !(far.is_finite() && far > self.near.unwrap_or(0.0))
+        {
+            return Err(format!(
+                "camera `{}`: far plane {far} must be finite and greater than the near plane{}",
+                self.name,
+                self.near.map(|n| format!(" ({n})")).unwrap_or_default()
             ));
         }
         if forward
