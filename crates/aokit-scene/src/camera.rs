@@ -290,10 +290,47 @@ pub struct CameraFile {
     pub reverse_z: bool,
     /// Where the view axis met the image, in NDC ([`Projection::ndc_offset`]): the frame's
     /// jitter or an off-centre frustum. Written only when not zero; absent reads as zero.
-    #[serde(default, skip_serializing_if = "is_zero")]
+    #[serde(
+        default,
+        skip_serializing_if = "is_zero",
+        deserialize_with = "ndc_offset_entries"
+    )]
     pub ndc_offset: [f32; 2],
     /// World-to-view matrix, row-major (`view_from_world[row][column]`).
+    #[serde(deserialize_with = "matrix_entries")]
     pub view_from_world: [[f32; 4]; 4],
+}
+
+/// `ndc_offset` as a list checked for length: serde_json reports a fixed-size array with an
+/// entry too many as "trailing characters", which names neither the field nor the count.
+fn ndc_offset_entries<'de, D: serde::Deserializer<'de>>(d: D) -> Result<[f32; 2], D::Error> {
+    let entries = Vec::<f32>::deserialize(d)?;
+    <[f32; 2]>::try_from(entries.as_slice()).map_err(|_| {
+        serde::de::Error::custom(format!(
+            "ndc_offset must have 2 entries (x, y), got {}",
+            entries.len()
+        ))
+    })
+}
+
+/// `view_from_world` as rows checked for length, for the same reason.
+fn matrix_entries<'de, D: serde::Deserializer<'de>>(d: D) -> Result<[[f32; 4]; 4], D::Error> {
+    let rows = Vec::<Vec<f32>>::deserialize(d)?;
+    let bad = || {
+        serde::de::Error::custom(format!(
+            "view_from_world must be 4 rows of 4 numbers, got {} rows of {:?}",
+            rows.len(),
+            rows.iter().map(Vec::len).collect::<Vec<_>>()
+        ))
+    };
+    let mut matrix = [[0.0; 4]; 4];
+    if rows.len() != 4 {
+        return Err(bad());
+    }
+    for (row, entries) in matrix.iter_mut().zip(&rows) {
+        *row = <[f32; 4]>::try_from(entries.as_slice()).map_err(|_| bad())?;
+    }
+    Ok(matrix)
 }
 
 fn is_zero(offset: &[f32; 2]) -> bool {
