@@ -281,3 +281,21 @@ fn gltf_accessor_past_its_buffer_view_is_refused() {
         "{err}"
     );
 }
+
+#[test]
+fn sidecar_with_a_bad_radius_is_refused_with_its_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("tri.obj");
+    std::fs::write(&path, "v 0 0 0\nv 1 0 0\nv 0 0 -1\nf 1 2 3\n").unwrap();
+    // Before, the radius reached the settings, whose message cannot name the file.
+    std::fs::write(
+        dir.path().join("tri-cameras.json"),
+        r#"{"suggested_ao_radius": -0.5}"#,
+    )
+    .unwrap();
+    let err = open(&path).unwrap_err().to_string();
+    assert!(
+        err.contains("tri-cameras.json") && err.contains("suggested_ao_radius -0.5"),
+        "{err}"
+    );
+}
