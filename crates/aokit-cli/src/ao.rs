@@ -63,7 +63,7 @@ pub fn run(args: &AoArgs) -> Result<()> {
     create_dir(&args.out)?;
     write_exr(&args.out.join("ao.exr"), loaded.size, &[("Y", ao.clone())])?;
     write_grey_png(&args.out.join("ao.png"), loaded.size, &ao)?;
-    println!(
+    outln!(
         "AO of {} ({}x{}, normals {}) with {} (radius {}): wrote ao.exr, ao.png to {}",
         args.depth.display(),
         loaded.size[0],
@@ -85,6 +85,6 @@ pub fn run(args: &AoArgs) -> Result<()> {
         .iter()
         .map(|&d| if d > 0.0 && d.is_finite() { d } else { 0.0 })
         .collect();
-    println!("{}", ao_summary(&ao, &depth_for_summary));
+    outln!("{}", ao_summary(&ao, &depth_for_summary));
     Ok(())
 }

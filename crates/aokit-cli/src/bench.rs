@@ -633,7 +633,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     if args.compare.is_empty() && runs.len() == 1 {
         let run = &runs[0];
         if args.json {
-            println!(
+            outln!(
                 "{}",
                 serde_json::to_string_pretty(&run.json(&gpu, &scene, camera_name)?)?
             );
@@ -650,7 +650,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 object["ratio_of"] = json!(basis.field());
                 array.push(object);
             }
-            println!("{}", serde_json::to_string_pretty(&Value::Array(array))?);
+            outln!("{}", serde_json::to_string_pretty(&Value::Array(array))?);
         } else {
             print_compare(&gpu, &scene, camera_name, &runs, basis);
         }
@@ -735,15 +735,17 @@ fn stats_row(name: &str, width: usize, s: &Stats) -> String {
 
 fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
     let [w, h] = run.args.size;
-    println!(
+    outln!(
         "adapter: {} | size: {w}x{h} | method: {} | preset: {}",
         gpu.describe(),
         run.engine.method_name(),
         run.preset_label()
     );
-    println!(
+    outln!(
         "scene `{}`, camera `{camera}`: {} timed frames after {} warm-up",
-        scene.name, run.args.frames, run.args.warmup
+        scene.name,
+        run.args.frames,
+        run.args.warmup
     );
     match (run.pass_stats(), run.total_gpu()) {
         (Some(passes), Some(total)) => {
@@ -753,20 +755,23 @@ fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
                 .max()
                 .unwrap_or(0)
                 .max(5);
-            println!(
+            outln!(
                 "{:<width$}  {:>10}  {:>10}  {:>10}",
-                "GPU ms", "median", "p10", "p90"
+                "GPU ms",
+                "median",
+                "p10",
+                "p90"
             );
             for (name, s) in &passes {
-                println!("{}", stats_row(name, width, s));
+                outln!("{}", stats_row(name, width, s));
             }
-            println!("{}", stats_row("total", width, &total));
+            outln!("{}", stats_row("total", width, &total));
         }
-        _ => println!("GPU time: not measured (the adapter has no TIMESTAMP_QUERY)"),
+        _ => outln!("GPU time: not measured (the adapter has no TIMESTAMP_QUERY)"),
     }
     let line = |what: &str, s: Option<Stats>| {
         if let Some(s) = s {
-            println!(
+            outln!(
                 "{what}: median {} ms, p10 {} ms, p90 {} ms",
                 ms(s.median),
                 ms(s.p10),
@@ -784,8 +789,8 @@ fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
 
 fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], basis: Basis) {
     let [w, h] = runs[0].args.size;
-    println!("adapter: {} | size: {w}x{h}", gpu.describe());
-    println!(
+    outln!("adapter: {} | size: {w}x{h}", gpu.describe());
+    outln!(
         "scene `{}`, camera `{camera}`: {} configurations, {} timed frames each after {} \
          warm-up, interleaved; ratio: of the median {} time",
         scene.name,
@@ -797,9 +802,15 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
             Basis::Wall => "wall",
         }
     );
-    println!(
+    outln!(
         "{:<3}  {:>10}  {:>10}  {:>10}  {:>10}  {:>7}  {:>10}  configuration (method, preset)",
-        "#", "GPU ms", "p10", "p90", "wall ms", "ratio", "encode ms"
+        "#",
+        "GPU ms",
+        "p10",
+        "p90",
+        "wall ms",
+        "ratio",
+        "encode ms"
     );
     let median = |values: &[f64]| Stats::of(values).map_or(f64::NAN, |s| s.median);
     for (i, run) in runs.iter().enumerate() {
@@ -808,7 +819,7 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
             .map_or(["-".to_string(), "-".into(), "-".into()], |s| {
                 [ms(s.median), ms(s.p10), ms(s.p90)]
             });
-        println!(
+        outln!(
             "{:<3}  {:>10}  {:>10}  {:>10}  {:>10}  {:>7.3}  {:>10}  {} ({}, {})",
             i + 1,
             gpu[0],
@@ -843,11 +854,11 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
         }
     }
     let width = names.iter().map(|n| n.len()).max().unwrap_or(0).max(6);
-    println!("per-pass GPU median ms:");
+    outln!("per-pass GPU median ms:");
     let header: Vec<String> = (1..=runs.len())
         .map(|i| format!("{:>10}", format!("#{i}")))
         .collect();
-    println!("{:<width$}  {}", "pass", header.join("  "));
+    outln!("{:<width$}  {}", "pass", header.join("  "));
     for name in names {
         let cells: Vec<String> = stats
             .iter()
@@ -865,7 +876,7 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
                 }
             })
             .collect();
-        println!("{name:<width$}  {}", cells.join("  "));
+        outln!("{name:<width$}  {}", cells.join("  "));
     }
 }
 

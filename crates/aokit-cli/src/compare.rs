@@ -654,8 +654,8 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             + "\n",
     )?;
     write("report.html", report.html())?;
-    print!("{}", report.markdown());
-    println!(
+    out!("{}", report.markdown());
+    outln!(
         "wrote metrics.csv, metrics.md, metrics-by-method.md, metrics.json, report.html and images/ to {}",
         out.display()
     );

@@ -150,7 +150,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     let back = write_back_depth(out, image.size, &back_depth)?;
     write_json(&out.join("reference.json"), &ReferenceInfo::new(&options))?;
     let rays = f64::from(image.size[0]) * f64::from(image.size[1]) * f64::from(options.spp);
-    println!(
+    outln!(
         "traced `{}` from camera `{}` at {}x{}, {} rays per pixel, radius {}, falloff {} in {:.1} s \
          ({:.2} M rays/s): wrote reference.exr, reference.png, {}, {back}, reference.json to {}",
         scene.name,
@@ -165,7 +165,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         gbuffer.join(", "),
         out.display()
     );
-    println!(
+    outln!(
         "{}",
         crate::render::ao_summary(&image.ao, &image.linear_depth)
     );

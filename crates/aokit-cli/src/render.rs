@@ -270,7 +270,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             written.push(write_back_depth(out, frame.size, back_depth)?.into());
         }
     }
-    println!(
+    outln!(
         "rendered `{}` from camera `{}` at {}x{} with {} (radius {}): wrote {} to {}",
         scene.name,
         camera.name,
@@ -281,7 +281,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         written.join(", "),
         out.display()
     );
-    println!("{}", ao_summary(&frame.ao, &frame.linear_depth));
+    outln!("{}", ao_summary(&frame.ao, &frame.linear_depth));
     Ok(())
 }
 

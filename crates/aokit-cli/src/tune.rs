@@ -770,8 +770,8 @@ pub fn run(args: &TuneArgs) -> Result<()> {
         ));
     }
     write("evaluations.csv", csv)?;
-    print!("{md}");
-    println!(
+    out!("{md}");
+    outln!(
         "wrote tune.md, tune.json and evaluations.csv ({} evaluations) to {}",
         evaluator.log.len(),
         out.display()
