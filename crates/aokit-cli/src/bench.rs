@@ -28,7 +28,7 @@ pub struct BenchArgs {
     #[command(flatten)]
     pub camera: CameraArgs,
     /// Image size.
-    #[arg(long, value_name = "WxH", default_value = "1920x1080", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "1920x1080", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     #[command(flatten)]
     pub settings: SettingsArgs,
@@ -38,10 +38,10 @@ pub struct BenchArgs {
     #[arg(long, value_name = "NAME=DIR", conflicts_with = "method")]
     pub peer: Option<PeerSpec>,
     /// Timed frames; the statistics are over these.
-    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES))]
+    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES), allow_negative_numbers = true)]
     pub frames: u32,
     /// Untimed frames before the timed ones (shader compilation, caches, temporal history).
-    #[arg(long, value_name = "N", default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=MAX_FRAMES))]
+    #[arg(long, value_name = "N", default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=MAX_FRAMES), allow_negative_numbers = true)]
     pub warmup: u32,
     /// Print one JSON object (with --compare, an array of them) on stdout instead of tables.
     #[arg(long)]

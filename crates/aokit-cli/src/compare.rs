@@ -43,7 +43,7 @@ pub struct CompareArgs {
     #[arg(long, value_name = "DIR")]
     pub inputs: Option<PathBuf>,
     /// Image size (scene views).
-    #[arg(long, value_name = "WxH", default_value = "480x270", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "480x270", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     /// Methods to score, comma-separated, or `all`.
     #[arg(long, value_delimiter = ',', default_value = "all")]
@@ -52,14 +52,14 @@ pub struct CompareArgs {
     #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
     pub presets: Vec<Preset>,
     /// AO radius (default: the scene's suggested radius, else 1); the reference uses it too.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f32>,
     /// Laid over every method's preset before scoring (keys of other methods are ignored by
     /// each method); `radius` must come from --radius, which the reference shares.
     #[command(flatten)]
     pub overrides: OverrideArgs,
     /// Reference rays per pixel.
-    #[arg(long, default_value_t = 512)]
+    #[arg(long, default_value_t = 512, value_parser = crate::reference::parse_spp, allow_negative_numbers = true)]
     pub spp: u32,
     /// Where references are cached (default: $AOKIT_CACHE, $XDG_CACHE_HOME/aokit or ~/.cache/aokit).
     #[arg(long, value_name = "DIR")]
@@ -71,7 +71,7 @@ pub struct CompareArgs {
     /// temporal filter, when on, accumulates over them): adds the mean RMSE over the frames,
     /// the flicker (mean change between frames; all noise with --path still) and the error in
     /// what each frame newly reveals. Images and the other columns are of the last frame.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000), allow_negative_numbers = true)]
     pub frames: u32,
     /// How the camera moves over --frames: still, orbit, dolly or strafe (as `aokit render`).
     #[arg(long, value_name = "PATH", default_value = "still")]

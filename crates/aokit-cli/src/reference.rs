@@ -22,16 +22,16 @@ pub struct ReferenceArgs {
     #[command(flatten)]
     pub camera: CameraArgs,
     /// Image size.
-    #[arg(long, value_name = "WxH", default_value = "640x360", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "640x360", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     /// AO radius in world units (default: the scene's suggested radius, else 1).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f32>,
     /// Rays per pixel.
-    #[arg(long, default_value_t = 256)]
+    #[arg(long, default_value_t = 256, value_parser = crate::reference::parse_spp, allow_negative_numbers = true)]
     pub spp: u32,
     /// Seed of the per-pixel sample scrambling; the same seed gives the same image.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_negative_numbers = true)]
     pub seed: u64,
     /// How a hit at distance t counts: none (1), linear (1 - t/R), quadratic (1 - (t/R)^2).
     #[arg(long, default_value = "none")]
@@ -39,6 +39,19 @@ pub struct ReferenceArgs {
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-out")]
     pub out: PathBuf,
+}
+
+/// `--spp`: rays per pixel, at least 1. Negative values reach here (the flag allows a leading
+/// minus so that clap does not take `-1` for a flag) and are named as such.
+pub fn parse_spp(s: &str) -> Result<u32, String> {
+    let n: i64 = s
+        .trim()
+        .parse()
+        .map_err(|e| format!("`{s}` is not a whole number of rays per pixel: {e}"))?;
+    if n < 1 {
+        return Err(format!("rays per pixel must be at least 1, got {n}"));
+    }
+    u32::try_from(n).map_err(|_| format!("rays per pixel must be at most {}, got {n}", u32::MAX))
 }
 
 /// What a reference was traced with, saved beside it as `reference.json` so that `aokit

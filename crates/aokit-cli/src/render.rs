@@ -23,7 +23,7 @@ pub struct RenderArgs {
     #[command(flatten)]
     pub camera: CameraArgs,
     /// Image size.
-    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     #[command(flatten)]
     pub settings: SettingsArgs,
@@ -35,7 +35,7 @@ pub struct RenderArgs {
     #[arg(long)]
     pub gbuffer: bool,
     /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
-    #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3)]
+    #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3, allow_hyphen_values = true)]
     pub sun: Option<glam::Vec3>,
     /// Multi-bounce AO in lit.png's ambient diffuse light: gtao (Jimenez et al.'s fit, the
     /// default, also what a bare --multi-bounce means), closed-form (k / (1 - albedo (1 - k)))
@@ -114,8 +114,13 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
         .split_once(['x', 'X'])
         .ok_or_else(|| format!("`{s}` is not WIDTHxHEIGHT"))?;
     let parse = |v: &str| {
-        v.trim()
-            .parse::<u32>()
+        let v = v.trim();
+        // `-64x48` reaches here (the flag allows a leading minus so that clap does not take
+        // it for a flag): say what is wrong with it rather than "invalid digit".
+        if v.starts_with('-') {
+            return Err(format!("`{s}`: width and height must be at least 1"));
+        }
+        v.parse::<u32>()
             .map_err(|e| format!("`{s}` is not WIDTHxHEIGHT: {e}"))
     };
     let size = [parse(w)?, parse(h)?];

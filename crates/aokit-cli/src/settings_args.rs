@@ -16,7 +16,7 @@ pub struct SettingsArgs {
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(Preset::ALL.map(Preset::name)))]
     pub preset: Option<String>,
     /// AO radius in world units (default: the scene's suggested radius, else 1).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f32>,
     #[command(flatten)]
     pub overrides: OverrideArgs,
