@@ -20,7 +20,7 @@ use serde_json::json;
 
 use crate::cache;
 use crate::camera_args::CameraArgs;
-use crate::export::create_dir;
+use crate::export::{check_out_dir, create_dir};
 use crate::passes::{self, DepthKind, PassFiles};
 use crate::peer::{self, PeerSettings, PeerSpec, XeGtao};
 use crate::reference::ReferenceInfo;
@@ -558,6 +558,7 @@ pub fn open_view(view: &str) -> Result<(Scene, aokit_scene::Camera)> {
 }
 
 pub fn run(args: &CompareArgs) -> Result<()> {
+    check_out_dir(&args.out)?;
     let methods = methods(&args.methods)?;
     if methods.is_empty() || args.presets.is_empty() {
         bail!("--methods and --presets need at least one entry each");

@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
 
 use crate::camera_args::CameraArgs;
-use crate::export::{create_dir, write_back_depth, write_gbuffer, write_json};
+use crate::export::{check_out_dir, create_dir, write_back_depth, write_gbuffer, write_json};
 use crate::render::parse_size;
 
 #[derive(Args, Debug)]
@@ -126,6 +126,7 @@ fn trace_on(
 }
 
 pub fn run(args: &ReferenceArgs) -> Result<()> {
+    check_out_dir(&args.out)?;
     let scene = Scene::open(&args.scene)?;
     let camera = args.camera.resolve(&scene)?;
     let options = AoOptions {

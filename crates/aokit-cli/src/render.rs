@@ -12,7 +12,7 @@ use clap::Args;
 use aokit_eval::{grey_to_rgba, write_exr, write_gif, write_grey_png, write_rgba_png};
 
 use crate::camera_args::CameraArgs;
-use crate::export::{create_dir, write_back_depth, write_gbuffer};
+use crate::export::{check_out_dir, create_dir, write_back_depth, write_gbuffer};
 use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug)]
@@ -153,6 +153,7 @@ pub fn open_gpu_with(features: wgpu::Features) -> Result<GpuContext> {
 }
 
 pub fn run(args: &RenderArgs) -> Result<()> {
+    check_out_dir(&args.out)?;
     let scene = Scene::open(&args.scene)?;
     for note in &scene.notes {
         eprintln!("note: {}: {note}", scene.name);

@@ -663,6 +663,7 @@ fn markdown(
 }
 
 pub fn run(args: &TuneArgs) -> Result<()> {
+    crate::export::check_out_dir(&args.out)?;
     let mut methods = methods(&args.methods)?;
     // hbao-plus takes hbao's split and vbao is held to GTAO's error, each as this run tuned
     // them: those two go after the others, whatever order --methods names them in.
