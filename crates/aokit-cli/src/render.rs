@@ -106,7 +106,7 @@ fn parse_roughness(s: &str) -> Result<f32, String> {
 }
 
 /// Largest side `--size` accepts: twice the 8192 every wgpu device supports, far past any
-/// screen, and still a few hundred MB of float images.
+/// screen; the total is held to the library's budget (`aokit::inputs::MAX_PIXELS`).
 const MAX_SIDE: u32 = 16384;
 
 pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
@@ -132,6 +132,8 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
             "`{s}`: width and height must be at most {MAX_SIDE}"
         ));
     }
+    // The library's total budget, checked here before anything is allocated.
+    aokit::inputs::check_size(size).map_err(|e| format!("`{s}`: {e}"))?;
     Ok(size)
 }
 
