@@ -95,11 +95,34 @@ pub fn load(
         }
         Ok(match depth_kind {
             DepthKind::Linear => depth.data,
-            DepthKind::Ndc => depth
-                .data
-                .iter()
-                .map(|&d| projection.surface_depth(d))
-                .collect(),
+            DepthKind::Ndc => {
+                // Depth-buffer values lie in [0, 1]; others (linear depth given by mistake)
+                // would map to plausible but wrong distances. Non-finite values stay background.
+                let outside = |d: &f32| d.is_finite() && !(0.0..=1.0).contains(d);
+                let bad = depth.data.iter().filter(|d| outside(d)).count();
+                if bad > 0 {
+                    let (i, example) = depth
+                        .data
+                        .iter()
+                        .enumerate()
+                        .find(|(_, d)| outside(d))
+                        .expect("counted above");
+                    bail!(
+                        "{}: {bad} of {} pixels hold depth outside [0, 1] (e.g. {example} at \
+                         x {}, y {}), which --depth-kind ndc needs; is it linear depth \
+                         (--depth-kind linear)?",
+                        path.display(),
+                        depth.data.len(),
+                        i % size[0] as usize,
+                        i / size[0] as usize
+                    );
+                }
+                depth
+                    .data
+                    .iter()
+                    .map(|&d| projection.surface_depth(d))
+                    .collect()
+            }
         })
     };
     let linear_depth = read_linear(depth_path)?;
