@@ -79,6 +79,21 @@ pub fn load(
             camera_path.display()
         );
     }
+    // World-space normals are turned by the rotation part: a zero or degenerate one (a
+    // camera.json written by hand) would turn every normal into zero, which decodes to a normal
+    // facing the camera and darkens the AO without a word.
+    if normal_space == NormalSpace::World && normals_path.is_some() {
+        let rotation = glam::Mat3::from_mat4(view_from_world);
+        let determinant = rotation.determinant();
+        if !(determinant.is_finite() && determinant.abs() > 1e-6) {
+            bail!(
+                "{}: view_from_world's 3x3 part has determinant {determinant}, not a rotation; \
+                 world-space normals (--normal-space world) cannot be turned into view space \
+                 with it",
+                camera_path.display()
+            );
+        }
+    }
     let size = [camera.width, camera.height];
     let read_linear = |path: &Path| -> Result<Vec<f32>> {
         let depth = read_depth(path)?;
