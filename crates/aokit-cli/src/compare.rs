@@ -432,7 +432,18 @@ fn score_inputs(
         DepthKind::Linear,
         NormalSpace::View,
     )?;
-    let reference_ao = read_scalar_exr(&dir.join("reference.exr"))?;
+    let reference_path = dir.join("reference.exr");
+    let reference_ao = read_scalar_exr(&reference_path)?;
+    // One NaN makes every metric NaN, which the report prints as "n/a": refuse it here.
+    let non_finite = reference_ao.data.iter().filter(|v| !v.is_finite()).count();
+    if non_finite > 0 {
+        bail!(
+            "{}: {non_finite} of {} pixels are not finite (NaN or infinity); the reference AO \
+             must be a number in [0, 1] at every pixel",
+            reference_path.display(),
+            reference_ao.data.len()
+        );
+    }
     if [reference_ao.width, reference_ao.height] != loaded.size {
         bail!(
             "{}: reference.exr and depth.exr differ in size",
