@@ -111,6 +111,12 @@ fn trace_on(
 ) -> Result<ReferenceImage> {
     options.validate()?;
     camera.validate().map_err(|e| anyhow!(e))?;
+    // The projection written to camera.json afterwards, checked before the trace (planes
+    // fitted to the scene included), so that nothing is written that `aokit ao` refuses.
+    camera
+        .projection(size[0] as f32 / size[1] as f32, &scene.bounds)
+        .validate()
+        .map_err(|e| anyhow!("camera `{}`: {e}", camera.name))?;
     let pixel_camera = aokit_scene::reference::pixel_camera(scene, camera, size);
     let bar = ProgressBar::new(u64::from(size[1])).with_style(
         ProgressStyle::with_template("tracing {msg} [{bar:30}] {pos}/{len} rows, {eta} left")
