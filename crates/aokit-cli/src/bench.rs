@@ -463,18 +463,36 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     }
     let camera = first.camera.resolve(&scene)?;
     let size = first.size;
-    for (i, (label, config)) in configurations.iter().enumerate().skip(1) {
-        let same_view = config.scene == first.scene
-            && config.size == first.size
-            && config.camera.resolve(&scene)? == camera;
-        if !same_view {
-            bail!(
-                "--compare configuration {} (`{label}`) has another scene, camera or size \
-                 than the first: the configurations run on one G-buffer; give --scene, \
-                 camera options and --size before --compare",
-                i + 1
-            );
+    let same_view = |a: &BenchArgs, b: &BenchArgs| -> Result<bool> {
+        Ok(a.scene == b.scene
+            && a.size == b.size
+            && a.camera.resolve(&scene)? == b.camera.resolve(&scene)?)
+    };
+    let mut mixed = false;
+    for (_, config) in configurations.iter().skip(1) {
+        mixed |= !same_view(config, first)?;
+    }
+    if mixed {
+        // Blame a configuration that sets a view of its own: the shared flags (`args`) hold
+        // the view of those that set none, so comparing with the first would blame the
+        // second when the first set `--size`.
+        let mut blamed = 1;
+        for (i, (_, config)) in configurations.iter().enumerate() {
+            if !same_view(config, args)? {
+                blamed = i;
+                break;
+            }
         }
+        let (label, config) = &configurations[blamed];
+        bail!(
+            "--compare configuration {} (`{label}`) sets another scene, camera or size \
+             ({} at {}x{}) than the others: the configurations run on one G-buffer; give \
+             --scene, camera options and --size before --compare",
+            blamed + 1,
+            config.scene,
+            config.size[0],
+            config.size[1]
+        );
     }
     // Errors of a --compare configuration say which.
     let in_configuration = |i: usize, label: &str, error: anyhow::Error| {
