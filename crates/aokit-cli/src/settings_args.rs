@@ -77,6 +77,12 @@ impl OverrideArgs {
                 .with_context(|| format!("settings file {} is not valid TOML", path.display()))?;
             merge(&mut table, patch, "")
                 .with_context(|| format!("in settings file {}", path.display()))?;
+            // A bad value shows only when the table deserialises and validates: check the file's
+            // values here, where the message can name the file.
+            AoSettings::deserialize(toml::Value::Table(table.clone()))
+                .map_err(invalid_setting)
+                .and_then(|settings| Ok(settings.validate()?))
+                .with_context(|| format!("in settings file {}", path.display()))?;
         }
         if let Some(radius) = radius {
             table.insert("radius".into(), toml::Value::Float(radius.into()));
