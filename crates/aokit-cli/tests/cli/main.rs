@@ -10,4 +10,5 @@ mod cli;
 mod composite;
 mod ground_truth;
 mod peer;
+mod robustness;
 mod tune;
