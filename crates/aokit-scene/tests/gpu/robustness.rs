@@ -132,3 +132,24 @@ fn sizes_past_the_pixel_budget_are_refused_before_allocation() {
         .to_string();
     assert!(err.contains("268435456 pixels"), "{err}");
 }
+
+/// The CPU reference refuses the same budget before it allocates.
+#[test]
+fn the_reference_tracer_refuses_sizes_past_the_pixel_budget() {
+    let scene = Builtin::Room.build();
+    let tracer = aokit_scene::reference::tracer(&scene).unwrap();
+    let camera = aokit_scene::reference::pixel_camera(&scene, &scene.cameras[0], [16384, 16384]);
+    let options = aokit_reference::AoOptions {
+        radius: 1.0,
+        spp: 1,
+        seed: 0,
+        falloff: aokit_reference::Falloff::None,
+    };
+    let err = tracer
+        .render(&camera, &options, &|_| {})
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("268435456 pixels"), "{err}");
+    let err = tracer.back_depth(&camera).unwrap_err().to_string();
+    assert!(err.contains("268435456 pixels"), "{err}");
+}
