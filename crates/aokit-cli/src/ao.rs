@@ -8,7 +8,7 @@ use aokit_eval::{write_exr, write_grey_png};
 use aokit_scene::external;
 use clap::Args;
 
-use crate::export::create_dir;
+use crate::export::{check_out_dir, create_dir};
 use crate::passes::{self, DepthKind, PassFiles};
 use crate::render::{ao_summary, open_gpu};
 use crate::settings_args::SettingsArgs;
@@ -32,9 +32,10 @@ pub struct AoArgs {
     #[arg(long, value_enum, default_value = "linear")]
     pub depth_kind: DepthKind,
     /// Whether the normals are in view or world space (camera.json's `view_from_world` turns
-    /// world-space ones).
-    #[arg(long, default_value = "view", value_parser = parse_normal_space)]
-    pub normal_space: NormalSpace,
+    /// world-space ones); the same as `--set normals.space=SPACE`, which wins when both are
+    /// given (default: view).
+    #[arg(long, value_parser = parse_normal_space)]
+    pub normal_space: Option<NormalSpace>,
     #[command(flatten)]
     pub settings: SettingsArgs,
     /// Output directory.
@@ -47,6 +48,17 @@ fn parse_normal_space(s: &str) -> Result<NormalSpace, String> {
 }
 
 pub fn run(args: &AoArgs) -> Result<()> {
+    check_out_dir(&args.out)?;
+    // `--normal-space` is a setting like `--radius`: applied before `--set`, so that a
+    // `--set normals.space=...` (documented as applied last) wins over it, and a settings file's
+    // value stands when neither is given. A default on the flag would override both.
+    let mut settings_args = args.settings.clone();
+    if let Some(space) = args.normal_space {
+        let set = &mut settings_args.overrides.set;
+        set.insert(0, format!("normals.space={}", space.name()));
+    }
+    let mut settings = settings_args.resolve(None)?;
+    let normal_space = settings.normals.space;
     let loaded = passes::load(
         &PassFiles {
             depth: &args.depth,
@@ -55,15 +67,16 @@ pub fn run(args: &AoArgs) -> Result<()> {
             camera: &args.camera,
         },
         args.depth_kind,
-        args.normal_space,
+        normal_space,
     )?;
-    let settings = args.settings.resolve(None)?;
+    // The normals were turned into view space as they were read.
+    settings.normals.space = NormalSpace::View;
     let gpu = open_gpu()?;
     let ao = external::ambient_occlusion(&gpu, &settings, &loaded.passes(), 0)?;
     create_dir(&args.out)?;
     write_exr(&args.out.join("ao.exr"), loaded.size, &[("Y", ao.clone())])?;
     write_grey_png(&args.out.join("ao.png"), loaded.size, &ao)?;
-    println!(
+    outln!(
         "AO of {} ({}x{}, normals {}) with {} (radius {}): wrote ao.exr, ao.png to {}",
         args.depth.display(),
         loaded.size[0],
@@ -85,6 +98,6 @@ pub fn run(args: &AoArgs) -> Result<()> {
         .iter()
         .map(|&d| if d > 0.0 && d.is_finite() { d } else { 0.0 })
         .collect();
-    println!("{}", ao_summary(&ao, &depth_for_summary));
+    outln!("{}", ao_summary(&ao, &depth_for_summary));
     Ok(())
 }

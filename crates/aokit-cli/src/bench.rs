@@ -28,7 +28,7 @@ pub struct BenchArgs {
     #[command(flatten)]
     pub camera: CameraArgs,
     /// Image size.
-    #[arg(long, value_name = "WxH", default_value = "1920x1080", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "1920x1080", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     #[command(flatten)]
     pub settings: SettingsArgs,
@@ -38,10 +38,10 @@ pub struct BenchArgs {
     #[arg(long, value_name = "NAME=DIR", conflicts_with = "method")]
     pub peer: Option<PeerSpec>,
     /// Timed frames; the statistics are over these.
-    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES))]
+    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES), allow_negative_numbers = true)]
     pub frames: u32,
     /// Untimed frames before the timed ones (shader compilation, caches, temporal history).
-    #[arg(long, value_name = "N", default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=MAX_FRAMES))]
+    #[arg(long, value_name = "N", default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=MAX_FRAMES), allow_negative_numbers = true)]
     pub warmup: u32,
     /// Print one JSON object (with --compare, an array of them) on stdout instead of tables.
     #[arg(long)]
@@ -463,18 +463,36 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     }
     let camera = first.camera.resolve(&scene)?;
     let size = first.size;
-    for (i, (label, config)) in configurations.iter().enumerate().skip(1) {
-        let same_view = config.scene == first.scene
-            && config.size == first.size
-            && config.camera.resolve(&scene)? == camera;
-        if !same_view {
-            bail!(
-                "--compare configuration {} (`{label}`) has another scene, camera or size \
-                 than the first: the configurations run on one G-buffer; give --scene, \
-                 camera options and --size before --compare",
-                i + 1
-            );
+    let same_view = |a: &BenchArgs, b: &BenchArgs| -> Result<bool> {
+        Ok(a.scene == b.scene
+            && a.size == b.size
+            && a.camera.resolve(&scene)? == b.camera.resolve(&scene)?)
+    };
+    let mut mixed = false;
+    for (_, config) in configurations.iter().skip(1) {
+        mixed |= !same_view(config, first)?;
+    }
+    if mixed {
+        // Blame a configuration that sets a view of its own: the shared flags (`args`) hold
+        // the view of those that set none, so comparing with the first would blame the
+        // second when the first set `--size`.
+        let mut blamed = 1;
+        for (i, (_, config)) in configurations.iter().enumerate() {
+            if !same_view(config, args)? {
+                blamed = i;
+                break;
+            }
         }
+        let (label, config) = &configurations[blamed];
+        bail!(
+            "--compare configuration {} (`{label}`) sets another scene, camera or size \
+             ({} at {}x{}) than the others: the configurations run on one G-buffer; give \
+             --scene, camera options and --size before --compare",
+            blamed + 1,
+            config.scene,
+            config.size[0],
+            config.size[1]
+        );
     }
     // Errors of a --compare configuration say which.
     let in_configuration = |i: usize, label: &str, error: anyhow::Error| {
@@ -633,7 +651,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     if args.compare.is_empty() && runs.len() == 1 {
         let run = &runs[0];
         if args.json {
-            println!(
+            outln!(
                 "{}",
                 serde_json::to_string_pretty(&run.json(&gpu, &scene, camera_name)?)?
             );
@@ -650,7 +668,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
                 object["ratio_of"] = json!(basis.field());
                 array.push(object);
             }
-            println!("{}", serde_json::to_string_pretty(&Value::Array(array))?);
+            outln!("{}", serde_json::to_string_pretty(&Value::Array(array))?);
         } else {
             print_compare(&gpu, &scene, camera_name, &runs, basis);
         }
@@ -735,15 +753,17 @@ fn stats_row(name: &str, width: usize, s: &Stats) -> String {
 
 fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
     let [w, h] = run.args.size;
-    println!(
+    outln!(
         "adapter: {} | size: {w}x{h} | method: {} | preset: {}",
         gpu.describe(),
         run.engine.method_name(),
         run.preset_label()
     );
-    println!(
+    outln!(
         "scene `{}`, camera `{camera}`: {} timed frames after {} warm-up",
-        scene.name, run.args.frames, run.args.warmup
+        scene.name,
+        run.args.frames,
+        run.args.warmup
     );
     match (run.pass_stats(), run.total_gpu()) {
         (Some(passes), Some(total)) => {
@@ -753,20 +773,23 @@ fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
                 .max()
                 .unwrap_or(0)
                 .max(5);
-            println!(
+            outln!(
                 "{:<width$}  {:>10}  {:>10}  {:>10}",
-                "GPU ms", "median", "p10", "p90"
+                "GPU ms",
+                "median",
+                "p10",
+                "p90"
             );
             for (name, s) in &passes {
-                println!("{}", stats_row(name, width, s));
+                outln!("{}", stats_row(name, width, s));
             }
-            println!("{}", stats_row("total", width, &total));
+            outln!("{}", stats_row("total", width, &total));
         }
-        _ => println!("GPU time: not measured (the adapter has no TIMESTAMP_QUERY)"),
+        _ => outln!("GPU time: not measured (the adapter has no TIMESTAMP_QUERY)"),
     }
     let line = |what: &str, s: Option<Stats>| {
         if let Some(s) = s {
-            println!(
+            outln!(
                 "{what}: median {} ms, p10 {} ms, p90 {} ms",
                 ms(s.median),
                 ms(s.p10),
@@ -784,8 +807,8 @@ fn print_one(gpu: &GpuContext, scene: &Scene, camera: &str, run: &Run) {
 
 fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], basis: Basis) {
     let [w, h] = runs[0].args.size;
-    println!("adapter: {} | size: {w}x{h}", gpu.describe());
-    println!(
+    outln!("adapter: {} | size: {w}x{h}", gpu.describe());
+    outln!(
         "scene `{}`, camera `{camera}`: {} configurations, {} timed frames each after {} \
          warm-up, interleaved; ratio: of the median {} time",
         scene.name,
@@ -797,9 +820,15 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
             Basis::Wall => "wall",
         }
     );
-    println!(
+    outln!(
         "{:<3}  {:>10}  {:>10}  {:>10}  {:>10}  {:>7}  {:>10}  configuration (method, preset)",
-        "#", "GPU ms", "p10", "p90", "wall ms", "ratio", "encode ms"
+        "#",
+        "GPU ms",
+        "p10",
+        "p90",
+        "wall ms",
+        "ratio",
+        "encode ms"
     );
     let median = |values: &[f64]| Stats::of(values).map_or(f64::NAN, |s| s.median);
     for (i, run) in runs.iter().enumerate() {
@@ -808,7 +837,7 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
             .map_or(["-".to_string(), "-".into(), "-".into()], |s| {
                 [ms(s.median), ms(s.p10), ms(s.p90)]
             });
-        println!(
+        outln!(
             "{:<3}  {:>10}  {:>10}  {:>10}  {:>10}  {:>7.3}  {:>10}  {} ({}, {})",
             i + 1,
             gpu[0],
@@ -843,11 +872,11 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
         }
     }
     let width = names.iter().map(|n| n.len()).max().unwrap_or(0).max(6);
-    println!("per-pass GPU median ms:");
+    outln!("per-pass GPU median ms:");
     let header: Vec<String> = (1..=runs.len())
         .map(|i| format!("{:>10}", format!("#{i}")))
         .collect();
-    println!("{:<width$}  {}", "pass", header.join("  "));
+    outln!("{:<width$}  {}", "pass", header.join("  "));
     for name in names {
         let cells: Vec<String> = stats
             .iter()
@@ -865,7 +894,7 @@ fn print_compare(gpu: &GpuContext, scene: &Scene, camera: &str, runs: &[Run], ba
                 }
             })
             .collect();
-        println!("{name:<width$}  {}", cells.join("  "));
+        outln!("{name:<width$}  {}", cells.join("  "));
     }
 }
 

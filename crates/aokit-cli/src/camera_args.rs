@@ -11,25 +11,32 @@ pub struct CameraArgs {
     #[arg(long)]
     pub camera: Option<String>,
     /// Place the camera: eye position.
-    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, requires = "target")]
+    // Values may start with a minus sign (`--eye -6,1,2`): without `allow_hyphen_values`,
+    // clap takes them for an unknown flag.
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, requires = "target", allow_hyphen_values = true)]
     pub eye: Option<Vec3>,
     /// Place the camera: point looked at.
-    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, requires = "eye")]
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, requires = "eye", allow_hyphen_values = true)]
     pub target: Option<Vec3>,
     /// Up direction (default: +Y for --eye/--target, the scene camera's otherwise).
-    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3)]
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
     pub up: Option<Vec3>,
     /// Vertical field of view in degrees for --eye/--target, or to override the scene camera's.
-    #[arg(long, value_name = "DEG")]
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
     pub fov_y: Option<f32>,
     /// Use an orthographic lens this many world units tall.
-    #[arg(long, value_name = "H", conflicts_with = "fov_y")]
+    #[arg(
+        long,
+        value_name = "H",
+        conflicts_with = "fov_y",
+        allow_negative_numbers = true
+    )]
     pub ortho_height: Option<f32>,
     /// Near plane distance (default: fitted to the scene).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub near: Option<f32>,
     /// Far plane distance (default: infinite for perspective, fitted for orthographic).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub far: Option<f32>,
     /// Standard depth (near = 0, far = 1) instead of reverse-Z.
     #[arg(long)]

@@ -20,7 +20,7 @@ use serde_json::json;
 
 use crate::cache;
 use crate::camera_args::CameraArgs;
-use crate::export::create_dir;
+use crate::export::{check_out_dir, create_dir};
 use crate::passes::{self, DepthKind, PassFiles};
 use crate::peer::{self, PeerSettings, PeerSpec, XeGtao};
 use crate::reference::ReferenceInfo;
@@ -43,7 +43,7 @@ pub struct CompareArgs {
     #[arg(long, value_name = "DIR")]
     pub inputs: Option<PathBuf>,
     /// Image size (scene views).
-    #[arg(long, value_name = "WxH", default_value = "480x270", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "480x270", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     /// Methods to score, comma-separated, or `all`.
     #[arg(long, value_delimiter = ',', default_value = "all")]
@@ -52,14 +52,14 @@ pub struct CompareArgs {
     #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
     pub presets: Vec<Preset>,
     /// AO radius (default: the scene's suggested radius, else 1); the reference uses it too.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f32>,
     /// Laid over every method's preset before scoring (keys of other methods are ignored by
     /// each method); `radius` must come from --radius, which the reference shares.
     #[command(flatten)]
     pub overrides: OverrideArgs,
     /// Reference rays per pixel.
-    #[arg(long, default_value_t = 512)]
+    #[arg(long, default_value_t = 512, value_parser = crate::reference::parse_spp, allow_negative_numbers = true)]
     pub spp: u32,
     /// Where references are cached (default: $AOKIT_CACHE, $XDG_CACHE_HOME/aokit or ~/.cache/aokit).
     #[arg(long, value_name = "DIR")]
@@ -71,7 +71,7 @@ pub struct CompareArgs {
     /// temporal filter, when on, accumulates over them): adds the mean RMSE over the frames,
     /// the flicker (mean change between frames; all noise with --path still) and the error in
     /// what each frame newly reveals. Images and the other columns are of the last frame.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000), allow_negative_numbers = true)]
     pub frames: u32,
     /// How the camera moves over --frames: still, orbit, dolly or strafe (as `aokit render`).
     #[arg(long, value_name = "PATH", default_value = "still")]
@@ -432,7 +432,18 @@ fn score_inputs(
         DepthKind::Linear,
         NormalSpace::View,
     )?;
-    let reference_ao = read_scalar_exr(&dir.join("reference.exr"))?;
+    let reference_path = dir.join("reference.exr");
+    let reference_ao = read_scalar_exr(&reference_path)?;
+    // One NaN makes every metric NaN, which the report prints as "n/a": refuse it here.
+    let non_finite = reference_ao.data.iter().filter(|v| !v.is_finite()).count();
+    if non_finite > 0 {
+        bail!(
+            "{}: {non_finite} of {} pixels are not finite (NaN or infinity); the reference AO \
+             must be a number in [0, 1] at every pixel",
+            reference_path.display(),
+            reference_ao.data.len()
+        );
+    }
     if [reference_ao.width, reference_ao.height] != loaded.size {
         bail!(
             "{}: reference.exr and depth.exr differ in size",
@@ -558,6 +569,7 @@ pub fn open_view(view: &str) -> Result<(Scene, aokit_scene::Camera)> {
 }
 
 pub fn run(args: &CompareArgs) -> Result<()> {
+    check_out_dir(&args.out)?;
     let methods = methods(&args.methods)?;
     if methods.is_empty() || args.presets.is_empty() {
         bail!("--methods and --presets need at least one entry each");
@@ -654,8 +666,8 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             + "\n",
     )?;
     write("report.html", report.html())?;
-    print!("{}", report.markdown());
-    println!(
+    out!("{}", report.markdown());
+    outln!(
         "wrote metrics.csv, metrics.md, metrics-by-method.md, metrics.json, report.html and images/ to {}",
         out.display()
     );

@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use aokit::Projection;
 use aokit_eval::write_exr;
 use aokit_scene::CameraFile;
@@ -52,6 +52,29 @@ pub fn write_back_depth(out: &Path, size: [u32; 2], back_depth: &[f32]) -> Resul
 pub fn write_json(path: &Path, value: &impl serde::Serialize) -> Result<()> {
     std::fs::write(path, serde_json::to_string_pretty(value)? + "\n")
         .with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// Checks that `dir` (`--out`) is, or can become, a directory: run before any work, so that a
+/// file in its place fails at once rather than after a trace or a search of minutes.
+pub fn check_out_dir(dir: &Path) -> Result<()> {
+    // The nearest part of the path that exists must be a directory.
+    let existing = dir.ancestors().find(|p| p.exists());
+    if let Some(existing) = existing
+        && !existing.is_dir()
+    {
+        if existing == dir {
+            bail!(
+                "--out {}: a file of that name exists; the output must be a directory",
+                dir.display()
+            );
+        }
+        bail!(
+            "--out {}: {} is a file, so the output directory cannot be made under it",
+            dir.display(),
+            existing.display()
+        );
+    }
+    Ok(())
 }
 
 /// Creates `dir` and its parents, naming it on failure.

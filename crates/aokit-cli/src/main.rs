@@ -1,5 +1,20 @@
 //! `aokit`: render scenes with screen-space AO, headless.
 
+/// `print!` for the command's report on stdout, which does not panic when the reader has gone
+/// (`aokit render | head -c1`): see [`stdout_text`].
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::stdout_text(format_args!($($arg)*))
+    };
+}
+
+/// `println!` as [`out!`] is `print!`.
+macro_rules! outln {
+    ($($arg:tt)*) => {
+        $crate::stdout_text(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
 mod ao;
 mod bench;
 mod cache;
@@ -15,6 +30,7 @@ mod settings_args;
 mod settings_list;
 mod tune;
 
+use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -70,5 +86,19 @@ fn main() -> ExitCode {
             // clap's usage errors, so scripts test one value.
             ExitCode::from(2)
         }
+    }
+}
+
+/// Writes to stdout. `println!` panics when stdout is a closed pipe (Rust ignores
+/// SIGPIPE, so the write fails with EPIPE); the report on stdout only summarises what the
+/// command wrote to files, so a reader that stopped early loses nothing else: the line is
+/// dropped and the command goes on to write its files and exit 0. Any other write error is
+/// said on stderr, not fatal, for the same reason.
+pub fn stdout_text(args: std::fmt::Arguments<'_>) {
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_fmt(args).and_then(|()| out.flush())
+        && e.kind() != std::io::ErrorKind::BrokenPipe
+    {
+        eprintln!("warning: cannot write to stdout: {e}");
     }
 }

@@ -79,6 +79,21 @@ pub fn load(
             camera_path.display()
         );
     }
+    // World-space normals are turned by the rotation part: a zero or degenerate one (a
+    // camera.json written by hand) would turn every normal into zero, which decodes to a normal
+    // facing the camera and darkens the AO without a word.
+    if normal_space == NormalSpace::World && normals_path.is_some() {
+        let rotation = glam::Mat3::from_mat4(view_from_world);
+        let determinant = rotation.determinant();
+        if !(determinant.is_finite() && determinant.abs() > 1e-6) {
+            bail!(
+                "{}: view_from_world's 3x3 part has determinant {determinant}, not a rotation; \
+                 world-space normals (--normal-space world) cannot be turned into view space \
+                 with it",
+                camera_path.display()
+            );
+        }
+    }
     let size = [camera.width, camera.height];
     let read_linear = |path: &Path| -> Result<Vec<f32>> {
         let depth = read_depth(path)?;
@@ -95,11 +110,34 @@ pub fn load(
         }
         Ok(match depth_kind {
             DepthKind::Linear => depth.data,
-            DepthKind::Ndc => depth
-                .data
-                .iter()
-                .map(|&d| projection.surface_depth(d))
-                .collect(),
+            DepthKind::Ndc => {
+                // Depth-buffer values lie in [0, 1]; others (linear depth given by mistake)
+                // would map to plausible but wrong distances. Non-finite values stay background.
+                let outside = |d: &f32| d.is_finite() && !(0.0..=1.0).contains(d);
+                let bad = depth.data.iter().filter(|d| outside(d)).count();
+                if bad > 0 {
+                    let (i, example) = depth
+                        .data
+                        .iter()
+                        .enumerate()
+                        .find(|(_, d)| outside(d))
+                        .expect("counted above");
+                    bail!(
+                        "{}: {bad} of {} pixels hold depth outside [0, 1] (e.g. {example} at \
+                         x {}, y {}), which --depth-kind ndc needs; is it linear depth \
+                         (--depth-kind linear)?",
+                        path.display(),
+                        depth.data.len(),
+                        i % size[0] as usize,
+                        i / size[0] as usize
+                    );
+                }
+                depth
+                    .data
+                    .iter()
+                    .map(|&d| projection.surface_depth(d))
+                    .collect()
+            }
         })
     };
     let linear_depth = read_linear(depth_path)?;

@@ -11,7 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
 
 use crate::camera_args::CameraArgs;
-use crate::export::{create_dir, write_back_depth, write_gbuffer, write_json};
+use crate::export::{check_out_dir, create_dir, write_back_depth, write_gbuffer, write_json};
 use crate::render::parse_size;
 
 #[derive(Args, Debug)]
@@ -22,16 +22,16 @@ pub struct ReferenceArgs {
     #[command(flatten)]
     pub camera: CameraArgs,
     /// Image size.
-    #[arg(long, value_name = "WxH", default_value = "640x360", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "640x360", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     /// AO radius in world units (default: the scene's suggested radius, else 1).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f32>,
     /// Rays per pixel.
-    #[arg(long, default_value_t = 256)]
+    #[arg(long, default_value_t = 256, value_parser = crate::reference::parse_spp, allow_negative_numbers = true)]
     pub spp: u32,
     /// Seed of the per-pixel sample scrambling; the same seed gives the same image.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_negative_numbers = true)]
     pub seed: u64,
     /// How a hit at distance t counts: none (1), linear (1 - t/R), quadratic (1 - (t/R)^2).
     #[arg(long, default_value = "none")]
@@ -39,6 +39,19 @@ pub struct ReferenceArgs {
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-out")]
     pub out: PathBuf,
+}
+
+/// `--spp`: rays per pixel, at least 1. Negative values reach here (the flag allows a leading
+/// minus so that clap does not take `-1` for a flag) and are named as such.
+pub fn parse_spp(s: &str) -> Result<u32, String> {
+    let n: i64 = s
+        .trim()
+        .parse()
+        .map_err(|e| format!("`{s}` is not a whole number of rays per pixel: {e}"))?;
+    if n < 1 {
+        return Err(format!("rays per pixel must be at least 1, got {n}"));
+    }
+    u32::try_from(n).map_err(|_| format!("rays per pixel must be at most {}, got {n}", u32::MAX))
 }
 
 /// What a reference was traced with, saved beside it as `reference.json` so that `aokit
@@ -98,6 +111,12 @@ fn trace_on(
 ) -> Result<ReferenceImage> {
     options.validate()?;
     camera.validate().map_err(|e| anyhow!(e))?;
+    // The projection written to camera.json afterwards, checked before the trace (planes
+    // fitted to the scene included), so that nothing is written that `aokit ao` refuses.
+    camera
+        .projection(size[0] as f32 / size[1] as f32, &scene.bounds)
+        .validate()
+        .map_err(|e| anyhow!("camera `{}`: {e}", camera.name))?;
     let pixel_camera = aokit_scene::reference::pixel_camera(scene, camera, size);
     let bar = ProgressBar::new(u64::from(size[1])).with_style(
         ProgressStyle::with_template("tracing {msg} [{bar:30}] {pos}/{len} rows, {eta} left")
@@ -113,6 +132,7 @@ fn trace_on(
 }
 
 pub fn run(args: &ReferenceArgs) -> Result<()> {
+    check_out_dir(&args.out)?;
     let scene = Scene::open(&args.scene)?;
     let camera = args.camera.resolve(&scene)?;
     let options = AoOptions {
@@ -150,7 +170,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     let back = write_back_depth(out, image.size, &back_depth)?;
     write_json(&out.join("reference.json"), &ReferenceInfo::new(&options))?;
     let rays = f64::from(image.size[0]) * f64::from(image.size[1]) * f64::from(options.spp);
-    println!(
+    outln!(
         "traced `{}` from camera `{}` at {}x{}, {} rays per pixel, radius {}, falloff {} in {:.1} s \
          ({:.2} M rays/s): wrote reference.exr, reference.png, {}, {back}, reference.json to {}",
         scene.name,
@@ -165,7 +185,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         gbuffer.join(", "),
         out.display()
     );
-    println!(
+    outln!(
         "{}",
         crate::render::ao_summary(&image.ao, &image.linear_depth)
     );

@@ -12,7 +12,7 @@ use clap::Args;
 use aokit_eval::{grey_to_rgba, write_exr, write_gif, write_grey_png, write_rgba_png};
 
 use crate::camera_args::CameraArgs;
-use crate::export::{create_dir, write_back_depth, write_gbuffer};
+use crate::export::{check_out_dir, create_dir, write_back_depth, write_gbuffer};
 use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug)]
@@ -23,7 +23,7 @@ pub struct RenderArgs {
     #[command(flatten)]
     pub camera: CameraArgs,
     /// Image size.
-    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     #[command(flatten)]
     pub settings: SettingsArgs,
@@ -35,7 +35,7 @@ pub struct RenderArgs {
     #[arg(long)]
     pub gbuffer: bool,
     /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
-    #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3)]
+    #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3, allow_hyphen_values = true)]
     pub sun: Option<glam::Vec3>,
     /// Multi-bounce AO in lit.png's ambient diffuse light: gtao (Jimenez et al.'s fit, the
     /// default, also what a bare --multi-bounce means), closed-form (k / (1 - albedo (1 - k)))
@@ -106,7 +106,7 @@ fn parse_roughness(s: &str) -> Result<f32, String> {
 }
 
 /// Largest side `--size` accepts: twice the 8192 every wgpu device supports, far past any
-/// screen, and still a few hundred MB of float images.
+/// screen; the total is held to the library's budget (`aokit::inputs::MAX_PIXELS`).
 const MAX_SIDE: u32 = 16384;
 
 pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
@@ -114,8 +114,13 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
         .split_once(['x', 'X'])
         .ok_or_else(|| format!("`{s}` is not WIDTHxHEIGHT"))?;
     let parse = |v: &str| {
-        v.trim()
-            .parse::<u32>()
+        let v = v.trim();
+        // `-64x48` reaches here (the flag allows a leading minus so that clap does not take
+        // it for a flag): say what is wrong with it rather than "invalid digit".
+        if v.starts_with('-') {
+            return Err(format!("`{s}`: width and height must be at least 1"));
+        }
+        v.parse::<u32>()
             .map_err(|e| format!("`{s}` is not WIDTHxHEIGHT: {e}"))
     };
     let size = [parse(w)?, parse(h)?];
@@ -127,6 +132,8 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
             "`{s}`: width and height must be at most {MAX_SIDE}"
         ));
     }
+    // The library's total budget, checked here before anything is allocated.
+    aokit::inputs::check_size(size).map_err(|e| format!("`{s}`: {e}"))?;
     Ok(size)
 }
 
@@ -148,6 +155,7 @@ pub fn open_gpu_with(features: wgpu::Features) -> Result<GpuContext> {
 }
 
 pub fn run(args: &RenderArgs) -> Result<()> {
+    check_out_dir(&args.out)?;
     let scene = Scene::open(&args.scene)?;
     for note in &scene.notes {
         eprintln!("note: {}: {note}", scene.name);
@@ -270,7 +278,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             written.push(write_back_depth(out, frame.size, back_depth)?.into());
         }
     }
-    println!(
+    outln!(
         "rendered `{}` from camera `{}` at {}x{} with {} (radius {}): wrote {} to {}",
         scene.name,
         camera.name,
@@ -281,7 +289,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         written.join(", "),
         out.display()
     );
-    println!("{}", ao_summary(&frame.ao, &frame.linear_depth));
+    outln!("{}", ao_summary(&frame.ao, &frame.linear_depth));
     Ok(())
 }
 

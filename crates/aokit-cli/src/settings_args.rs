@@ -16,7 +16,7 @@ pub struct SettingsArgs {
     #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(Preset::ALL.map(Preset::name)))]
     pub preset: Option<String>,
     /// AO radius in world units (default: the scene's suggested radius, else 1).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub radius: Option<f32>,
     #[command(flatten)]
     pub overrides: OverrideArgs,
@@ -77,6 +77,12 @@ impl OverrideArgs {
             let patch: toml::Table = toml::from_str(&text)
                 .with_context(|| format!("settings file {} is not valid TOML", path.display()))?;
             merge(&mut table, patch, "")
+                .with_context(|| format!("in settings file {}", path.display()))?;
+            // A bad value shows only when the table deserialises and validates: check the file's
+            // values here, where the message can name the file.
+            AoSettings::deserialize(toml::Value::Table(table.clone()))
+                .map_err(invalid_setting)
+                .and_then(|settings| Ok(settings.validate()?))
                 .with_context(|| format!("in settings file {}", path.display()))?;
         }
         if let Some(radius) = radius {

@@ -34,7 +34,7 @@ pub struct TuneArgs {
     #[arg(long, value_name = "SCENE[@CAMERA]")]
     pub view: Vec<String>,
     /// Image size of every view.
-    #[arg(long, value_name = "WxH", default_value = "240x135", value_parser = parse_size)]
+    #[arg(long, value_name = "WxH", default_value = "240x135", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
     /// Methods to tune, comma-separated, or `all`. `ssao-crytek`, `sao`, `ue4-ssao` and `msvo`
     /// are left out unless named: their presets keep their published forms, Crytek's 2007
@@ -53,12 +53,12 @@ pub struct TuneArgs {
     #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
     pub presets: Vec<Preset>,
     /// Reference rays per pixel.
-    #[arg(long, default_value_t = 256)]
+    #[arg(long, default_value_t = 256, value_parser = crate::reference::parse_spp, allow_negative_numbers = true)]
     pub spp: u32,
     /// Most rounds of the coordinate descent over all parameters; a search stops at the first
     /// round that gains nothing. 3 rounds left the first tuning short of where the search
     /// ends (docs/tuning.md).
-    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=10))]
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=10), allow_negative_numbers = true)]
     pub rounds: u32,
     /// Tune `vbao` for the lowest mean error alone. By default its search is held to GTAO's
     /// error at the same preset on every view (GTAO's in this run when it is tuned too, its
@@ -663,6 +663,7 @@ fn markdown(
 }
 
 pub fn run(args: &TuneArgs) -> Result<()> {
+    crate::export::check_out_dir(&args.out)?;
     let mut methods = methods(&args.methods)?;
     // hbao-plus takes hbao's split and vbao is held to GTAO's error, each as this run tuned
     // them: those two go after the others, whatever order --methods names them in.
@@ -770,8 +771,8 @@ pub fn run(args: &TuneArgs) -> Result<()> {
         ));
     }
     write("evaluations.csv", csv)?;
-    print!("{md}");
-    println!(
+    out!("{md}");
+    outln!(
         "wrote tune.md, tune.json and evaluations.csv ({} evaluations) to {}",
         evaluator.log.len(),
         out.display()

@@ -24,6 +24,14 @@ pub enum ReferenceError {
     /// The image has no pixels.
     #[error("reference image size {0}x{1} is empty")]
     Size(u32, u32),
+    /// The image has more pixels than [`MAX_PIXELS`](crate::MAX_PIXELS).
+    #[error(
+        "reference image size {0}x{1} is {pixels} pixels, more than the {max} (8192x8192) aokit \
+         works on",
+        pixels = u64::from(*.0) * u64::from(*.1),
+        max = crate::MAX_PIXELS
+    )]
+    TooManyPixels(u32, u32),
     /// An index points past the vertex list.
     #[error("triangle {triangle} uses vertex {index}, but there are only {vertices} vertices")]
     Index {

@@ -44,3 +44,8 @@ pub use options::{AoOptions, Falloff, MAX_SPP};
 pub use render::ReferenceImage;
 pub use sampling::{PixelSampler, cosine_hemisphere, tangent_frame};
 pub use tracer::{Hit, Tracer};
+
+/// Most pixels a reference image may have: 8192x8192, the budget of `aokit::inputs::MAX_PIXELS`
+/// (this crate does not depend on aokit). [`Tracer::render`] and [`Tracer::back_depth`] refuse
+/// more before they allocate.
+pub const MAX_PIXELS: u64 = 8192 * 8192;

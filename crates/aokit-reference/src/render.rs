@@ -96,6 +96,10 @@ impl Tracer {
         if width == 0 || height == 0 {
             return Err(ReferenceError::Size(width, height));
         }
+        // Before the image is allocated: a limit on each side alone let 16384x16384 through.
+        if u64::from(width) * u64::from(height) > crate::MAX_PIXELS {
+            return Err(ReferenceError::TooManyPixels(width, height));
+        }
         let view_from_world: Mat4 = camera.view_from_world;
         let rows_done = AtomicUsize::new(0);
         let pixels: Vec<Pixel> = (0..height)
@@ -158,6 +162,10 @@ impl Tracer {
         let [width, height] = camera.size;
         if width == 0 || height == 0 {
             return Err(ReferenceError::Size(width, height));
+        }
+        // Before the image is allocated: a limit on each side alone let 16384x16384 through.
+        if u64::from(width) * u64::from(height) > crate::MAX_PIXELS {
+            return Err(ReferenceError::TooManyPixels(width, height));
         }
         Ok((0..height)
             .into_par_iter()

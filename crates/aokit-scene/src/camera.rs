@@ -127,10 +127,45 @@ impl Camera {
                 self.name
             ));
         }
+        // The length squares each coordinate: past ~1e19 it overflows to infinity, and the
+        // normalised direction becomes zero, which the parallel check below would misreport.
+        if !forward.length().is_finite() {
+            return Err(format!(
+                "camera `{}`: eye {} and target {} are too far apart (their distance overflows \
+                 32-bit floats)",
+                self.name, self.eye, self.target
+            ));
+        }
         if forward.length() < 1e-6 {
             return Err(format!(
                 "camera `{}`: eye and target are the same point",
                 self.name
+            ));
+        }
+        if !(self.up.length() > 1e-6 && self.up.length().is_finite()) {
+            return Err(format!(
+                "camera `{}`: up {} has no direction (zero length)",
+                self.name, self.up
+            ));
+        }
+        // Explicit planes are checked here, before any work: the projection would refuse them
+        // only once it is built (after a reference was traced, or by `aokit ao` reading the
+        // camera.json written with them).
+        if let Some(near) = self.near
+            && !(near.is_finite() && near > 0.0)
+        {
+            return Err(format!(
+                "camera `{}`: near plane {near} must be positive and finite",
+                self.name
+            ));
+        }
+        if let Some(far) = self.far
+            && !(far.is_finite() && far > self.near.unwrap_or(0.0))
+        {
+            return Err(format!(
+                "camera `{}`: far plane {far} must be finite and greater than the near plane{}",
+                self.name,
+                self.near.map(|n| format!(" ({n})")).unwrap_or_default()
             ));
         }
         if forward
@@ -255,10 +290,47 @@ pub struct CameraFile {
     pub reverse_z: bool,
     /// Where the view axis met the image, in NDC ([`Projection::ndc_offset`]): the frame's
     /// jitter or an off-centre frustum. Written only when not zero; absent reads as zero.
-    #[serde(default, skip_serializing_if = "is_zero")]
+    #[serde(
+        default,
+        skip_serializing_if = "is_zero",
+        deserialize_with = "ndc_offset_entries"
+    )]
     pub ndc_offset: [f32; 2],
     /// World-to-view matrix, row-major (`view_from_world[row][column]`).
+    #[serde(deserialize_with = "matrix_entries")]
     pub view_from_world: [[f32; 4]; 4],
+}
+
+/// `ndc_offset` as a list checked for length: serde_json reports a fixed-size array with an
+/// entry too many as "trailing characters", which names neither the field nor the count.
+fn ndc_offset_entries<'de, D: serde::Deserializer<'de>>(d: D) -> Result<[f32; 2], D::Error> {
+    let entries = Vec::<f32>::deserialize(d)?;
+    <[f32; 2]>::try_from(entries.as_slice()).map_err(|_| {
+        serde::de::Error::custom(format!(
+            "ndc_offset must have 2 entries (x, y), got {}",
+            entries.len()
+        ))
+    })
+}
+
+/// `view_from_world` as rows checked for length, for the same reason.
+fn matrix_entries<'de, D: serde::Deserializer<'de>>(d: D) -> Result<[[f32; 4]; 4], D::Error> {
+    let rows = Vec::<Vec<f32>>::deserialize(d)?;
+    let bad = || {
+        serde::de::Error::custom(format!(
+            "view_from_world must be 4 rows of 4 numbers, got {} rows of {:?}",
+            rows.len(),
+            rows.iter().map(Vec::len).collect::<Vec<_>>()
+        ))
+    };
+    let mut matrix = [[0.0; 4]; 4];
+    if rows.len() != 4 {
+        return Err(bad());
+    }
+    for (row, entries) in matrix.iter_mut().zip(&rows) {
+        *row = <[f32; 4]>::try_from(entries.as_slice()).map_err(|_| bad())?;
+    }
+    Ok(matrix)
 }
 
 fn is_zero(offset: &[f32; 2]) -> bool {

@@ -103,6 +103,9 @@ impl ExternalAo {
                 bytemuck::cast_slice(depth),
             )
         };
+        if let Some(normals) = passes.normals {
+            check_normals(normals, passes.linear_depth, passes.size)?;
+        }
         let depth = upload("external linear depth", passes.linear_depth)?;
         let back_depth = passes
             .back_depth
@@ -243,6 +246,39 @@ impl ExternalAo {
         queue.submit([encoder.finish()]);
         Ok(read_texture_f32(device, queue, outputs.ao)?)
     }
+}
+
+/// Shortest and longest normal taken as a unit normal (and normalised): half-float exports and
+/// interpolated normals are off by far less; a normal outside is not a unit normal at all.
+const NORMAL_LENGTH: std::ops::RangeInclusive<f32> = 0.5..=2.0;
+
+/// Refuses normals that are zero, NaN, infinite or far from unit length at a pixel showing a
+/// surface: normalising them falls back to a normal facing the camera, which the kernels take
+/// for a real one and the AO darkens without a word (the room's mean AO 0.95 to 0.28 with
+/// zero normals). Pixels without a surface may hold anything.
+fn check_normals(
+    normals: &[Vec3],
+    linear_depth: &[f32],
+    size: [u32; 2],
+) -> Result<(), RenderError> {
+    let usable = |n: &Vec3| n.is_finite() && NORMAL_LENGTH.contains(&n.length());
+    let mut bad = normals
+        .iter()
+        .zip(linear_depth)
+        .enumerate()
+        .filter(|(_, (n, d))| d.is_finite() && **d > 0.0 && !usable(n));
+    let Some((first, (example, _))) = bad.next() else {
+        return Ok(());
+    };
+    let count = 1 + bad.count();
+    let width = size[0].max(1) as usize;
+    Err(RenderError::Normals(format!(
+        "{count} pixels showing a surface have a normal that is zero, NaN, infinite or not of \
+         unit length (e.g. {example} at x {}, y {}); give unit normals, or none to reconstruct \
+         them from depth",
+        first % width,
+        first / width
+    )))
 }
 
 /// Runs the AO pipeline once on `passes` and reads the AO back (1 = unoccluded).

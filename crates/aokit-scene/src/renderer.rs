@@ -95,6 +95,9 @@ pub enum RenderError {
     /// The camera is degenerate.
     #[error("{0}")]
     Camera(String),
+    /// Normals handed in on the CPU are unusable where there is a surface.
+    #[error("normals: {0}")]
+    Normals(String),
     /// The AO pipeline refused its inputs or settings.
     #[error(transparent)]
     Ao(#[from] AoError),
@@ -346,6 +349,13 @@ impl Renderer {
                 reason: format!("each side must be between 1 and {max} pixels on this device"),
             });
         }
+        // Checked before the G-buffer is made: a device may allow 16384 per side, but not
+        // the memory of that many pixels.
+        aokit::inputs::check_size(size).map_err(|e| RenderError::Size {
+            width,
+            height,
+            reason: e.to_string(),
+        })?;
         camera.validate().map_err(RenderError::Camera)?;
         let projection = self.projection(camera, size);
         projection

@@ -213,6 +213,29 @@ impl<'a> AoInputs<'a> {
 /// ```
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum InputError {
+    /// The image has more pixels than [`MAX_PIXELS`].
+    #[error(
+        "{}x{} is {pixels} pixels, more than the {MAX_PIXELS} (8192x8192) aokit works on",
+        size[0],
+        size[1]
+    )]
+    TooManyPixels {
+        /// Width and height.
+        size: [u32; 2],
+        /// Their product.
+        pixels: u64,
+    },
+    /// World-space normals (`normals.space = world`) with an
+    /// [`AoInputs::view_from_world`] whose rotation part is degenerate or not finite: every
+    /// normal would turn into zero or NaN.
+    #[error(
+        "view_from_world's 3x3 part has determinant {determinant}: it cannot turn the world-space \
+         normals (normals.space = world) into view space; pass the camera's world-to-view matrix"
+    )]
+    ViewFromWorld {
+        /// The determinant of its 3x3 part.
+        determinant: f32,
+    },
     /// The depth (or back-face depth) texture is neither a depth format nor `R32Float`.
     #[error("{0} texture format {1:?} is neither a depth format nor R32Float linear depth")]
     DepthFormat(&'static str, wgpu::TextureFormat),
@@ -279,6 +302,7 @@ impl AoInputs<'_> {
         let depth = self.depth;
         check_depth("depth", depth)?;
         let size = [depth.width(), depth.height()];
+        check_size(size)?;
         if let Some(back) = self.back_depth {
             check_depth("back-face depth", back)?;
             same_size("back-face depth", size, back)?;
@@ -316,6 +340,27 @@ impl AoInputs<'_> {
         }
         Ok(size)
     }
+}
+
+/// The most pixels an image may have: 8192x8192, the largest side every wgpu device supports,
+/// squared. A limit on each side alone let 16384x16384 (268 million pixels) through, and
+/// `aokit render` grew past 5 GB on it; this budget is a quarter of that.
+pub const MAX_PIXELS: u64 = 8192 * 8192;
+
+/// Checks `size` against [`MAX_PIXELS`]. [`AoInputs::validate`] runs it, and callers that
+/// allocate images of their own (the scene renderer, the CLI's `--size`) run it before they do.
+///
+/// ```
+/// assert!(aokit::inputs::check_size([7680, 4320]).is_ok());
+/// let err = aokit::inputs::check_size([16384, 16384]).unwrap_err();
+/// assert!(err.to_string().contains("268435456 pixels"), "{err}");
+/// ```
+pub fn check_size(size: [u32; 2]) -> Result<(), InputError> {
+    let pixels = u64::from(size[0]) * u64::from(size[1]);
+    if pixels > MAX_PIXELS {
+        return Err(InputError::TooManyPixels { size, pixels });
+    }
+    Ok(())
 }
 
 /// A depth texture or `R32Float` linear depth the passes can bind.

@@ -2,13 +2,13 @@
 
 use crate::error::AoError;
 use crate::gpu::{create_uniform_buffer, missing_storage_formats};
-use crate::inputs::AoInputs;
+use crate::inputs::{AoInputs, InputError};
 use crate::passes::PassContext;
 use crate::passes::input::linear_depth::DepthInput;
 use crate::passes::kernel::depth_mips::atlas_format;
 use crate::plan::{At, FrameInputs, FramePlan, Pass, Target};
 use crate::record::{Passes, Views};
-use crate::settings::{AoSettings, Method};
+use crate::settings::{AoSettings, Method, NormalSpace};
 use crate::targets::{Layout, Targets};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
@@ -41,6 +41,13 @@ fn check_inputs(
     let max = device.limits().max_texture_dimension_2d;
     if size[0] > max || size[1] > max {
         return Err(AoError::TooLarge { size, max });
+    }
+    // The decode pass normalises `to_view * n`: any scale is harmless, but a zero or
+    // non-finite matrix turns every normal into garbage that the kernels would use as is.
+    let world_normals = settings.normals.space == NormalSpace::World && inputs.normals.is_some();
+    let determinant = glam::Mat3::from_mat4(inputs.view_from_world).determinant();
+    if world_normals && !(determinant.is_finite() && determinant.abs() > 1e-6) {
+        return Err(InputError::ViewFromWorld { determinant }.into());
     }
     let back_faces = settings.method == Method::Vbao && settings.vbao.back_faces;
     if back_faces && inputs.back_depth.is_none() {

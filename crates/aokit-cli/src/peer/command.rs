@@ -59,7 +59,7 @@ pub fn run(args: &PeerArgs) -> Result<()> {
     let path = out.join(MANIFEST);
     std::fs::write(&path, serde_json::to_string_pretty(&manifest)? + "\n")
         .with_context(|| format!("cannot write {}", path.display()))?;
-    println!(
+    outln!(
         "compiled {} modules of {} from {} with {} into {}",
         manifest.modules.len(),
         spec.name,

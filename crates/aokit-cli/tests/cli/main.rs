@@ -10,5 +10,6 @@ mod cli;
 mod composite;
 mod ground_truth;
 mod peer;
+mod robustness;
 mod settings;
 mod tune;

@@ -41,9 +41,7 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
         cameras: Vec::new(),
         notes: Vec::new(),
     };
-    for node in scene.nodes() {
-        state.visit(&node, Mat4::IDENTITY).map_err(parse)?;
-    }
+    state.visit_tree(scene.nodes()).map_err(parse)?;
     if state.mesh.triangle_count() == 0 {
         return Err(SceneError::Empty(path.to_path_buf()));
     }
@@ -65,18 +63,50 @@ struct State<'a> {
 }
 
 impl State<'_> {
-    fn visit(&mut self, node: &::gltf::Node<'_>, parent: Mat4) -> Result<(), String> {
-        let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
-        if let Some(mesh) = node.mesh() {
-            for primitive in mesh.primitives() {
-                self.add_primitive(&primitive, world)?;
+    /// Visits the trees under `roots` depth first, in document order. The walk keeps its own
+    /// stack rather than recursing, and refuses a node that is its own ancestor: the JSON can
+    /// describe cycles (a node listed among its own children), which the specification forbids
+    /// and which would otherwise recurse until the stack overflows.
+    fn visit_tree<'a>(
+        &mut self,
+        roots: impl Iterator<Item = ::gltf::Node<'a>>,
+    ) -> Result<(), String> {
+        // Each entry: the node, its parent's world transform and its depth in the tree.
+        let mut stack: Vec<(::gltf::Node<'a>, Mat4, usize)> =
+            roots.map(|node| (node, Mat4::IDENTITY, 0)).collect();
+        stack.reverse();
+        // The node indices from the root down to the node being visited.
+        let mut path: Vec<usize> = Vec::new();
+        while let Some((node, parent, depth)) = stack.pop() {
+            path.truncate(depth);
+            if path.contains(&node.index()) {
+                return Err(format!(
+                    "node {} is its own ancestor (the node hierarchy has a cycle: {} -> {})",
+                    node.index(),
+                    path.iter()
+                        .map(usize::to_string)
+                        .collect::<Vec<_>>()
+                        .join(" -> "),
+                    node.index()
+                ));
             }
-        }
-        if let Some(camera) = node.camera() {
-            self.add_camera(node, &camera, world);
-        }
-        for child in node.children() {
-            self.visit(&child, world)?;
+            path.push(node.index());
+            let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
+            if let Some(mesh) = node.mesh() {
+                for primitive in mesh.primitives() {
+                    self.add_primitive(&primitive, world)?;
+                }
+            }
+            if let Some(camera) = node.camera() {
+                self.add_camera(&node, &camera, world);
+            }
+            let children: Vec<_> = node.children().collect();
+            stack.extend(
+                children
+                    .into_iter()
+                    .rev()
+                    .map(|child| (child, world, depth + 1)),
+            );
         }
         Ok(())
     }
@@ -93,6 +123,19 @@ impl State<'_> {
             ));
             return Ok(());
         }
+        // The reader silently yields nothing for an accessor that runs past its data, which
+        // would read as "no indices" (every vertex in order) or "no normals": check first.
+        if let Some(indices) = primitive.indices() {
+            check_accessor(&indices, "indices", self.buffers)?;
+        }
+        for (semantic, accessor) in primitive.attributes() {
+            if matches!(
+                semantic,
+                ::gltf::Semantic::Positions | ::gltf::Semantic::Normals
+            ) {
+                check_accessor(&accessor, &semantic.to_string(), self.buffers)?;
+            }
+        }
         let reader = primitive.reader(|buffer| self.buffers.get(buffer.index()).map(|d| &d.0[..]));
         let positions: Vec<Vec3> = reader
             .read_positions()
@@ -103,6 +146,14 @@ impl State<'_> {
             Some(indices) => indices.into_u32().collect(),
             None => (0..positions.len() as u32).collect(),
         };
+        // An index past the vertices would panic when normals are generated below (and is
+        // refused by `Mesh::validate` otherwise): refuse it here, as the OBJ loader does.
+        if let Some(&i) = indices.iter().find(|&&i| i as usize >= positions.len()) {
+            return Err(format!(
+                "index {i} is out of range for a primitive of {} vertices",
+                positions.len()
+            ));
+        }
         let factor = primitive
             .material()
             .pbr_metallic_roughness()
@@ -164,4 +215,41 @@ impl State<'_> {
             reverse_z: true,
         });
     }
+}
+
+/// Checks that `accessor`'s elements lie inside its buffer view and the view inside its buffer.
+/// Sparse accessors and accessors without a view (all zeros) have nothing to check here.
+fn check_accessor(
+    accessor: &::gltf::Accessor<'_>,
+    what: &str,
+    buffers: &[::gltf::buffer::Data],
+) -> Result<(), String> {
+    let Some(view) = accessor.view() else {
+        return Ok(());
+    };
+    let name = format!("accessor {} ({what})", accessor.index());
+    let buffer_len = buffers.get(view.buffer().index()).map_or(0, |d| d.0.len());
+    let view_end = view.offset() + view.length();
+    if view_end > buffer_len {
+        return Err(format!(
+            "{name}: buffer view {} ends at byte {view_end}, past the {buffer_len} bytes of buffer {}",
+            view.index(),
+            view.buffer().index()
+        ));
+    }
+    let count = accessor.count();
+    if count == 0 {
+        return Ok(());
+    }
+    let element = accessor.size();
+    let stride = view.stride().unwrap_or(element).max(element);
+    let needed = accessor.offset() + stride * (count - 1) + element;
+    if needed > view.length() {
+        return Err(format!(
+            "{name}: {count} elements need {needed} bytes, past the {} bytes of buffer view {}",
+            view.length(),
+            view.index()
+        ));
+    }
+    Ok(())
 }

@@ -160,5 +160,14 @@ fn read_sidecar(path: &Path) -> Result<(Vec<Camera>, Option<f32>), SceneError> {
             Ok(camera)
         })
         .collect::<Result<Vec<_>, SceneError>>()?;
+    // Checked here, where the file is known: the radius is otherwise refused only by the
+    // settings' validation, whose message cannot name this file.
+    if let Some(radius) = sidecar.suggested_ao_radius
+        && !(radius.is_finite() && radius > 0.0)
+    {
+        return Err(parse(format!(
+            "suggested_ao_radius {radius} must be positive and finite"
+        )));
+    }
     Ok((cameras, sidecar.suggested_ao_radius))
 }

@@ -200,3 +200,102 @@ fn sponza_loads_with_its_named_cameras_and_renders() {
         assert!(mean > 0.5 && mean < 0.99, "{}: mean AO {mean}", camera.name);
     }
 }
+
+/// A one-triangle glTF with its data embedded as a base64 data URI; `nodes`, `index` (the third
+/// index) and `index_count` (the index accessor's count) vary per test.
+fn triangle_gltf(dir: &Path, name: &str, nodes: &str, index: u16, index_count: u32) -> PathBuf {
+    let positions: [[f32; 3]; 3] = [[0.0, 0.0, -2.0], [1.0, 0.0, -2.0], [0.0, 1.0, -2.0]];
+    let indices: [u16; 3] = [0, 1, index];
+    let mut bin: Vec<u8> = bytemuck::cast_slice(&positions).to_vec();
+    bin.extend_from_slice(bytemuck::cast_slice(&indices));
+    let json = format!(
+        r#"{{
+  "asset": {{"version": "2.0"}},
+  "scene": 0,
+  "scenes": [{{"nodes": [0]}}],
+  "nodes": {nodes},
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "indices": 1}}]}}],
+  "buffers": [{{"byteLength": {}}}],
+  "bufferViews": [
+    {{"buffer": 0, "byteOffset": 0, "byteLength": 36}},
+    {{"buffer": 0, "byteOffset": 36, "byteLength": 6}}
+  ],
+  "accessors": [
+    {{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+      "min": [0, 0, -2], "max": [1, 1, -2]}},
+    {{"bufferView": 1, "componentType": 5123, "count": {index_count}, "type": "SCALAR"}}
+  ]
+}}"#,
+        bin.len()
+    );
+    let path = dir.join(name);
+    std::fs::write(&path, glb(&json, &bin)).unwrap();
+    path
+}
+
+#[test]
+fn gltf_index_past_the_vertices_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let nodes = r#"[{"mesh": 0}]"#;
+    assert_eq!(
+        open(&triangle_gltf(dir.path(), "ok.glb", nodes, 2, 3))
+            .unwrap()
+            .mesh
+            .triangle_count(),
+        1
+    );
+    // Index 7 of 3 vertices: a panic while generating normals before the fix.
+    let path = triangle_gltf(dir.path(), "bad-index.glb", nodes, 7, 3);
+    let err = open(&path).unwrap_err().to_string();
+    assert!(err.contains("bad-index.glb"), "{err}");
+    assert!(err.contains("index 7 is out of range"), "{err}");
+}
+
+#[test]
+fn gltf_node_cycle_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    // Node 0 is its own child; then a longer cycle 0 -> 1 -> 0.
+    for (name, nodes) in [
+        ("self.glb", r#"[{"mesh": 0, "children": [0]}]"#),
+        (
+            "loop.glb",
+            r#"[{"children": [1]}, {"mesh": 0, "children": [0]}]"#,
+        ),
+    ] {
+        let path = triangle_gltf(dir.path(), name, nodes, 2, 3);
+        let err = open(&path).unwrap_err().to_string();
+        assert!(err.contains(name), "{err}");
+        assert!(err.contains("cycle"), "{err}");
+    }
+}
+
+#[test]
+fn gltf_accessor_past_its_buffer_view_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    // Six indices in a view that holds three: read as "no indices" before the fix.
+    let path = triangle_gltf(dir.path(), "long.glb", r#"[{"mesh": 0}]"#, 2, 6);
+    let err = open(&path).unwrap_err().to_string();
+    assert!(err.contains("long.glb"), "{err}");
+    assert!(
+        err.contains("accessor 1 (indices): 6 elements need 12 bytes"),
+        "{err}"
+    );
+}
+
+#[test]
+fn sidecar_with_a_bad_radius_is_refused_with_its_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("tri.obj");
+    std::fs::write(&path, "v 0 0 0\nv 1 0 0\nv 0 0 -1\nf 1 2 3\n").unwrap();
+    // Before, the radius reached the settings, whose message cannot name the file.
+    std::fs::write(
+        dir.path().join("tri-cameras.json"),
+        r#"{"suggested_ao_radius": -0.5}"#,
+    )
+    .unwrap();
+    let err = open(&path).unwrap_err().to_string();
+    assert!(
+        err.contains("tri-cameras.json") && err.contains("suggested_ao_radius -0.5"),
+        "{err}"
+    );
+}

@@ -20,6 +20,7 @@ mod occlusion;
 mod reference;
 mod render;
 mod resolution;
+mod robustness;
 mod sao;
 mod separable_hbao;
 mod spatial_filter;

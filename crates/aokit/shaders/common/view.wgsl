@@ -48,7 +48,11 @@ fn view_position(pixel: vec2<f32>, linear_depth: f32) -> vec3<f32> {
 
 // Unit vector from a view-space point towards the eye.
 fn view_direction(position: vec3<f32>) -> vec3<f32> {
-    return normalize(mix(-position, vec3<f32>(0.0, 0.0, 1.0), view.orthographic));
+    // Scaled to its largest component first: at tiny depths (1e-30) the squared length
+    // underflows to 0 and normalize would return NaN, which GTAO's slices turn into AO 0.
+    let toward_eye = mix(-position, vec3<f32>(0.0, 0.0, 1.0), view.orthographic);
+    let largest = max(max(abs(toward_eye.x), abs(toward_eye.y)), abs(toward_eye.z));
+    return normalize(toward_eye / select(1.0, largest, largest > 0.0));
 }
 
 // Screen-space length in pixels of `world_length` seen at `linear_depth`.

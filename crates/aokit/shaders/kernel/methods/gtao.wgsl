@@ -14,14 +14,17 @@ fn search_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32
     var horizon_cos = low_cos;
     for (var step = 0u; step < ao.steps; step++) {
         let sample = side_sample(s, slice, side, step_distance(step, ao.steps, jitter, s.radius_px));
-        if sample.w == 0.0 {
+        // A sample lies off the shaded point (side_sample), so the distance is positive, but its
+        // square underflows to 0 at tiny depths (1e-30): the inverse square root is then
+        // infinite and the horizon NaN, which reads as AO 0. Such a sample says nothing.
+        let d2 = dot(sample.xyz, sample.xyz);
+        if sample.w == 0.0 || d2 == 0.0 {
             continue;
         }
-        // A sample lies off the shaded point (side_sample), so the distance is positive. One
-        // inverse square root gives it and the cosine (on an H100 GTAO `high`'s kernel took
-        // 0.976 to 0.989 of the time of length() and a division).
-        let inverse_distance = inverseSqrt(dot(sample.xyz, sample.xyz));
-        let distance = dot(sample.xyz, sample.xyz) * inverse_distance;
+        // One inverse square root gives the distance and the cosine (on an H100 GTAO `high`'s
+        // kernel took 0.976 to 0.989 of the time of length() and a division).
+        let inverse_distance = inverseSqrt(d2);
+        let distance = d2 * inverse_distance;
         // Far samples fade towards the hemisphere's edge, so the radius has no hard rim.
         let sample_cos = mix(low_cos, dot(sample.xyz, s.v) * inverse_distance,
                              falloff_weight(s, distance));
@@ -41,13 +44,16 @@ fn march_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32)
     for (var step = 0u; step < STEPS; step++) {
         let distance_px = step_distance(step, STEPS, jitter, s.radius_px);
         let sample = march_sample(s, m, slice.tangent, distance_px);
-        let inverse_distance = inverseSqrt(dot(sample.xyz, sample.xyz));
-        let distance = dot(sample.xyz, sample.xyz) * inverse_distance;
+        let d2 = dot(sample.xyz, sample.xyz);
+        let inverse_distance = inverseSqrt(d2);
+        let distance = d2 * inverse_distance;
         let sample_cos = mix(low_cos, dot(sample.xyz, s.v) * inverse_distance,
                              falloff_weight(s, distance));
         let raised = select(mix(horizon_cos, sample_cos, ao.thickness), sample_cos,
                             sample_cos >= horizon_cos);
-        horizon_cos = select(horizon_cos, raised, sample.w > 0.0);
+        // As in search_horizon, a squared distance that underflowed to 0 (depths near 1e-30)
+        // makes `raised` NaN: such a sample leaves the horizon as it was.
+        horizon_cos = select(horizon_cos, raised, sample.w > 0.0 && d2 > 0.0);
     }
     return horizon_cos;
 }
