@@ -80,6 +80,7 @@ fn filter_axis(s: &SpatialSettings, frame: &Frame, ao: &[f32], axis: usize) -> V
 fn the_gpu_filter_matches_the_cpu_one_on_rendered_frames() {
     let base = SpatialSettings {
         enabled: true,
+        kind: SpatialKind::Bilateral,
         ..SpatialSettings::default()
     };
     let filters = [
@@ -272,6 +273,7 @@ fn the_guided_filter_scores_against_the_reference_like_the_bilateral_one() {
         };
         let on = SpatialSettings {
             enabled: true,
+            kind: SpatialKind::Bilateral,
             ..SpatialSettings::default()
         };
         let scores = [
