@@ -104,6 +104,10 @@ pub enum ProjectionError {
     /// The NDC offset of the view axis is not finite.
     #[error("projection NDC offset must be finite, got {0}")]
     NdcOffset(Vec2),
+    /// A matrix given to [`Projection::from_matrix`] is not a perspective or orthographic
+    /// projection of the shape it reads.
+    #[error("not a projection matrix aokit can read: {0}")]
+    Matrix(String),
 }
 
 impl Projection {
@@ -147,6 +151,101 @@ impl Projection {
             reverse_z: true,
             ndc_offset: Vec2::ZERO,
         }
+    }
+
+    /// The projection of a renderer's clip-from-view matrix, in wgpu's clip space (depth 0 to 1,
+    /// y up, as glam's `camera::rh::proj::directx` functions make it, and as Direct3D and Metal
+    /// use): perspective or orthographic (told by its last row), standard or reverse-Z
+    /// (by which way depth runs), a finite or infinite far plane, and an off-centre or
+    /// jittered view axis ([`Projection::ndc_offset`]). The result is checked
+    /// ([`Projection::validate`]) and must give back `matrix`; a matrix with a rotation, a
+    /// skew or a depth that does not run between the planes is an error naming the reason.
+    ///
+    /// An OpenGL-convention matrix (depth -1 to 1) reads as one with the same far plane and a
+    /// near plane about twice its own: the projection of the same depth buffer, had wgpu kept
+    /// the depths that its clip space puts below 0.
+    ///
+    /// ```
+    /// use aokit::{Projection, ProjectionKind};
+    /// // The matrix a renderer already has, here an infinite reverse-Z perspective.
+    /// let matrix = glam::camera::rh::proj::directx::perspective_infinite_reverse(1.0, 16.0 / 9.0, 0.1);
+    /// let p = Projection::from_matrix(matrix)?;
+    /// assert!(p.reverse_z && p.far.is_none());
+    /// assert!((p.near - 0.1).abs() < 1e-6 && (p.aspect - 16.0 / 9.0).abs() < 1e-5);
+    /// assert!(matches!(p.kind, ProjectionKind::Perspective { fov_y } if (fov_y - 1.0).abs() < 1e-5));
+    /// // A view matrix by mistake.
+    /// let view = glam::camera::rh::view::look_at_mat4(glam::Vec3::ONE, glam::Vec3::ZERO, glam::Vec3::Y);
+    /// assert!(Projection::from_matrix(view).is_err());
+    /// # Ok::<(), aokit::ProjectionError>(())
+    /// ```
+    pub fn from_matrix(matrix: Mat4) -> Result<Self, ProjectionError> {
+        let bad = |why: &str| ProjectionError::Matrix(why.to_string());
+        if !matrix.is_finite() {
+            return Err(bad("it holds a NaN or an infinity"));
+        }
+        let [c0, c1, c2, c3] = matrix.to_cols_array_2d().map(Vec4::from_array);
+        let (x_scale, y_scale) = (c0.x, c1.y);
+        if x_scale == 0.0 || y_scale == 0.0 {
+            return Err(bad("it scales x or y by 0"));
+        }
+        let aspect = y_scale / x_scale;
+        // Perspective: clip w = -view z (last row 0, 0, -1, 0); orthographic: w = 1.
+        let (kind, a, b, ndc_offset) = if c2.w == -1.0 && c3.w == 0.0 {
+            let fov_y = 2.0 * (1.0 / y_scale).atan();
+            let kind = ProjectionKind::Perspective { fov_y };
+            (kind, c2.z, c3.z, -Vec2::new(c2.x, c2.y))
+        } else if c2.w == 0.0 && c3.w == 1.0 {
+            let kind = ProjectionKind::Orthographic {
+                height: 2.0 / y_scale,
+            };
+            (kind, c2.z, c3.z, Vec2::new(c3.x, c3.y))
+        } else {
+            return Err(bad(
+                "its last row is neither (0, 0, -1, 0) (perspective) nor (0, 0, 0, 1) \
+                 (orthographic); pass the projection alone, not view times projection",
+            ));
+        };
+        // Depth is ndc = a * z + b over w (depth_terms); which of the planes reads 0 tells
+        // the direction.
+        let (reverse_z, near, far) = match kind {
+            ProjectionKind::Perspective { .. } => {
+                // ndc = b / d - a at distance d: it falls with distance when b > 0.
+                let reverse_z = b > 0.0;
+                let (near, far) = if reverse_z {
+                    (b / (1.0 + a), b / a)
+                } else {
+                    (b / a, b / (1.0 + a))
+                };
+                (reverse_z, near, Some(far).filter(|f| f.is_finite()))
+            }
+            ProjectionKind::Orthographic { .. } => {
+                let reverse_z = a > 0.0;
+                let (near, far) = if reverse_z {
+                    ((b - 1.0) / a, b / a)
+                } else {
+                    (b / a, (b - 1.0) / a)
+                };
+                (reverse_z, near, Some(far))
+            }
+        };
+        let projection = Self {
+            kind,
+            aspect,
+            near,
+            far,
+            reverse_z,
+            ndc_offset,
+        };
+        projection.validate()?;
+        let rebuilt = projection.clip_from_view();
+        let tolerance = 1e-4 * matrix.abs().to_cols_array().into_iter().fold(1.0, f32::max);
+        if !rebuilt.abs_diff_eq(matrix, tolerance) {
+            return Err(bad(
+                "it has terms a projection of a view-space point does not (a rotation, a skew \
+                 or a translation; pass the projection alone, not view times projection)",
+            ));
+        }
+        Ok(projection)
     }
 
     /// The same projection with the given depth direction.
@@ -505,6 +604,108 @@ mod tests {
                 .map(|p| p.with_jitter(Vec2::new(0.5, -0.25), [1920, 1080])),
         );
         out
+    }
+
+    #[test]
+    fn from_matrix_gives_back_every_projection() {
+        for p in all_projections() {
+            let read = Projection::from_matrix(p.clip_from_view()).unwrap();
+            assert!(
+                read.clip_from_view()
+                    .abs_diff_eq(p.clip_from_view(), 1e-4 * 2000.0),
+                "{p:?} read as {read:?}"
+            );
+            assert_eq!(
+                (read.reverse_z, read.is_orthographic(), read.far.is_some()),
+                (p.reverse_z, p.is_orthographic(), p.far.is_some()),
+                "{p:?} read as {read:?}"
+            );
+            assert!(
+                (read.near - p.near).abs() < 1e-4 * p.near,
+                "{p:?}: {read:?}"
+            );
+            if let (Some(a), Some(b)) = (read.far, p.far) {
+                assert!((a - b).abs() < 1e-3 * b, "{p:?}: {read:?}");
+            }
+            assert!((read.aspect - p.aspect).abs() < 1e-5, "{p:?}: {read:?}");
+            assert!((read.ndc_offset - p.ndc_offset).abs().max_element() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn from_matrix_reads_glams_projections() {
+        let (fov, aspect, near, far) = (1.2, 1.5, 0.1, 300.0);
+        use glam::camera::rh::proj::directx;
+        let cases = [
+            (
+                directx::perspective(fov, aspect, near, far),
+                false,
+                Some(far),
+            ),
+            (
+                directx::perspective_infinite(fov, aspect, near),
+                false,
+                None,
+            ),
+            (
+                directx::perspective_infinite_reverse(fov, aspect, near),
+                true,
+                None,
+            ),
+        ];
+        for (matrix, reverse_z, far) in cases {
+            let p = Projection::from_matrix(matrix).unwrap();
+            assert_eq!(p.reverse_z, reverse_z, "{matrix}");
+            assert!((p.near - near).abs() < 1e-5, "{p:?}");
+            assert_eq!(p.far.is_some(), far.is_some(), "{p:?}");
+            // The same linear depth back from every depth the matrix writes.
+            for distance in [0.2, 1.0, 7.5, 120.0] {
+                let ndc = matrix.project_point3(Vec3::new(0.0, 0.0, -distance)).z;
+                assert!(
+                    (p.linear_depth(ndc) - distance).abs() < 2e-3 * distance,
+                    "{p:?}"
+                );
+            }
+        }
+        let ortho = directx::orthographic(-3.0, 3.0, -2.0, 2.0, 0.5, 50.0);
+        let p = Projection::from_matrix(ortho).unwrap();
+        assert!(p.is_orthographic() && !p.reverse_z);
+        assert!((p.near - 0.5).abs() < 1e-5 && (p.far.unwrap() - 50.0).abs() < 1e-3);
+        assert!(
+            matches!(p.kind, ProjectionKind::Orthographic { height } if (height - 4.0).abs() < 1e-5)
+        );
+    }
+
+    #[test]
+    fn from_matrix_names_what_is_wrong() {
+        let message = |m: Mat4| Projection::from_matrix(m).unwrap_err().to_string();
+        let p = glam::camera::rh::proj::directx::perspective(1.0, 1.0, 0.1, 100.0);
+        assert!(message(Mat4::IDENTITY * 0.0).contains("by 0"));
+        let mut homogeneous = p;
+        homogeneous.w_axis.w = 0.5;
+        assert!(message(homogeneous).contains("last row"));
+        // A rotation has the orthographic last row, but no plane at depth 0 in front.
+        assert!(Projection::from_matrix(Mat4::from_rotation_y(0.3)).is_err());
+        let view = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0));
+        assert!(
+            message(p * view).contains("view times projection"),
+            "{}",
+            message(p * view)
+        );
+        let mut skewed = p;
+        skewed.y_axis.x = 0.3;
+        assert!(message(skewed).contains("a skew"), "{}", message(skewed));
+        let mut nan = p;
+        nan.x_axis.x = f32::NAN;
+        assert!(message(nan).contains("NaN"));
+        // Depth 0 behind the eye: the near plane would be there.
+        let mut behind = p;
+        behind.w_axis.z = 0.05;
+        assert!(
+            message(behind).contains("near plane"),
+            "{}",
+            message(behind)
+        );
     }
 
     #[test]
