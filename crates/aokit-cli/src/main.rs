@@ -67,6 +67,7 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    quiet_wayland_probe();
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => render::run(&args),
@@ -86,6 +87,18 @@ fn main() -> ExitCode {
             // clap's usage errors, so scripts test one value.
             ExitCode::from(2)
         }
+    }
+}
+
+/// Points `XDG_RUNTIME_DIR` at the temporary directory where it is unset, as on a headless
+/// machine or in a container: wgpu's GL backend probes for a Wayland display while it looks for
+/// adapters, and libwayland then prints "XDG_RUNTIME_DIR is invalid or not set" to stderr, once
+/// per probe. With a directory there it finds no display and says nothing.
+fn quiet_wayland_probe() {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        // SAFETY: called first thing in `main`, before any thread exists that could read the
+        // environment concurrently.
+        unsafe { std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir()) };
     }
 }
 

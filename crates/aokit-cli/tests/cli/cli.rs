@@ -40,6 +40,17 @@ fn render_without_arguments_writes_the_default_scene_to_aokit_out() {
 }
 
 #[test]
+fn a_machine_without_xdg_runtime_dir_gets_no_wayland_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut run = command(dir.path(), &["render", "--size", "32x24"]);
+    run.env_remove("XDG_RUNTIME_DIR");
+    let out = output(&mut run);
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(!stderr.contains("XDG_RUNTIME_DIR"), "{stderr}");
+}
+
+#[test]
 fn gbuffer_export_writes_depth_normals_and_camera() {
     let dir = tempfile::tempdir().unwrap();
     let out = aokit(
