@@ -33,8 +33,8 @@ gtao="--method gtao --preset high"
 configurations=(
     "$gtao --set slice_march=general"
     "$gtao"
-    "$gtao --set slice_march=general --set spatial.enabled=true"
-    "$gtao --set spatial.enabled=true"
+    "$gtao --set slice_march=general --set spatial.enabled=true --set spatial.kind=bilateral"
+    "$gtao --set spatial.enabled=true --set spatial.kind=bilateral"
     "$gtao --set spatial.enabled=true --set spatial.kind=edges"
     "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=0"
 )
@@ -67,7 +67,7 @@ for scene in "${scenes[@]}"; do
 done
 passes=(
     ""
-    "--set spatial.enabled=true"
+    "--set spatial.enabled=true --set spatial.kind=bilateral"
     "--set spatial.enabled=true --set spatial.kind=edges"
     "--set temporal.enabled=true"
     "--set spatial.enabled=true --set temporal.enabled=true"

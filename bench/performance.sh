@@ -37,6 +37,7 @@ done
 passes=(
     ""
     "--set spatial.enabled=true"
+    "--set spatial.enabled=true --set spatial.kind=bilateral"
     "--set temporal.enabled=true"
     "--set spatial.enabled=true --set temporal.enabled=true"
     "--set spatial.enabled=true --set spatial.kind=guided"

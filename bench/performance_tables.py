@@ -24,6 +24,8 @@ SAMPLES = {"low": 4, "medium": 8, "high": 18, "ultra": 54}
 LABELS = {
     "": "(none: GTAO `high`)",
     "--set spatial.enabled=true": "`spatial.enabled=true`",
+    "--set spatial.enabled=true --set spatial.kind=bilateral": "`spatial.kind=bilateral`",
+    "--set spatial.enabled=true --set spatial.kind=edges": "`spatial.kind=edges`",
     "--set temporal.enabled=true": "`temporal.enabled=true`",
     "--set spatial.enabled=true --set temporal.enabled=true": "both filters",
     "--set spatial.enabled=true --set spatial.kind=guided": "`spatial.kind=guided`",
