@@ -5,28 +5,42 @@ use super::text::{columns, fixed, has_sequence, html, row_cells, signed};
 use super::{MethodResult, Report, ViewResult};
 use crate::base64;
 
-/// Layout only; images scale to their boxes with visible pixels so small renders stay readable.
+/// Layout only. Every AO, error and reference image shows at one width, `--img`, which the
+/// zoom buttons set; images keep visible pixels so small renders stay readable. The page has no
+/// script: clicking a method's AO ticks a hidden checkbox whose state shows the reference in
+/// its place, and the zoom buttons are radio inputs whose state sets `--img`.
 const STYLE: &str = "
-body { font: 15px/1.4 system-ui, sans-serif; color: #222; background: #fff; margin: 0 auto; max-width: 1200px; padding: 12px 16px; }
+body { font: 15px/1.4 system-ui, sans-serif; color: #222; background: #fff; margin: 0 auto; max-width: 1400px; padding: 12px 16px; }
 h1 { font-size: 1.5em; margin: 0.3em 0; }
 h2 { font-size: 1.25em; border-bottom: 1px solid #ccc; margin-top: 1.4em; }
 h3 { font-size: 1.05em; margin: 1em 0 0.3em; }
 ul.notes { color: #444; padding-left: 1.2em; margin: 0.3em 0; }
 figure { margin: 0; }
 figcaption { font-size: 0.85em; color: #444; margin-top: 2px; }
-img.px { image-rendering: pixelated; display: block; width: 100%; height: auto; background: #808080; }
+main { --img: 320px; }
+#zoom-2:checked ~ main { --img: 640px; }
+#zoom-4:checked ~ main { --img: 1280px; }
+.zoom { position: sticky; top: 0; background: #fff; padding: 4px 0; z-index: 1; font-size: 0.9em; }
+input.zoom-choice { display: none; }
+.zoom label { border: 1px solid #999; border-radius: 3px; padding: 1px 8px; margin-left: 4px; cursor: pointer; }
+#zoom-1:checked ~ .zoom label[for=zoom-1], #zoom-2:checked ~ .zoom label[for=zoom-2], #zoom-4:checked ~ .zoom label[for=zoom-4] { background: #222; color: #fff; }
+img.px { image-rendering: pixelated; display: block; width: var(--img); max-width: none; height: auto; background: #808080; }
 .top { display: flex; flex-wrap: wrap; gap: 24px; align-items: flex-end; }
-.reference { width: 400px; max-width: 100%; }
 .legend { width: 320px; max-width: 100%; }
 .legend img { display: block; width: 100%; height: 16px; image-rendering: pixelated; }
 .ticks { display: flex; justify-content: space-between; font-size: 0.8em; }
-.methods { display: flex; flex-wrap: wrap; gap: 16px; margin-top: 16px; }
-.method { width: 560px; max-width: 100%; }
+.methods { display: flex; flex-wrap: wrap; gap: 16px; margin-top: 16px; overflow-x: auto; }
 .pair { display: flex; gap: 6px; }
-.pair > div { flex: 1; min-width: 0; font-size: 0.8em; color: #555; }
+.pair > div { font-size: 0.8em; color: #555; }
+label.flip { display: block; cursor: pointer; }
+label.flip input { display: none; }
+label.flip img.reference-flip, label.flip input:checked ~ img.ao { display: none; }
+label.flip input:checked ~ img.reference-flip { display: block; }
 table { border-collapse: collapse; font-variant-numeric: tabular-nums; font-size: 0.9em; }
 th, td { padding: 3px 8px; border-bottom: 1px solid #ddd; text-align: right; }
 th:nth-child(-n+2), td:nth-child(-n+2) { text-align: left; }
+table.summary th:nth-child(2), table.summary td:nth-child(2) { text-align: right; }
+td.best { font-weight: 700; }
 svg.chart { max-width: 100%; height: auto; }
 .red { color: #c8141e; font-weight: 600; }
 .blue { color: #1946c8; font-weight: 600; }
@@ -40,18 +54,75 @@ fn img(class: &str, png: &[u8], alt: &str) -> String {
     )
 }
 
-fn method_figure(m: &MethodResult) -> String {
+/// A method's AO, which shows the view's reference in its place while clicked on, and its
+/// error map beside it.
+fn method_figure(m: &MethodResult, reference_png: &[u8]) -> String {
     let name = format!("{} / {}", m.method, m.preset);
     format!(
-        "<figure class=\"method\"><div class=\"pair\"><div>{}AO</div><div>{}Error</div></div>\
+        "<figure class=\"method\"><div class=\"pair\"><div>\
+         <label class=\"flip\" title=\"Click to flip between this AO and the reference\">\
+         <input type=\"checkbox\">{}{}</label>AO (click: reference)</div><div>{}Error</div></div>\
          <figcaption><b>{}</b>: RMSE {}, bias {}, SSIM {}</figcaption></figure>\n",
-        img("px", &m.ao_png, &format!("AO of {name}")),
+        img("px ao", &m.ao_png, &format!("AO of {name}")),
+        img("px reference-flip", reference_png, "Reference AO"),
         img("px", &m.error_png, &format!("Signed error of {name}")),
         html(&name),
         fixed(m.all.rmse, 4),
         signed(m.all.bias, 4),
         fixed(m.all.ssim, 4),
     )
+}
+
+/// The RMSE of every method in every view, one row per view, the lowest of each row in bold:
+/// what the page says, before its images.
+fn summary(report: &Report) -> String {
+    let mut columns: Vec<String> = Vec::new();
+    for m in report.views.iter().flat_map(|v| &v.methods) {
+        let name = format!("{} / {}", m.method, m.preset);
+        if !columns.contains(&name) {
+            columns.push(name);
+        }
+    }
+    if columns.is_empty() {
+        return String::new();
+    }
+    let mut out = String::from(
+        "<h2>Summary</h2>\n<p>RMSE against the reference over surface pixels; the lowest of each \
+         view in bold.</p>\n<table class=\"summary\">\n<thead><tr><th>View</th>",
+    );
+    for c in &columns {
+        out.push_str(&format!("<th>{}</th>", html(c)));
+    }
+    out.push_str("</tr></thead>\n<tbody>\n");
+    for (i, view) in report.views.iter().enumerate() {
+        let rmse = |c: &String| {
+            view.methods
+                .iter()
+                .find(|m| &format!("{} / {}", m.method, m.preset) == c)
+                .map(|m| m.all.rmse)
+        };
+        let best = columns
+            .iter()
+            .filter_map(rmse)
+            .filter(|v| v.is_finite())
+            .fold(f64::INFINITY, f64::min);
+        out.push_str(&format!(
+            "<tr><td><a href=\"#view-{i}\">{}</a></td>",
+            html(&view.name)
+        ));
+        for c in &columns {
+            match rmse(c) {
+                Some(v) if v == best => {
+                    out.push_str(&format!("<td class=\"best\">{}</td>", fixed(v, 4)))
+                }
+                Some(v) => out.push_str(&format!("<td>{}</td>", fixed(v, 4))),
+                None => out.push_str("<td></td>"),
+            }
+        }
+        out.push_str("</tr>\n");
+    }
+    out.push_str("</tbody>\n</table>\n");
+    out
 }
 
 fn table(methods: &[MethodResult]) -> String {
@@ -77,10 +148,10 @@ fn table(methods: &[MethodResult]) -> String {
     out
 }
 
-fn view_section(report: &Report, view: &ViewResult) -> String {
+fn view_section(report: &Report, index: usize, view: &ViewResult) -> String {
     let range = report.error_range;
     let mut out = format!(
-        "<section>\n<h2>{}</h2>\n<div class=\"top\">\n",
+        "<section id=\"view-{index}\">\n<h2>{}</h2>\n<div class=\"top\">\n",
         html(&view.name)
     );
     out.push_str(&format!(
@@ -103,7 +174,7 @@ fn view_section(report: &Report, view: &ViewResult) -> String {
     }
     out.push_str("<div class=\"methods\">\n");
     for m in &view.methods {
-        out.push_str(&method_figure(m));
+        out.push_str(&method_figure(m, &view.reference_png));
     }
     out.push_str("</div>\n<h3>Metrics</h3>\n");
     out.push_str(&table(&view.methods));
@@ -137,9 +208,17 @@ pub(super) fn render(report: &Report) -> String {
          edge columns use only pixels near depth edges, grazing ones only surfaces seen nearly edge-on. \
          Bias &gt; 0 means too bright.</p>\n",
     );
-    for view in &report.views {
-        out.push_str(&view_section(report, view));
+    out.push_str(&summary(report));
+    out.push_str(
+        "<input class=\"zoom-choice\" type=\"radio\" name=\"zoom\" id=\"zoom-1\" checked>\
+         <input class=\"zoom-choice\" type=\"radio\" name=\"zoom\" id=\"zoom-2\">\
+         <input class=\"zoom-choice\" type=\"radio\" name=\"zoom\" id=\"zoom-4\">\n\
+         <div class=\"zoom\">Images: <label for=\"zoom-1\">1x</label><label for=\"zoom-2\">2x</label>\
+         <label for=\"zoom-4\">4x</label> &middot; click a method's AO to flip to the reference</div>\n<main>\n",
+    );
+    for (i, view) in report.views.iter().enumerate() {
+        out.push_str(&view_section(report, i, view));
     }
-    out.push_str("</body>\n</html>\n");
+    out.push_str("</main>\n</body>\n</html>\n");
     out
 }

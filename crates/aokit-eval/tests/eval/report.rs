@@ -118,6 +118,44 @@ fn markdown_has_a_table_per_view() {
 }
 
 #[test]
+fn html_leads_with_a_summary_and_flips_and_zooms_without_scripts() {
+    let html = report().html();
+    let summary = html
+        .find("<table class=\"summary\">")
+        .expect("a summary table");
+    let first_view = html
+        .find("<section id=\"view-0\">")
+        .expect("the first view");
+    assert!(summary < first_view, "the summary comes before the views");
+    // One row per view, linked to its section, with the lower RMSE of each in bold.
+    let table = &html[summary..html[summary..].find("</table>").unwrap() + summary];
+    assert!(
+        table.contains("<a href=\"#view-0\">room / default</a>"),
+        "{table}"
+    );
+    assert!(
+        table.contains("<a href=\"#view-1\">stairs, &quot;top&quot;</a>"),
+        "{table}"
+    );
+    assert_eq!(table.matches("<td class=\"best\">").count(), 2, "{table}");
+    assert!(table.contains("<td class=\"best\">0.0200</td>"), "{table}");
+    assert!(table.contains("<td class=\"best\">0.0000</td>"), "{table}");
+    // Every method's AO flips to its view's reference: the reference's image follows it.
+    assert_eq!(html.matches("<label class=\"flip\"").count(), 4);
+    assert_eq!(html.matches("class=\"px reference-flip\"").count(), 4);
+    // Three zoom levels set one image width for every image.
+    for level in ["zoom-1", "zoom-2", "zoom-4"] {
+        assert!(html.contains(&format!("id=\"{level}\"")), "{level}");
+        assert!(
+            html.contains(&format!("<label for=\"{level}\">")),
+            "{level}"
+        );
+    }
+    assert!(html.contains("width: var(--img)"));
+    assert!(!html.contains("<script"));
+}
+
+#[test]
 fn html_is_self_contained_and_escaped() {
     let html = report().html();
     assert!(html.starts_with("<!DOCTYPE html>"));
@@ -131,10 +169,10 @@ fn html_is_self_contained_and_escaped() {
     assert!(html.contains("<title>AO &lt;compare&gt; &amp; friends</title>"));
     assert!(html.contains("stairs, &quot;top&quot;"));
     assert!(html.contains("image-rendering: pixelated"));
-    // 2 references + 4 methods x 2 images + 2 legends.
+    // 2 references + 4 methods x 3 images (AO, its reference to flip to, error) + 2 legends.
     assert_eq!(
         html.matches("src=\"data:image/png;base64,").count(),
-        2 + 8 + 2
+        2 + 12 + 2
     );
     assert!(html.contains("<span>-0.25</span><span>0</span><span>+0.25</span>"));
     for label in ["gtao / low", "gtao / high", "hbao / medium", "ssao / ultra"] {
