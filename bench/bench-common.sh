@@ -29,7 +29,7 @@ bench_json() {
         shift
     done
     shift
-    "$aokit" bench "${options[@]}" --frames "$frames" --warmup "$warmup" --json --compare "$@" \
+    "$aokit" bench "${options[@]}" --timing-frames "$frames" --warmup "$warmup" --json --compare "$@" \
         >"$out/$name.json"
     echo "wrote $out/$name.json" >&2
 }

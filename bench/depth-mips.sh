@@ -24,7 +24,7 @@ for variant in "${variants[@]}"; do
     if [ "$variant" != off ]; then
         settings=(--set "depth_mips=${variant%-*}" --set "depth_mip_offset=${variant#*-}")
     fi
-    target/release/aokit compare "${views[@]}" --methods "$methods" --presets high \
+    target/release/aokit compare "${views[@]}" --method "$methods" --preset high \
         --size "$size" --spp 128 --timing-frames 1 "${settings[@]}" \
         --out "$out/$variant" >/dev/null
 done

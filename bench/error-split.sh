@@ -41,7 +41,7 @@ cargo build --quiet --release -p aokit-cli
 for method in ${methods//,/ }; do
     for stage in high expectation converged; do
         # shellcheck disable=SC2046 # the settings are separate words on purpose
-        target/release/aokit compare "${views[@]}" --methods "$method" --presets high \
+        target/release/aokit compare "${views[@]}" --method "$method" --preset high \
             --size 480x270 --spp 512 --timing-frames 1 $(stage_settings "$method" "$stage") \
             --out "$out/$method-$stage" >/dev/null
     done

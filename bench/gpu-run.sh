@@ -44,7 +44,7 @@ configurations=(
 # peer runs through naga alone and the reason goes to OUT/passthrough.txt.
 if [ -d "$peer" ]; then
     shader=""
-    if ! "$aokit" bench --scene room --size 64x64 --frames 1 --warmup 0 --peer "xegtao=$peer" \
+    if ! "$aokit" bench --scene room --size 64x64 --timing-frames 1 --warmup 0 --peer "xegtao=$peer" \
         --set peer.shader=passthrough >/dev/null 2>"$out/passthrough.txt"; then
         echo "gpu-run: XeGTAO passed through failed (see $out/passthrough.txt): naga only" >&2
         shader=" --set peer.shader=naga"

@@ -26,7 +26,7 @@ compare() {
     shift 2
     cargo run --quiet --release -p aokit-cli -- compare \
         --view room --view stairs --view thin --view scenes/sponza.obj@atrium \
-        --methods "$(IFS=,; echo "${methods[*]}")" --presets high --timing-frames 0 \
+        --method "$(IFS=,; echo "${methods[*]}")" --preset high --timing-frames 0 \
         --set noise.kind="$kind" "$@" --out "$out/$kind/$name" >/dev/null
 }
 

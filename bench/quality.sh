@@ -15,9 +15,9 @@ compare() { # compare ARGS...: every view at every preset, at the tables' size a
         --view room --view stairs --view thin --view open \
         --view scenes/sponza.obj@atrium --view scenes/sponza.obj@arcade \
         --view scenes/sponza.obj@gallery --view scenes/sponza.obj@floor \
-        --presets low,medium,high,ultra --size 480x270 --spp 512 "$@" >/dev/null
+        --preset low,medium,high,ultra --size 480x270 --spp 512 "$@" >/dev/null
 }
-compare --methods "$methods" --out "$out"
+compare --method "$methods" --out "$out"
 
 # docs/quality.md: the full tables, and the reference, GTAO and VBAO with their error maps for
 # three views.
@@ -119,7 +119,7 @@ splice pictures "$out/pictures.md"
 variant() { # variant METHOD NAME IMAGES SUFFIX ARGS...: one more error table and pictures
     local method=$1 name=$2 images=$3 suffix=$4
     shift 4
-    compare --methods "$method" "$@" --out "$out/$name"
+    compare --method "$method" "$@" --out "$out/$name"
     awk -v m="## $method" '$0 == m {on = 1; next} /^## / {on = 0} on' \
         "$out/$name/metrics-by-method.md" > "$out/errors-$name.md"
     splice "errors:$name" "$out/errors-$name.md"

@@ -37,8 +37,9 @@ pub struct BenchArgs {
     /// --set spatial.enabled=true its denoiser.
     #[arg(long, value_name = "NAME=DIR", conflicts_with = "method")]
     pub peer: Option<PeerSpec>,
-    /// Timed frames; the statistics are over these.
-    #[arg(long, value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES), allow_negative_numbers = true)]
+    /// Timed frames; the statistics are over these (`--frames` before; `compare` names its
+    /// own the same).
+    #[arg(long = "timing-frames", alias = "frames", value_name = "N", default_value_t = 100, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES), allow_negative_numbers = true)]
     pub frames: u32,
     /// Untimed frames before the timed ones (shader compilation, caches, temporal history).
     #[arg(long, value_name = "N", default_value_t = 10, value_parser = clap::value_parser!(u32).range(0..=MAX_FRAMES), allow_negative_numbers = true)]

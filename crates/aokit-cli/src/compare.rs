@@ -45,11 +45,23 @@ pub struct CompareArgs {
     /// Image size (scene views).
     #[arg(long, value_name = "WxH", default_value = "480x270", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
-    /// Methods to score, comma-separated, or `all`.
-    #[arg(long, value_delimiter = ',', default_value = "all")]
+    /// Methods to score, comma-separated, or `all` (`--methods` before).
+    #[arg(
+        long = "method",
+        alias = "methods",
+        value_name = "METHOD,...",
+        value_delimiter = ',',
+        default_value = "all"
+    )]
     pub methods: Vec<String>,
-    /// Presets to score, comma-separated.
-    #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
+    /// Presets to score, comma-separated (`--presets` before).
+    #[arg(
+        long = "preset",
+        alias = "presets",
+        value_name = "PRESET,...",
+        value_delimiter = ',',
+        default_value = "low,medium,high,ultra"
+    )]
     pub presets: Vec<Preset>,
     /// AO radius (default: the scene's suggested radius, else 1); the reference uses it too.
     #[arg(long, allow_negative_numbers = true)]
@@ -76,7 +88,7 @@ pub struct CompareArgs {
     /// How the camera moves over --frames: still, orbit, dolly or strafe (as `aokit render`).
     #[arg(long, value_name = "PATH", default_value = "still")]
     pub path: CameraPath,
-    /// Also score a peer, NAME=DIR, at each of --presets: `xegtao=` a checkout of XeGTAO, or a
+    /// Also score a peer, NAME=DIR, at each of --preset: `xegtao=` a checkout of XeGTAO, or a
     /// folder `aokit peer compile` wrote (docs/peers.md); --set spatial.enabled=true turns its
     /// denoiser on, --set peer.denoise_passes=N sets its passes.
     #[arg(long, value_name = "NAME=DIR")]
@@ -572,10 +584,18 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     check_out_dir(&args.out)?;
     let methods = methods(&args.methods)?;
     if methods.is_empty() || args.presets.is_empty() {
-        bail!("--methods and --presets need at least one entry each");
+        bail!("--method and --preset need at least one entry each");
     }
     if args.timing_frames > 1000 {
         bail!("--timing-frames {} is more than 1000", args.timing_frames);
+    }
+    let temporal = args
+        .overrides
+        .apply(&AoSettings::default(), None)?
+        .temporal
+        .enabled;
+    for note in crate::sequence::single_frame_notes(args.frames, args.path, temporal) {
+        eprintln!("note: {note}");
     }
     let cache_dir = args.cache.clone().unwrap_or_else(cache::default_dir);
     let gpu = if args.peer.is_some() {

@@ -66,8 +66,40 @@ enum Command {
     Settings(settings_list::SettingsListArgs),
 }
 
+/// Flags renamed so that one name means one thing in every subcommand: (subcommand, old
+/// spelling, new one). The old spellings still parse (clap aliases) and draw a warning.
+const RENAMED_FLAGS: &[(&str, &str, &str)] = &[
+    ("compare", "--methods", "--method"),
+    ("compare", "--presets", "--preset"),
+    ("tune", "--methods", "--method"),
+    ("tune", "--presets", "--preset"),
+    ("bench", "--frames", "--timing-frames"),
+];
+
+/// Warns about each renamed flag `args` (the command line, program name first) spells the old
+/// way.
+fn warn_renamed_flags(args: &[String]) {
+    let Some(subcommand) = args.get(1) else {
+        return;
+    };
+    for (command, old, new) in RENAMED_FLAGS {
+        let used = args[2..].iter().any(|a| {
+            a == old
+                || a.strip_prefix(old)
+                    .is_some_and(|rest| rest.starts_with('='))
+        });
+        if subcommand == command && used {
+            eprintln!(
+                "warning: `aokit {command} {old}` is now `{new}`, as in the other subcommands; \
+                 the old name still works for now"
+            );
+        }
+    }
+}
+
 fn main() -> ExitCode {
     quiet_wayland_probe();
+    warn_renamed_flags(&std::env::args().collect::<Vec<_>>());
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => render::run(&args),

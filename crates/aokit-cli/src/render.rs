@@ -191,6 +191,11 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             settings.method.name()
         );
     }
+    for note in
+        crate::sequence::single_frame_notes(args.frames, args.path, settings.temporal.enabled)
+    {
+        eprintln!("note: {note}");
+    }
     if args.animate && scene.moving_parts.is_empty() {
         eprintln!(
             "note: `{}` has no moving parts: --animate changes nothing",

@@ -5,7 +5,31 @@ use aokit::Projection;
 use aokit::projection::pixel_to_ndc;
 use aokit_eval::{Metrics, SequenceMetrics, compare as score};
 use aokit_reference::ReferenceImage;
+use aokit_scene::CameraPath;
 use glam::{Mat4, Vec2};
+
+/// A note for each sequence option that changes nothing over `frames` frames: a camera path
+/// other than `still`, or the temporal filter, on a single frame.
+pub fn single_frame_notes(frames: u32, path: CameraPath, temporal: bool) -> Vec<String> {
+    let mut notes = Vec::new();
+    if frames > 1 {
+        return notes;
+    }
+    if path != CameraPath::Still {
+        notes.push(format!(
+            "--path {} moves the camera over --frames N; one frame does not move",
+            path.name()
+        ));
+    }
+    if temporal {
+        notes.push(
+            "the temporal filter accumulates over a sequence (--frames N); one frame is its \
+             own history and comes out as the kernel made it"
+                .to_string(),
+        );
+    }
+    notes
+}
 
 /// Relative depth difference above which a pixel's surface was not what the previous frame
 /// showed there: the same threshold the temporal filter rejects history with.

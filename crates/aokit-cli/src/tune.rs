@@ -43,14 +43,23 @@ pub struct TuneArgs {
     /// PostProcessAmbientOcclusion.usf (Epic Games) gives them and Unity's MSVO defaults (Unity
     /// Post-processing Stack v2). `vbao` is tuned twice: as it is, and measuring its occluders
     /// from the back faces (the presets of `AoSettings::preset_with_back_faces`).
+    /// (`--methods` before.)
     #[arg(
-        long,
+        long = "method",
+        alias = "methods",
+        value_name = "METHOD,...",
         value_delimiter = ',',
         default_value = "ssao,hbao,hbao-plus,gtao,vbao"
     )]
     pub methods: Vec<String>,
-    /// Presets (cost levels) to tune, comma-separated.
-    #[arg(long, value_delimiter = ',', default_value = "low,medium,high,ultra")]
+    /// Presets (cost levels) to tune, comma-separated (`--presets` before).
+    #[arg(
+        long = "preset",
+        alias = "presets",
+        value_name = "PRESET,...",
+        value_delimiter = ',',
+        default_value = "low,medium,high,ultra"
+    )]
     pub presets: Vec<Preset>,
     /// Reference rays per pixel.
     #[arg(long, default_value_t = 256, value_parser = crate::reference::parse_spp, allow_negative_numbers = true)]
@@ -666,10 +675,10 @@ pub fn run(args: &TuneArgs) -> Result<()> {
     crate::export::check_out_dir(&args.out)?;
     let mut methods = methods(&args.methods)?;
     // hbao-plus takes hbao's split and vbao is held to GTAO's error, each as this run tuned
-    // them: those two go after the others, whatever order --methods names them in.
+    // them: those two go after the others, whatever order --method names them in.
     methods.sort_by_key(|m| matches!(m, Method::HbaoPlus | Method::Vbao));
     if methods.is_empty() || args.presets.is_empty() {
-        bail!("--methods and --presets need at least one entry each");
+        bail!("--method and --preset need at least one entry each");
     }
     let gpu = open_gpu()?;
     let views = load_views(&gpu, args)?;

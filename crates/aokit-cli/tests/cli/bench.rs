@@ -4,11 +4,18 @@ use std::process::Output;
 
 use serde_json::Value;
 
-use crate::common::{command, output, text};
+use crate::common::{aokit, command, output, text};
 
 /// A tiny, quick run: every test starts from these.
 const TINY: [&str; 8] = [
-    "--size", "64x40", "--frames", "3", "--warmup", "1", "--scene", "room",
+    "--size",
+    "64x40",
+    "--timing-frames",
+    "3",
+    "--warmup",
+    "1",
+    "--scene",
+    "room",
 ];
 
 fn bench(args: &[&str]) -> Output {
@@ -160,7 +167,7 @@ fn compare_gives_one_entry_per_configuration_against_the_first() {
 fn bad_input_is_refused_with_exit_code_2_naming_the_problem() {
     const QUICK: [&str; 4] = ["--warmup", "1", "--size", "64x40"];
     let cases: [(&[&str], &str); 9] = [
-        (&["--frames", "0"], "--frames"),
+        (&["--timing-frames", "0"], "--timing-frames"),
         (&[&QUICK[..], &["--method", "nope"]].concat(), "nope"),
         (&[&QUICK[..], &["--preset", "nope"]].concat(), "nope"),
         (
@@ -170,8 +177,12 @@ fn bad_input_is_refused_with_exit_code_2_naming_the_problem() {
         (&["--size", "0x40"], "at least 1"),
         (&["--size", "20000x40"], "at most"),
         (
-            &[&TINY[..], &["--compare", "--method gtao", "--frames 0"]].concat(),
-            "--frames",
+            &[
+                &TINY[..],
+                &["--compare", "--method gtao", "--timing-frames 0"],
+            ]
+            .concat(),
+            "--timing-frames",
         ),
         (
             &[&TINY[..], &["--compare", "--method gtao", "--size 32x20"]].concat(),
@@ -257,4 +268,23 @@ fn msvo_is_timed_per_level_and_refuses_an_odd_sample_count() {
     let stderr = text(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("msvo.sample_count"), "{stderr}");
+}
+
+#[test]
+fn the_old_frames_flag_still_times_and_says_its_new_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit(
+        dir.path(),
+        &[
+            "bench", "--size", "32x20", "--frames", "2", "--warmup", "0", "--json",
+        ],
+    );
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("`aokit bench --frames` is now `--timing-frames`"),
+        "{stderr}"
+    );
+    let object: Value = serde_json::from_str(&text(&out.stdout)).unwrap();
+    assert_eq!(object["frames"], 2);
 }

@@ -341,3 +341,62 @@ fn debug_views_are_written_as_pngs_and_unknown_ones_refused() {
         text(&out.stderr)
     );
 }
+
+#[test]
+fn old_flag_names_still_parse_and_say_the_new_ones() {
+    let dir = tempfile::tempdir().unwrap();
+    // An unknown method stops the run before any tracing; the warning comes first.
+    let out = aokit(
+        dir.path(),
+        &["compare", "--methods=nope", "--presets", "high"],
+    );
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        stderr.contains("`aokit compare --methods` is now `--method`")
+            && stderr.contains("`aokit compare --presets` is now `--preset`"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("nope"), "{stderr}");
+    let out = aokit(dir.path(), &["tune", "--method", "nope"]);
+    let stderr = text(&out.stderr);
+    assert!(!stderr.contains("warning"), "{stderr}");
+    assert!(stderr.contains("nope"), "{stderr}");
+}
+
+#[test]
+fn sequence_options_on_one_frame_draw_a_note() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit(
+        dir.path(),
+        &[
+            "render",
+            "--size",
+            "32x24",
+            "--path",
+            "orbit",
+            "--set",
+            "temporal.enabled=true",
+        ],
+    );
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("note: --path orbit moves the camera"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("note: the temporal filter accumulates"),
+        "{stderr}"
+    );
+    // Over a sequence both do what they say, without a note.
+    let out = aokit(
+        dir.path(),
+        &[
+            "render", "--size", "32x24", "--frames", "2", "--path", "orbit", "--out", "seq",
+        ],
+    );
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(!stderr.contains("moves the camera"), "{stderr}");
+}

@@ -317,7 +317,7 @@ fn ao_refuses_bad_passes_with_the_reason() {
         (&["reference", "--spp", "0"], "rays per pixel"),
         (&["reference", "--falloff", "cubic"], "cubic"),
         (
-            &["compare", "--inputs", "g", "--methods", "gtao"],
+            &["compare", "--inputs", "g", "--method", "gtao"],
             "reference.exr",
         ),
     ];
@@ -340,13 +340,13 @@ fn compare_scores_gtao_against_a_cached_reference_and_writes_the_report() {
         "compare",
         "--scene",
         "room",
-        "--methods",
+        "--method",
         "gtao",
         "--size",
         "64x40",
         "--spp",
         "64",
-        "--presets",
+        "--preset",
         "low,high",
         "--timing-frames",
         "2",
@@ -422,29 +422,14 @@ fn compare_on_exported_passes_scores_like_compare_on_the_scene() {
     ok(
         d,
         &[
-            "compare",
-            "--inputs",
-            "ref",
-            "--presets",
-            "medium",
-            "--out",
-            "in",
+            "compare", "--inputs", "ref", "--preset", "medium", "--out", "in",
         ],
     );
     ok(
         d,
         &[
-            "compare",
-            "--scene",
-            "stairs",
-            "--size",
-            "64x40",
-            "--spp",
-            "64",
-            "--presets",
-            "medium",
-            "--out",
-            "sc",
+            "compare", "--scene", "stairs", "--size", "64x40", "--spp", "64", "--preset", "medium",
+            "--out", "sc",
         ],
     );
     let maes = |path: &str| -> Vec<(String, f64)> {
@@ -475,9 +460,9 @@ fn compare_on_exported_passes_scores_like_compare_on_the_scene() {
 
     // The traced back faces stand in for the rasterised ones: VBAO measuring its occluders
     // from them scores the same, and differently from its constant thickness.
-    let back_faces = ["--methods", "vbao", "--set", "vbao.back_faces=true"];
+    let back_faces = ["--method", "vbao", "--set", "vbao.back_faces=true"];
     let with = |source: &[&str], out: &str| {
-        let mut args = vec!["compare", "--presets", "medium", "--out", out];
+        let mut args = vec!["compare", "--preset", "medium", "--out", out];
         args.extend(source);
         args.extend(back_faces);
         ok(d, &args);
@@ -512,9 +497,9 @@ fn compare_scores_sequences_along_camera_paths() {
             "compare",
             "--scene",
             "room",
-            "--methods",
+            "--method",
             "gtao",
-            "--presets",
+            "--preset",
             "medium",
             "--size",
             "48x32",

@@ -41,7 +41,15 @@ fn have_compiler() -> bool {
 }
 
 const TINY: [&str; 9] = [
-    "bench", "--size", "64x40", "--frames", "3", "--warmup", "1", "--scene", "room",
+    "bench",
+    "--size",
+    "64x40",
+    "--timing-frames",
+    "3",
+    "--warmup",
+    "1",
+    "--scene",
+    "room",
 ];
 
 /// Pass names of one bench configuration's JSON object, checked to be timed per pass where
@@ -135,9 +143,9 @@ fn compare_scores_the_peer_on_the_same_pixels() {
         "48x32",
         "--spp",
         "16",
-        "--methods",
+        "--method",
         "gtao",
-        "--presets",
+        "--preset",
         "low,high",
         "--timing-frames",
         "1",

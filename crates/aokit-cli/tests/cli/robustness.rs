@@ -80,9 +80,9 @@ fn closing_stdout_early_neither_panics_nor_stops_the_files() {
                 "compare",
                 "--inputs",
                 "ref",
-                "--methods",
+                "--method",
                 "gtao",
-                "--presets",
+                "--preset",
                 "low",
                 "--timing-frames",
                 "1",
@@ -93,7 +93,14 @@ fn closing_stdout_early_neither_panics_nor_stops_the_files() {
         ),
         (
             &[
-                "bench", "--json", "--size", "24x16", "--frames", "1", "--warmup", "0",
+                "bench",
+                "--json",
+                "--size",
+                "24x16",
+                "--timing-frames",
+                "1",
+                "--warmup",
+                "0",
             ],
             "",
         ),
@@ -308,15 +315,7 @@ fn a_nan_in_the_reference_is_refused_naming_the_file() {
     let err = refused(
         d,
         &[
-            "compare",
-            "--inputs",
-            "ref",
-            "--methods",
-            "gtao",
-            "--presets",
-            "low",
-            "--out",
-            "c",
+            "compare", "--inputs", "ref", "--method", "gtao", "--preset", "low", "--out", "c",
         ],
     );
     assert!(
@@ -383,7 +382,7 @@ fn negative_numbers_are_values_not_flags() {
         ),
         (&["render", "--radius", "-1"][..], "radius"),
         (&["render", "--near", "-1"][..], "near plane -1"),
-        (&["bench", "--frames", "-1"][..], "-1"),
+        (&["bench", "--timing-frames", "-1"][..], "-1"),
     ] {
         let err = refused(d, args);
         assert!(!err.contains("unexpected argument"), "{args:?}: {err}");
@@ -415,7 +414,7 @@ fn unclear_messages_now_name_the_problem() {
         d,
         &[
             "bench",
-            "--frames",
+            "--timing-frames",
             "1",
             "--warmup",
             "0",

@@ -13,16 +13,7 @@ use crate::common::{command, ok, output};
 fn tune_room(args: &[&str]) -> (tempfile::TempDir, Value) {
     let dir = tempfile::tempdir().unwrap();
     let tune = [
-        "tune",
-        "--view",
-        "room",
-        "--presets",
-        "low",
-        "--rounds",
-        "1",
-        "--out",
-        "t",
-        "--cache",
+        "tune", "--view", "room", "--preset", "low", "--rounds", "1", "--out", "t", "--cache",
         "cache",
     ];
     ok(&output(command(dir.path(), &tune).args(args)));
@@ -38,7 +29,7 @@ fn tune_writes_its_table_and_never_ends_worse_than_it_started() {
         "64x36",
         "--spp",
         "16",
-        "--methods",
+        "--method",
         // In an order that names each method before the one it depends on, which tune puts
         // right: hbao-plus takes hbao's split, vbao is held to GTAO's error.
         "vbao,hbao-plus,hbao,gtao",
@@ -102,7 +93,7 @@ fn unbounded_tunes_vbao_for_its_mean_error_alone() {
         "48x27",
         "--spp",
         "8",
-        "--methods",
+        "--method",
         "vbao",
         "--unbounded",
     ]);
