@@ -81,6 +81,38 @@ pub struct TuneArgs {
     /// Output directory: tune.md, tune.json, evaluations.csv.
     #[arg(long, value_name = "DIR", default_value = "aokit-tune")]
     pub out: PathBuf,
+    /// Also write what the search found as a settings file that --settings reads: every
+    /// setting of the one method and preset tuned (vbao as it is, not from back faces), but
+    /// the radius, which belongs to the scene.
+    #[arg(long, value_name = "FILE")]
+    pub write_settings: Option<PathBuf>,
+}
+
+/// The settings file `--write-settings` asks for: every setting of `tuned` but the radius, as
+/// TOML that `--settings` reads.
+fn settings_file(tuned: &Tuned) -> Result<String> {
+    let method: Method = tuned.method.parse().map_err(anyhow::Error::msg)?;
+    let preset: Preset = tuned.preset.parse().map_err(anyhow::Error::msg)?;
+    let settings = tuned.tuned.apply(&AoSettings::preset(method, preset), 1.0);
+    // Serialised from the typed value, so that f32 parameters read as they are (0.005, not
+    // 0.004999999888241291); the top-level radius line goes, leaving the scene's.
+    let text = toml::to_string(&settings)?;
+    let mut top_level = true;
+    let body: Vec<&str> = text
+        .lines()
+        .filter(|line| {
+            top_level &= !line.starts_with('[');
+            !(top_level && line.starts_with("radius ="))
+        })
+        .collect();
+    Ok(format!(
+        "# `aokit tune` found these for {} at `{}` (RMSE {:.4} over its views); the radius is\n\
+         # the scene's. Read with --settings FILE.\n{}\n",
+        tuned.method,
+        tuned.preset,
+        tuned.tuned_rmse,
+        body.join("\n")
+    ))
 }
 
 /// The views searched when none is named.
@@ -680,6 +712,12 @@ pub fn run(args: &TuneArgs) -> Result<()> {
     if methods.is_empty() || args.presets.is_empty() {
         bail!("--method and --preset need at least one entry each");
     }
+    if args.write_settings.is_some() && (methods.len() != 1 || args.presets.len() != 1) {
+        bail!(
+            "--write-settings writes the settings of one method at one preset: name one each \
+             with --method and --preset"
+        );
+    }
     let gpu = open_gpu()?;
     let views = load_views(&gpu, args)?;
     let mut evaluator = Evaluator {
@@ -780,6 +818,12 @@ pub fn run(args: &TuneArgs) -> Result<()> {
         ));
     }
     write("evaluations.csv", csv)?;
+    if let Some(path) = &args.write_settings {
+        let found = tuned_at(&tuned, methods[0], args.presets[0])
+            .context("the search found nothing to write")?;
+        std::fs::write(path, settings_file(found)?)
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
     out!("{md}");
     outln!(
         "wrote tune.md, tune.json and evaluations.csv ({} evaluations) to {}",

@@ -213,3 +213,86 @@ fn the_presets_are_the_tuning_table() {
         assert_eq!(split.to_vec(), tuned_split, "{what}: split");
     }
 }
+
+#[test]
+fn the_settings_tune_writes_are_what_it_found_and_render_reads_them() {
+    let (dir, json) = tune_room(&[
+        "--size",
+        "64x36",
+        "--spp",
+        "16",
+        "--method",
+        "gtao",
+        "--write-settings",
+        "tuned.toml",
+    ]);
+    let found = &json["results"][0]["tuned"];
+    let text = std::fs::read_to_string(dir.path().join("tuned.toml")).unwrap();
+    assert!(
+        text.starts_with("# `aokit tune` found these for gtao at `low`"),
+        "{text}"
+    );
+    let table: toml::Table = text.parse().unwrap();
+    assert!(
+        table.get("radius").is_none(),
+        "the radius is the scene's: {text}"
+    );
+    let number = |v: &toml::Value| v.as_float().or(v.as_integer().map(|i| i as f64)).unwrap();
+    assert_eq!(table["method"].as_str(), Some("gtao"));
+    for (key, tuned) in [
+        ("power", &found["power"]),
+        ("radius_multiplier", &found["radius_multiplier"]),
+        ("falloff", &found["falloff"]),
+        ("step_power", &found["step_power"]),
+    ] {
+        assert!(
+            (number(&table[key]) - tuned.as_f64().unwrap()).abs() < 1e-6,
+            "{key}: {text}"
+        );
+    }
+    // Every other setting is there, the spatial filter's radius among them.
+    assert!(
+        table["spatial"].as_table().unwrap().contains_key("radius"),
+        "{text}"
+    );
+    assert!(
+        text.contains("bias = 0.005\n"),
+        "f32 values as they are: {text}"
+    );
+    let gtao = table["gtao"].as_table().unwrap();
+    assert_eq!(
+        number(&gtao["slice_count"]),
+        found["split"][0].as_f64().unwrap()
+    );
+    // The settings flag reads the file as it is.
+    let out = output(&mut command(
+        dir.path(),
+        &[
+            "render",
+            "--size",
+            "32x18",
+            "--settings",
+            "tuned.toml",
+            "--out",
+            "r",
+        ],
+    ));
+    ok(&out);
+    // One method and one preset only: anything else is refused before the search.
+    let refused = output(&mut command(
+        dir.path(),
+        &[
+            "tune",
+            "--method",
+            "gtao,hbao",
+            "--write-settings",
+            "x.toml",
+        ],
+    ));
+    assert!(!refused.status.success());
+    assert!(
+        String::from_utf8_lossy(&refused.stderr).contains("one method at one preset"),
+        "{}",
+        String::from_utf8_lossy(&refused.stderr)
+    );
+}
