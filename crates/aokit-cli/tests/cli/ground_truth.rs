@@ -370,10 +370,15 @@ fn compare_scores_gtao_against_a_cached_reference_and_writes_the_report() {
     assert_eq!(results.len(), 2);
     for r in results {
         assert_eq!(r["method"], "gtao");
+        // Measured on lavapipe: MAE 0.050 at low and 0.026 at high (AO 1 everywhere scores
+        // about 0.2): a ceiling 1.2 times each, and high below low.
         let mae = r["all"]["mae"].as_f64().unwrap();
-        assert!(mae > 0.0 && mae < 0.3, "MAE {mae}");
+        let ceiling = if r["preset"] == "low" { 0.060 } else { 0.032 };
+        assert!(mae > 0.0 && mae < ceiling, "{}: MAE {mae}", r["preset"]);
         assert!(r["edges"]["pixels"].as_u64().unwrap() > 0);
     }
+    let mae = |i: usize| results[i]["all"]["mae"].as_f64().unwrap();
+    assert!(mae(1) < mae(0), "high is closer to the reference than low");
     let csv = std::fs::read_to_string(d.join("cmp/metrics.csv")).unwrap();
     assert_eq!(csv.lines().count(), 3, "{csv}");
     let html = std::fs::read_to_string(d.join("cmp/report.html")).unwrap();

@@ -4,6 +4,7 @@
 
 mod common;
 
+mod accuracy;
 mod back_faces;
 mod backends;
 mod conventions;
