@@ -21,4 +21,12 @@ done
 for camera in atrium arcade gallery floor; do
     shot "sponza-$camera" --scene scenes/sponza.obj --camera "$camera" --size 800x450
 done
-echo "wrote docs/images/*-ao.png and *-lit.png"
+# The README's first picture: the atrium denoised, and lit without AO (intensity 0 leaves AO 1
+# everywhere) on the left half against lit with it on the right.
+atrium=(--scene scenes/sponza.obj --camera atrium --size 800x450 --set spatial.enabled=true)
+"$aokit" render "${atrium[@]}" --out "$tmp/denoised" >/dev/null
+"$aokit" render "${atrium[@]}" --set intensity=0 --out "$tmp/no-ao" >/dev/null
+cp "$tmp/denoised/ao.png" docs/images/sponza-atrium-ao-denoised.png
+python3 bench/split_image.py "$tmp/no-ao/lit.png" "$tmp/denoised/lit.png" \
+    docs/images/sponza-atrium-lit-split.png
+echo "wrote docs/images/*-ao.png, *-lit.png, sponza-atrium-ao-denoised.png and -lit-split.png"
