@@ -299,8 +299,14 @@ fn score_scene_view(
     let mut renderer = Renderer::new(gpu, scene, &first)?;
     let timed = renderer.enable_timing(gpu);
     let mut results = Vec::new();
+    // Scoring every method at every preset takes as long as the trace on lavapipe: a bar, as
+    // the trace has, so that the run does not fall silent.
+    let bar =
+        crate::reference::progress_bar((methods.len() * args.presets.len()) as u64, "scoring", "");
     for &method in methods {
         for &preset in &args.presets {
+            bar.set_message(format!("{} {}", method.name(), preset.name()));
+            bar.inc(1);
             let settings = settings_for(args, method, preset, radius)?;
             renderer.set_settings(gpu, &settings)?;
             // Each method and preset starts its own sequence: no history from the last one.
@@ -328,6 +334,7 @@ fn score_scene_view(
             results.push(result);
         }
     }
+    bar.finish_and_clear();
     if let Some(spec) = &args.peer {
         let view = PeerView {
             camera: &cameras[last],

@@ -87,6 +87,18 @@ impl ReferenceInfo {
     }
 }
 
+/// A bar on stderr (drawn only where stderr is a terminal) over `len` steps of `unit`:
+/// "VERB MESSAGE [====>    ] 3/8UNIT, 12s left".
+pub fn progress_bar(len: u64, verb: &str, unit: &str) -> ProgressBar {
+    ProgressBar::new(len).with_style(
+        ProgressStyle::with_template(&format!(
+            "{verb} {{msg}} [{{bar:30}}] {{pos}}/{{len}}{unit}, {{eta}} left"
+        ))
+        .expect("progress template is valid")
+        .progress_chars("=> "),
+    )
+}
+
 /// Traces `camera`'s view of `scene` with a progress bar on stderr.
 pub fn trace(
     scene: &Scene,
@@ -118,11 +130,7 @@ fn trace_on(
         .validate()
         .map_err(|e| anyhow!("camera `{}`: {e}", camera.name))?;
     let pixel_camera = aokit_scene::reference::pixel_camera(scene, camera, size);
-    let bar = ProgressBar::new(u64::from(size[1])).with_style(
-        ProgressStyle::with_template("tracing {msg} [{bar:30}] {pos}/{len} rows, {eta} left")
-            .expect("progress template is valid")
-            .progress_chars("=> "),
-    );
+    let bar = progress_bar(u64::from(size[1]), "tracing", " rows");
     bar.set_message(format!("{} ({} rays per pixel)", scene.name, options.spp));
     let image = tracer.render(&pixel_camera, options, &|rows| {
         bar.set_position(rows as u64)
