@@ -306,7 +306,6 @@ fn score_scene_view(
     for &method in methods {
         for &preset in &args.presets {
             bar.set_message(format!("{} {}", method.name(), preset.name()));
-            bar.inc(1);
             let settings = settings_for(args, method, preset, radius)?;
             renderer.set_settings(gpu, &settings)?;
             // Each method and preset starts its own sequence: no history from the last one.
@@ -332,6 +331,7 @@ fn score_scene_view(
                 result.sequence = Some(score_sequence(&sequence_frames, &frames));
             }
             results.push(result);
+            bar.inc(1);
         }
     }
     bar.finish_and_clear();
