@@ -226,7 +226,7 @@ def export(scene, out_dir, scale=1.0, camera=None, progress=True):
     if cam is None:
         raise ExportError("scene %r has no active camera (Scene Properties > Camera)" % scene.name)
     if cam.type != "CAMERA":
-        raise ExportError("the scene's camera %r is a %s, not a camera" % (cam.name, cam.type))
+        raise ExportError("object %r is a %s, not a camera" % (cam.name, cam.type))
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise ExportError("--out %s exists and is not a folder" % out_dir)
     if not scale > 0.0 or math.isinf(scale):
@@ -292,4 +292,12 @@ if __name__ == "__main__":
         if bpy.app.background:
             print("aokit export: error: %s" % e, file=sys.stderr, flush=True)
             sys.exit(2)
+        raise
+    except Exception:
+        # Blender -b would print the traceback and still exit 0; a failed export must not.
+        if bpy.app.background:
+            import traceback
+
+            traceback.print_exc()
+            sys.exit(1)
         raise
