@@ -25,6 +25,10 @@ UI_OUT = "//aokit-export"
 UI_SCALE = 1.0
 
 
+# Object types with surfaces that `scene.ray_cast` (Blender 3.4) does not intersect.
+UNSEEN_TYPES = {"CURVE", "SURFACE", "FONT", "CURVES", "POINTCLOUD", "VOLUME", "GPENCIL"}
+
+
 class ExportError(Exception):
     pass
 
@@ -237,6 +241,15 @@ def export(scene, out_dir, scale=1.0, camera=None, progress=True):
     check_against_blender(cam, depsgraph, params, extent_y)
     params["view_from_world"] = view_from_world(cam)
     os.makedirs(out_dir, exist_ok=True)
+    unseen = [ob.name for ob in scene.objects if ob.type in UNSEEN_TYPES and ob.visible_get()]
+    if unseen:
+        print(
+            "aokit export: warning: scene.ray_cast does not see curve, surface, text, hair, point "
+            "cloud, volume or grease pencil objects; convert them to meshes (Object > Convert > "
+            "Mesh) to include them: %s" % ", ".join(sorted(unseen)[:10] + (["..."] if len(unseen) > 10 else [])),
+            file=sys.stderr,
+            flush=True,
+        )
     start = time.time()
     depth, (nx, ny, nz) = trace(scene, depsgraph, cam, params, extent_y, progress)
     seconds = time.time() - start
