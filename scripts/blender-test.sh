@@ -36,7 +36,7 @@ blender_run() { "$BLENDER" -b --python-exit-code 1 "$@" >"$WORK/blender.log" 2>&
 blender_run --factory-startup -P tools/blender/tests/make_scene.py -- "$WORK/scene.blend" "$WORK/scene.obj"
 for cam in persp ortho; do
     rm -rf "$WORK/$cam"
-    blender_run "$WORK/scene.blend" -P "$EXPORT" -- --out "$WORK/$cam" --camera "$cam"
+    blender_run --factory-startup "$WORK/scene.blend" -P "$EXPORT" -- --out "$WORK/$cam" --camera "$cam"
     grep '^aokit export' "$WORK/blender.log"
     python3 tools/blender/tests/check_export.py "$AOKIT" "$WORK/scene.obj" "$WORK/$cam" "$WORK/check-$cam" \
         --radius 0.5 --spp 64
@@ -47,7 +47,7 @@ expect_refusal() {
     local want=$1
     shift
     set +e
-    "$BLENDER" -b "$WORK/scene.blend" "$@" >"$WORK/refusal.log" 2>&1
+    "$BLENDER" -b --factory-startup "$WORK/scene.blend" "$@" >"$WORK/refusal.log" 2>&1
     local rc=$?
     set -e
     if [ "$rc" != 2 ] || ! grep -q "$want" "$WORK/refusal.log"; then

@@ -235,7 +235,12 @@ def export(scene, out_dir, scale=1.0, camera=None, progress=True):
         raise ExportError("--out %s exists and is not a folder" % out_dir)
     if not scale > 0.0 or math.isinf(scale):
         raise ExportError("--scale must be a positive number, not %r" % scale)
-    depsgraph = bpy.context.evaluated_depsgraph_get()
+    if scene == bpy.context.scene:
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+    else:  # another scene: evaluate its first rendered view layer
+        layer = next((v for v in scene.view_layers if v.use), scene.view_layers[0])
+        with bpy.context.temp_override(scene=scene, view_layer=layer):
+            depsgraph = bpy.context.evaluated_depsgraph_get()
     width, height = render_size(scene, scale)
     params, extent_y = camera_params(cam, width, height)
     check_against_blender(cam, depsgraph, params, extent_y)
