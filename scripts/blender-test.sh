@@ -34,11 +34,19 @@ EXPORT=tools/blender/export_aokit.py
 blender_run() { "$BLENDER" -b --python-exit-code 1 "$@" >"$WORK/blender.log" 2>&1 || { cat "$WORK/blender.log"; return 1; }; }
 
 blender_run --factory-startup -P tools/blender/tests/make_scene.py -- "$WORK/scene.blend" "$WORK/scene.obj"
-for cam in persp ortho; do
-    rm -rf "$WORK/$cam"
-    blender_run --factory-startup "$WORK/scene.blend" -P "$EXPORT" -- --out "$WORK/$cam" --camera "$cam"
+# The third case: AUTO fit on a portrait image (the fit follows the longer side, the height, but
+# with the sensor width), the persp camera shifted by whole pixels.
+AUTO_PORTRAIT="import bpy; s = bpy.context.scene; s.render.resolution_x, s.render.resolution_y = 480, 640
+c = bpy.data.objects['persp'].data; c.sensor_fit = 'AUTO'; c.sensor_width = 24.0; c.shift_x, c.shift_y = 0.05, -0.1"
+for case in persp ortho auto-portrait; do
+    rm -rf "$WORK/$case"
+    case $case in
+        auto-portrait) setup=(--python-expr "$AUTO_PORTRAIT") cam=persp ;;
+        *) setup=() cam=$case ;;
+    esac
+    blender_run --factory-startup "$WORK/scene.blend" "${setup[@]}" -P "$EXPORT" -- --out "$WORK/$case" --camera "$cam"
     grep '^aokit export' "$WORK/blender.log"
-    python3 tools/blender/tests/check_export.py "$AOKIT" "$WORK/scene.obj" "$WORK/$cam" "$WORK/check-$cam" \
+    python3 tools/blender/tests/check_export.py "$AOKIT" "$WORK/scene.obj" "$WORK/$case" "$WORK/check-$case" \
         --radius 0.5 --spp 64
 done
 
