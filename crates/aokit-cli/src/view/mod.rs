@@ -58,6 +58,10 @@ pub struct ViewArgs {
     /// After the last frame, write the window's content to this PNG file and exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
+    /// Print the settings panel's widgets (group, key, widget and bounds, one setting a line)
+    /// for the settings the flags give, and exit without opening a window.
+    #[arg(long)]
+    pub panel_layout: bool,
 }
 
 fn parse_mode(s: &str) -> Result<DisplayMode, String> {
@@ -98,6 +102,10 @@ pub fn run(args: &ViewArgs) -> Result<()> {
     }
     let camera = args.camera.resolve(&scene)?;
     let settings = args.settings.resolve(scene.suggested_radius)?;
+    if args.panel_layout {
+        out!("{}", panel::layout(&settings));
+        return Ok(());
+    }
     let frames = args
         .frames
         .or(args.screenshot.as_ref().map(|_| SCREENSHOT_FRAMES));

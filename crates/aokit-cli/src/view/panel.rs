@@ -39,6 +39,35 @@ pub enum Widget {
     Combo(&'static [&'static str]),
 }
 
+impl Widget {
+    /// One word for the widget and its bounds, as `aokit view --panel-layout` prints it:
+    /// `check`, `int-slider 1..=64 step 1`, `float-slider 0..=1`, `float-drag 0.0001..`,
+    /// `combo low|medium|high`.
+    pub fn describe(&self) -> String {
+        match self {
+            Widget::Check => "check".to_string(),
+            Widget::IntSlider { min, max, step } => format!("int-slider {min}..={max} step {step}"),
+            Widget::FloatSlider { min, max } => format!("float-slider {min}..={max}"),
+            Widget::FloatDrag { min } => format!("float-drag {min}.."),
+            Widget::Combo(names) => format!("combo {}", names.join("|")),
+        }
+    }
+}
+
+/// The panel's settings part as text, one line per setting in the order the panel shows them:
+/// group, key and widget ([`Widget::describe`]), tab-separated. `aokit view --panel-layout`
+/// prints it, and the CLI tests check it against the declarations without a window.
+pub fn layout(settings: &AoSettings) -> String {
+    let mut text = String::new();
+    for (group, specs) in groups() {
+        for spec in specs {
+            let widget = widget_for(spec, settings).describe();
+            text += &format!("{group}\t{}\t{widget}\n", spec.name);
+        }
+    }
+    text
+}
+
 /// The nearest value above `min` an exclusive lower end allows: a slider cannot land on it.
 fn open_min(range: &FloatRange) -> f32 {
     if range.min_inclusive {
