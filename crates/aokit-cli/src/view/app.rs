@@ -11,7 +11,7 @@ use aokit::{AdapterKind, AoSettings, Preset};
 use aokit_scene::{Camera, Renderer, Scene};
 use glam::Vec3;
 use winit::application::ApplicationHandler;
-use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
+use winit::event::{ElementState, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{KeyCode, PhysicalKey};
 use winit::window::{Window, WindowId};
@@ -108,13 +108,11 @@ impl ApplicationHandler for App {
     }
 }
 
-/// Keys and buttons held, and the cursor.
+/// Keys held over the view (mouse drags and the wheel reach the camera through egui: see
+/// `ui::draw`).
 #[derive(Default)]
 struct Input {
     keys: HashSet<KeyCode>,
-    /// A drag that turns the camera is under way (it started outside the panel).
-    turning: bool,
-    cursor: Option<(f64, f64)>,
 }
 
 impl Input {
@@ -153,8 +151,29 @@ struct Running {
     input: Input,
     last: Instant,
     frame_index: u32,
+    /// Redraws of the window so far (`--frames` counts these).
+    drawn: u32,
     frames: Option<u32>,
     screenshot: Option<PathBuf>,
+    /// What the last rendered frame showed ([`scene_key`]), and how many frames have shown it.
+    last_key: Option<String>,
+    repeats: u32,
+}
+
+/// Frames rendered after the view last changed before the viewer stops rendering the scene
+/// (the window keeps redrawing the panel): enough for the temporal filter's history to settle.
+/// Rendering the same view again gives the same image, and costs memory on lavapipe: Mesa
+/// 22.3's lavapipe grows the process by about half a megabyte with each frame of the scene
+/// renderer's composite pass (docs/viewer.md).
+pub const SETTLE_FRAMES: u32 = 32;
+
+/// Everything the rendered image depends on, as text: camera, settings, mode, scale and size.
+fn scene_key(view: &ViewState) -> String {
+    let camera = &view.camera;
+    format!(
+        "{:?} {:?} {:?} {:?} {} {:?}",
+        camera.eye, camera.forward, view.settings, view.mode, view.scale, view.area
+    )
 }
 
 impl Running {
@@ -220,6 +239,8 @@ impl Running {
             adapter: gpu.describe(),
             software_note,
             area: start.window_size,
+            continuous: false,
+            idle: false,
             render_size: [0, 0],
             message: None,
             error: None,
@@ -235,8 +256,11 @@ impl Running {
             input: Input::default(),
             last: Instant::now(),
             frame_index: 0,
+            drawn: 0,
             frames: start.frames,
             screenshot: start.screenshot,
+            last_key: None,
+            repeats: 0,
         })
     }
 
@@ -247,10 +271,7 @@ impl Running {
             WindowEvent::CloseRequested => return Ok(false),
             WindowEvent::Resized(size) => self.wgpu.resize(size.width, size.height),
             WindowEvent::RedrawRequested => return self.redraw(),
-            WindowEvent::Focused(false) => {
-                self.input.keys.clear();
-                self.input.turning = false;
-            }
+            WindowEvent::Focused(false) => self.input.keys.clear(),
             WindowEvent::KeyboardInput { event, .. } if !response.consumed => {
                 let PhysicalKey::Code(code) = event.physical_key else {
                     return Ok(true);
@@ -272,35 +293,6 @@ impl Running {
                 if let PhysicalKey::Code(code) = event.physical_key {
                     self.input.keys.remove(&code);
                 }
-            }
-            WindowEvent::MouseInput { state, button, .. } => {
-                let turns = match self.view.camera.mode {
-                    CameraMode::Fly => button == MouseButton::Right,
-                    CameraMode::Orbit => {
-                        matches!(button, MouseButton::Left | MouseButton::Right)
-                    }
-                };
-                if turns {
-                    self.input.turning = state == ElementState::Pressed && !response.consumed;
-                }
-            }
-            WindowEvent::CursorMoved { position, .. } => {
-                if let Some((x, y)) = self.input.cursor
-                    && self.input.turning
-                {
-                    self.view
-                        .camera
-                        .turn((position.x - x) as f32, (position.y - y) as f32);
-                }
-                self.input.cursor = Some((position.x, position.y));
-            }
-            WindowEvent::CursorLeft { .. } => self.input.cursor = None,
-            WindowEvent::MouseWheel { delta, .. } if !response.consumed => {
-                let steps = match delta {
-                    MouseScrollDelta::LineDelta(_, y) => y,
-                    MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
-                };
-                self.view.camera.wheel(steps);
             }
             _ => {}
         }
@@ -360,7 +352,23 @@ impl Running {
         if direction != Vec3::ZERO {
             self.view.camera.fly(direction, seconds, self.input.fast());
         }
-        self.render_scene();
+        let key = scene_key(&self.view);
+        if self.last_key.as_ref() == Some(&key) {
+            self.repeats += 1;
+        } else {
+            self.last_key = Some(key);
+            self.repeats = 0;
+        }
+        let settle = if self.view.settings.temporal.enabled {
+            SETTLE_FRAMES
+        } else {
+            1
+        };
+        self.view.idle = !self.view.continuous && self.repeats >= settle;
+        if !self.view.idle {
+            self.render_scene();
+        }
+        self.drawn += 1;
 
         let raw_input = self.egui_state.take_egui_input(&self.window);
         let ctx = self.egui_state.egui_ctx().clone();
@@ -397,7 +405,7 @@ impl Running {
             size_in_pixels: [self.wgpu.config.width, self.wgpu.config.height],
             pixels_per_point: output.pixels_per_point,
         };
-        let last_frame = self.frames.is_some_and(|frames| self.frame_index >= frames);
+        let last_frame = self.frames.is_some_and(|frames| self.drawn >= frames);
         let capture = (last_frame && self.screenshot.is_some()).then(|| self.wgpu.capture_target());
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         let commands = self.egui_renderer.update_buffers(
@@ -449,7 +457,7 @@ impl Running {
                 path.display(),
                 size[0],
                 size[1],
-                self.frame_index,
+                self.drawn,
                 self.view.mode.name(),
                 self.view.scale * 100.0,
                 self.view.render_size[0],
@@ -463,11 +471,11 @@ impl Running {
     /// and puts the image the display mode shows into the texture the central area draws.
     fn render_scene(&mut self) {
         let gpu = &self.wgpu.gpu;
-        if self.view.settings != *self.renderer.settings() {
-            if let Err(e) = self.renderer.set_settings(gpu, &self.view.settings) {
-                self.view.error = Some(format!("settings refused: {e}"));
-                self.view.settings = *self.renderer.settings();
-            }
+        if self.view.settings != *self.renderer.settings()
+            && let Err(e) = self.renderer.set_settings(gpu, &self.view.settings)
+        {
+            self.view.error = Some(format!("settings refused: {e}"));
+            self.view.settings = *self.renderer.settings();
         }
         let size = frame::internal_size(self.view.area, self.view.scale);
         self.view.render_size = size;

@@ -56,7 +56,7 @@ pub type MoveInput = Vec3;
 
 impl ViewCamera {
     /// Starts at `camera`'s pose; `scene_radius` (the radius of the scene's bounding sphere)
-    /// sets the flying speed: the scene is crossed in about four seconds.
+    /// sets the flying speed: the scene is crossed in about eight seconds.
     pub fn new(camera: &Camera, scene_radius: f32) -> Self {
         let offset = camera.target - camera.eye;
         let distance = offset.length().max(1e-4);
@@ -168,10 +168,10 @@ impl ViewCamera {
     }
 }
 
-/// Flying speed for a scene whose bounding sphere has `radius`: its diameter in four seconds.
+/// Flying speed for a scene whose bounding sphere has `radius`: its diameter in eight seconds.
 pub fn speed_for(radius: f32) -> f32 {
     if radius.is_finite() && radius > 0.0 {
-        radius * 0.5
+        radius * 0.25
     } else {
         1.0
     }
@@ -204,10 +204,10 @@ mod tests {
     #[test]
     fn flying_forward_moves_towards_the_target_at_the_scene_speed() {
         let mut view = start();
-        assert_eq!(view.speed, 2.0);
-        view.fly(Vec3::Z, 1.0, false);
+        assert_eq!(view.speed, 1.0);
+        view.fly(Vec3::Z, 2.0, false);
         assert!((view.eye - Vec3::new(0.0, 1.0, 3.0)).length() < 1e-5);
-        view.fly(Vec3::X, 0.5, true);
+        view.fly(Vec3::X, 1.0, true);
         // Right of a camera looking down -Z is +X.
         assert!((view.eye - Vec3::new(4.0, 1.0, 3.0)).length() < 1e-5);
     }

@@ -44,6 +44,11 @@ pub struct ViewState {
     pub area: [u32; 2],
     /// The size the last frame was rendered at.
     pub render_size: [u32; 2],
+    /// Render the scene every frame, even when nothing changed.
+    pub continuous: bool,
+    /// Whether the last frame showed the image before it rather than rendering the unchanged
+    /// view again.
+    pub idle: bool,
     /// A passing message ("copied").
     pub message: Option<String>,
     /// What went wrong with the last frame or change.
@@ -86,6 +91,7 @@ pub fn draw(
             (rect.width() * ppp).round().max(1.0) as u32,
             (rect.height() * ppp).round().max(1.0) as u32,
         ];
+        scene_input(ui, rect, view);
         if let Some(texture) = texture {
             ui.painter().image(
                 texture.id(),
@@ -114,6 +120,32 @@ pub fn draw(
         }
     });
     actions
+}
+
+/// Mouse input over the scene: a drag turns the camera (the right button in fly mode, either in
+/// orbit mode), the wheel moves nearer (orbit) or changes the speed (fly). The area senses drags
+/// only, so it never takes the keyboard focus the movement keys need.
+fn scene_input(ui: &mut egui::Ui, rect: egui::Rect, view: &mut ViewState) {
+    let response = ui.interact(rect, egui::Id::unique("aokit scene"), egui::Sense::DRAG);
+    let turning = match view.camera.mode {
+        CameraMode::Fly => response.dragged_by(egui::PointerButton::Secondary),
+        CameraMode::Orbit => {
+            response.dragged_by(egui::PointerButton::Primary)
+                || response.dragged_by(egui::PointerButton::Secondary)
+        }
+    };
+    if turning {
+        // Turn rates are per physical pixel of mouse movement.
+        let delta = response.drag_delta() * ui.ctx().pixels_per_point();
+        view.camera.turn(delta.x, delta.y);
+    }
+    if response.hovered() {
+        let scroll = ui.input(|input| input.smooth_scroll_delta.y);
+        if scroll != 0.0 {
+            // egui scrolls by about 50 points a wheel notch.
+            view.camera.wheel(scroll / 50.0);
+        }
+    }
 }
 
 fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>) {
@@ -178,9 +210,20 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
     ui.add(egui::Slider::new(&mut view.scale, 0.1..=2.0).text("internal scale"))
         .on_hover_text("fraction of the view's pixels rendered, then stretched to the view");
     ui.label(format!(
-        "rendering {}x{}",
-        view.render_size[0], view.render_size[1]
+        "rendering {}x{}{}",
+        view.render_size[0],
+        view.render_size[1],
+        if view.idle {
+            " (idle: view unchanged)"
+        } else {
+            ""
+        }
     ));
+    ui.checkbox(&mut view.continuous, "render every frame")
+        .on_hover_text(
+            "off: the scene is rendered while the view changes and for a few frames after \
+             (the temporal filter settles), then the last image stays",
+        );
     timings(ui, view);
 
     ui.separator();

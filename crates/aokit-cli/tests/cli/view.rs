@@ -224,3 +224,80 @@ fn the_panel_has_a_widget_within_its_bounds_for_every_declared_setting() {
         }
     }
 }
+
+/// Drives the window with xdotool under Xvfb: `P` prints the pose, holding `W` flies forward, a
+/// right-button drag to the right turns the view right, `Escape` quits. Needs xdotool as well
+/// (skipped without it unless `AOKIT_REQUIRE_XVFB=1`).
+#[test]
+fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
+    if !have_xvfb() {
+        return;
+    }
+    if Command::new("xdotool").arg("version").output().is_err() {
+        assert!(
+            std::env::var("AOKIT_REQUIRE_XVFB").as_deref() != Ok("1"),
+            "AOKIT_REQUIRE_XVFB=1 but xdotool (Debian package xdotool) does not run"
+        );
+        eprintln!("skipping: no xdotool (Debian package xdotool)");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // The window opens, `P`, `W` held for a second and a half, `P`, a drag, `P`, `Escape`.
+    let script = r#"
+        "$1" view --scene room --window-size 320x180 --no-panel > out.txt 2> err.txt &
+        app=$!
+        window=$(xdotool search --sync --name "aokit view" | head -n 1)
+        sleep 1
+        # No window manager: focus the window and put the pointer over it.
+        xdotool windowfocus --sync "$window"
+        xdotool mousemove --window "$window" 160 90
+        xdotool key p; sleep 0.5
+        xdotool keydown w; sleep 1.5; xdotool keyup w; sleep 0.5
+        xdotool key p; sleep 0.5
+        xdotool mousemove --window "$window" 160 90 mousedown 3
+        for i in 1 2 3 4 5 6 7 8 9 10; do xdotool mousemove_relative 10 0; sleep 0.1; done
+        xdotool mouseup 3; sleep 0.5
+        xdotool key p; sleep 0.5
+        xdotool key Escape
+        wait $app
+    "#;
+    let out = output(
+        Command::new("xvfb-run")
+            .args([
+                "-a",
+                "-s",
+                "-screen 0 1024x768x24",
+                "sh",
+                "-c",
+                script,
+                "sh",
+            ])
+            .arg(env!("CARGO_BIN_EXE_aokit"))
+            .current_dir(dir.path()),
+    );
+    let printed = std::fs::read_to_string(dir.path().join("out.txt")).unwrap();
+    let errors = std::fs::read_to_string(dir.path().join("err.txt")).unwrap();
+    assert!(out.status.success(), "{}\n{errors}", text(&out.stderr));
+    let poses: Vec<[f32; 6]> = printed
+        .lines()
+        .map(|line| {
+            let words: Vec<&str> = line.split(' ').collect();
+            assert_eq!(words[0], "--eye", "{line}");
+            assert_eq!(words[2], "--target", "{line}");
+            let mut values = words[1].split(',').chain(words[3].split(','));
+            std::array::from_fn(|_| values.next().unwrap().parse().unwrap())
+        })
+        .collect();
+    assert_eq!(poses.len(), 3, "{printed}\n{errors}");
+    // The room's `front` camera, looking down -Z.
+    assert_eq!(poses[0], [0.0, 2.4, 6.5, 0.0, 0.9, -1.2]);
+    // W: forward, towards -Z; the view direction is kept.
+    assert!(poses[1][2] < 6.0, "{printed}");
+    assert!(
+        poses[1][0].abs() < 1e-3 && poses[1][3].abs() < 1e-3,
+        "{printed}"
+    );
+    // A drag to the right turns right: the target moves to +X, the eye stays.
+    assert_eq!(poses[2][..3], poses[1][..3], "{printed}");
+    assert!(poses[2][3] > 0.5, "{printed}");
+}
