@@ -19,10 +19,16 @@ pub enum DisplayMode {
 }
 
 impl DisplayMode {
-    /// Every mode, in the order the panel and the `M` key step through them.
+    /// Every mode, in the order the panel and the `M` key step through them. The debug view
+    /// `ao` is the `ao` mode (the pipeline's AO in grey), listed once.
     pub fn all() -> Vec<DisplayMode> {
         let mut all = vec![DisplayMode::Lit, DisplayMode::Ao];
-        all.extend(DebugView::ALL.iter().map(|&v| DisplayMode::Debug(v)));
+        all.extend(
+            DebugView::ALL
+                .iter()
+                .filter(|&&v| v != DebugView::Ao)
+                .map(|&v| DisplayMode::Debug(v)),
+        );
         all
     }
 
@@ -150,7 +156,10 @@ mod tests {
             mode = mode.next();
         }
         assert_eq!(mode, DisplayMode::Lit);
-        assert_eq!(DisplayMode::all().len(), 2 + DebugView::ALL.len());
+        // `ao` once: the mode, not also the debug view of the same name.
+        assert_eq!(DisplayMode::all().len(), 1 + DebugView::ALL.len());
+        let names: Vec<&str> = DisplayMode::all().iter().map(|m| m.name()).collect();
+        assert_eq!(names.iter().filter(|&&n| n == "ao").count(), 1);
     }
 
     #[test]
