@@ -1,4 +1,4 @@
-//! `aokit`: render scenes with screen-space AO, headless.
+//! `aokit`: render scenes with screen-space AO, headless, or look at them live (`aokit view`).
 
 /// `print!` for the command's report on stdout, which does not panic when the reader has gone
 /// (`aokit render | head -c1`): see [`stdout_text`].
@@ -29,6 +29,7 @@ mod sequence;
 mod settings_args;
 mod settings_list;
 mod tune;
+mod view;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -64,6 +65,10 @@ enum Command {
     /// List every setting with its type, range, default and the value the flags give it;
     /// --markdown prints docs/settings.md.
     Settings(settings_list::SettingsListArgs),
+    /// Look at a scene live in a window: fly or orbit, change every setting from a panel,
+    /// switch display modes, read per-pass GPU times; --frames N --screenshot FILE renders N
+    /// frames, writes a PNG of the window and exits.
+    View(view::ViewArgs),
 }
 
 /// Flags renamed so that one name means one thing in every subcommand: (subcommand, old
@@ -110,6 +115,7 @@ fn main() -> ExitCode {
         Command::Tune(args) => tune::run(&args),
         Command::Peer(args) => peer::run(&args),
         Command::Settings(args) => settings_list::run(&args),
+        Command::View(args) => view::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

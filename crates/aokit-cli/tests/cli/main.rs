@@ -13,3 +13,4 @@ mod peer;
 mod robustness;
 mod settings;
 mod tune;
+mod view;

@@ -1,0 +1,521 @@
+//! The event loop: the window, input to the camera, one frame per redraw (scene, AO, panel),
+//! and the screenshot mode (`--frames N --screenshot FILE`).
+
+use std::collections::HashSet;
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Instant;
+
+use anyhow::{Context, Result, anyhow};
+use aokit::{AdapterKind, AoSettings, Preset};
+use aokit_scene::{Camera, Renderer, Scene};
+use glam::Vec3;
+use winit::application::ApplicationHandler;
+use winit::event::{ElementState, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::keyboard::{KeyCode, PhysicalKey};
+use winit::window::{Window, WindowId};
+
+use super::camera::{CameraMode, ViewCamera};
+use super::frame::{self, DisplayMode, Timings};
+use super::gpu::WindowGpu;
+use super::ui::{self, Action, ViewState};
+
+/// What the viewer starts with, from the flags.
+pub struct Start {
+    /// The scene.
+    pub scene: Scene,
+    /// The camera the flags picked.
+    pub camera: Camera,
+    /// The settings the flags give.
+    pub settings: AoSettings,
+    /// The preset the flags name (the panel's "copy as flags" compares with it).
+    pub preset: Preset,
+    /// What to show.
+    pub mode: DisplayMode,
+    /// Window size in pixels.
+    pub window_size: [u32; 2],
+    /// Internal render scale; `None`: 1 on a GPU, [`SOFTWARE_SCALE`] on a software adapter.
+    pub scale: Option<f32>,
+    /// Show the side panel.
+    pub panel: bool,
+    /// Exit after this many frames.
+    pub frames: Option<u32>,
+    /// Write the window's content here after the last frame.
+    pub screenshot: Option<PathBuf>,
+}
+
+/// The internal scale on a software adapter unless `--scale` says otherwise.
+pub const SOFTWARE_SCALE: f32 = 0.5;
+
+/// Opens the window and runs until it closes, or until the frames asked for are done.
+pub fn run(start: Start) -> Result<()> {
+    let event_loop = EventLoop::new().map_err(|e| {
+        anyhow!(
+            "cannot open a window ({e}): `aokit view` needs a display (X11; under no display, \
+             run it in `xvfb-run -a`)"
+        )
+    })?;
+    event_loop.set_control_flow(ControlFlow::Poll);
+    let mut app = App {
+        start: Some(start),
+        running: None,
+        result: Ok(()),
+    };
+    event_loop.run_app(&mut app)?;
+    app.result
+}
+
+struct App {
+    start: Option<Start>,
+    running: Option<Running>,
+    result: Result<()>,
+}
+
+impl App {
+    fn fail(&mut self, event_loop: &ActiveEventLoop, error: anyhow::Error) {
+        self.result = Err(error);
+        event_loop.exit();
+    }
+}
+
+impl ApplicationHandler for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        let Some(start) = self.start.take() else {
+            return;
+        };
+        match Running::new(event_loop, start) {
+            Ok(running) => self.running = Some(running),
+            Err(e) => self.fail(event_loop, e),
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _: WindowId, event: WindowEvent) {
+        let Some(running) = &mut self.running else {
+            return;
+        };
+        match running.window_event(event) {
+            Ok(true) => {}
+            Ok(false) => event_loop.exit(),
+            Err(e) => self.fail(event_loop, e),
+        }
+    }
+
+    fn about_to_wait(&mut self, _: &ActiveEventLoop) {
+        if let Some(running) = &self.running {
+            running.window.request_redraw();
+        }
+    }
+}
+
+/// Keys held over the view (mouse drags and the wheel reach the camera through egui: see
+/// `ui::draw`).
+#[derive(Default)]
+struct Input {
+    keys: HashSet<KeyCode>,
+}
+
+impl Input {
+    /// Right, up, forward from WASD, Q/E (down/up) and the arrow keys.
+    fn direction(&self) -> Vec3 {
+        let held = |keys: &[KeyCode]| keys.iter().any(|k| self.keys.contains(k));
+        let axis = |minus: &[KeyCode], plus: &[KeyCode]| {
+            f32::from(u8::from(held(plus))) - f32::from(u8::from(held(minus)))
+        };
+        Vec3::new(
+            axis(
+                &[KeyCode::KeyA, KeyCode::ArrowLeft],
+                &[KeyCode::KeyD, KeyCode::ArrowRight],
+            ),
+            axis(&[KeyCode::KeyQ], &[KeyCode::KeyE]),
+            axis(
+                &[KeyCode::KeyS, KeyCode::ArrowDown],
+                &[KeyCode::KeyW, KeyCode::ArrowUp],
+            ),
+        )
+    }
+
+    fn fast(&self) -> bool {
+        self.keys.contains(&KeyCode::ShiftLeft) || self.keys.contains(&KeyCode::ShiftRight)
+    }
+}
+
+struct Running {
+    window: Arc<Window>,
+    wgpu: WindowGpu,
+    renderer: Renderer,
+    egui_state: egui_winit::State,
+    egui_renderer: egui_wgpu::Renderer,
+    texture: Option<egui::TextureHandle>,
+    view: ViewState,
+    input: Input,
+    last: Instant,
+    frame_index: u32,
+    /// Redraws of the window so far (`--frames` counts these).
+    drawn: u32,
+    frames: Option<u32>,
+    screenshot: Option<PathBuf>,
+    /// What the last rendered frame showed ([`scene_key`]), and how many frames have shown it.
+    last_key: Option<String>,
+    repeats: u32,
+}
+
+/// Frames rendered after the view last changed before the viewer stops rendering the scene
+/// (the window keeps redrawing the panel): enough for the temporal filter's history to settle.
+/// Rendering the same view again gives the same image, and costs memory on lavapipe: Mesa
+/// 22.3's lavapipe grows the process by about half a megabyte with each frame of the scene
+/// renderer's composite pass (docs/viewer.md).
+pub const SETTLE_FRAMES: u32 = 32;
+
+/// Everything the rendered image depends on, as text: camera, settings, mode, scale and size.
+fn scene_key(view: &ViewState) -> String {
+    let camera = &view.camera;
+    format!(
+        "{:?} {:?} {:?} {:?} {} {:?}",
+        camera.eye, camera.forward, view.settings, view.mode, view.scale, view.area
+    )
+}
+
+impl Running {
+    fn new(event_loop: &ActiveEventLoop, start: Start) -> Result<Self> {
+        let [width, height] = start.window_size;
+        let attributes = Window::default_attributes()
+            .with_title(format!("aokit view: {}", start.scene.name))
+            .with_inner_size(winit::dpi::PhysicalSize::new(width, height));
+        let window = Arc::new(
+            event_loop
+                .create_window(attributes)
+                .context("cannot open the window")?,
+        );
+        let wgpu = WindowGpu::new(window.clone())?;
+        let gpu = &wgpu.gpu;
+        let software = gpu.adapter_kind() == AdapterKind::Software;
+        let scale = start
+            .scale
+            .unwrap_or(if software { SOFTWARE_SCALE } else { 1.0 });
+        let software_note = software.then(|| {
+            format!(
+                "software adapter ({}): rendering at {:.0}% of the view's pixels{}",
+                gpu.adapter_info.name,
+                scale * 100.0,
+                if start.scale.is_none() {
+                    " by default (--scale 1 for full)"
+                } else {
+                    ""
+                }
+            )
+        });
+        if let Some(note) = &software_note {
+            eprintln!("note: {note}");
+        }
+        let mut renderer = Renderer::new(gpu, &start.scene, &start.settings)?;
+        let timestamps = renderer.enable_timing(gpu);
+        let egui_ctx = egui::Context::default();
+        let egui_state = egui_winit::State::new(
+            egui_ctx,
+            egui::ViewportId::ROOT,
+            &window,
+            Some(window.scale_factor() as f32),
+            None,
+            Some(gpu.device.limits().max_texture_dimension_2d as usize),
+        );
+        let egui_renderer =
+            egui_wgpu::Renderer::new(&gpu.device, wgpu.config.format, Default::default());
+        let radius = start.scene.bounds.radius();
+        let view = ViewState {
+            camera: ViewCamera::new(&start.camera, radius),
+            start_camera: start.camera,
+            bookmarks: start.scene.cameras.clone(),
+            scene_name: start.scene.name.clone(),
+            suggested_radius: start.scene.suggested_radius,
+            method: start.settings.method,
+            preset: start.preset,
+            settings: start.settings,
+            mode: start.mode,
+            scale,
+            panel: start.panel,
+            timings: Timings::default(),
+            timestamps,
+            adapter: gpu.describe(),
+            software_note,
+            area: start.window_size,
+            continuous: false,
+            idle: false,
+            render_size: [0, 0],
+            message: None,
+            error: None,
+        };
+        Ok(Self {
+            window,
+            wgpu,
+            renderer,
+            egui_state,
+            egui_renderer,
+            texture: None,
+            view,
+            input: Input::default(),
+            last: Instant::now(),
+            frame_index: 0,
+            drawn: 0,
+            frames: start.frames,
+            screenshot: start.screenshot,
+            last_key: None,
+            repeats: 0,
+        })
+    }
+
+    /// Handles one event; `Ok(false)` ends the loop.
+    fn window_event(&mut self, event: WindowEvent) -> Result<bool> {
+        let response = self.egui_state.on_window_event(&self.window, &event);
+        match event {
+            WindowEvent::CloseRequested => return Ok(false),
+            WindowEvent::Resized(size) => self.wgpu.resize(size.width, size.height),
+            WindowEvent::RedrawRequested => return self.redraw(),
+            WindowEvent::Focused(false) => self.input.keys.clear(),
+            WindowEvent::KeyboardInput { event, .. } if !response.consumed => {
+                let PhysicalKey::Code(code) = event.physical_key else {
+                    return Ok(true);
+                };
+                match event.state {
+                    ElementState::Pressed => {
+                        if !event.repeat && !self.key_pressed(code) {
+                            return Ok(false);
+                        }
+                        self.input.keys.insert(code);
+                    }
+                    ElementState::Released => {
+                        self.input.keys.remove(&code);
+                    }
+                }
+            }
+            WindowEvent::KeyboardInput { event, .. } => {
+                // egui took the key (a text field has focus): forget it as held.
+                if let PhysicalKey::Code(code) = event.physical_key {
+                    self.input.keys.remove(&code);
+                }
+            }
+            _ => {}
+        }
+        Ok(true)
+    }
+
+    /// A key pressed over the view; `false` to quit.
+    fn key_pressed(&mut self, code: KeyCode) -> bool {
+        match code {
+            KeyCode::Escape => return false,
+            KeyCode::KeyP => self.act(Action::CopyPose),
+            KeyCode::KeyM => self.view.mode = self.view.mode.next(),
+            KeyCode::Tab => self.view.panel = !self.view.panel,
+            KeyCode::KeyF => self.view.camera.mode = CameraMode::Fly,
+            KeyCode::KeyO => self.view.camera.mode = CameraMode::Orbit,
+            KeyCode::KeyR => self.act(Action::Reset),
+            _ => {}
+        }
+        true
+    }
+
+    /// Does what the panel or a key asked for.
+    fn act(&mut self, action: Action) {
+        let ctx = self.egui_state.egui_ctx().clone();
+        match action {
+            Action::CopyPose => {
+                let flags = self.view.camera.flags();
+                outln!("{flags}");
+                ctx.copy_text(flags);
+                self.view.message = Some("camera pose printed and copied".into());
+            }
+            Action::Copy(text) => {
+                outln!("{text}");
+                ctx.copy_text(text);
+                self.view.message = Some("printed and copied".into());
+            }
+            Action::Bookmark(i) => {
+                if let Some(camera) = self.view.bookmarks.get(i).cloned() {
+                    self.view.camera.jump_to(&camera);
+                    self.renderer.reset_history();
+                }
+            }
+            Action::Reset => {
+                let camera = self.view.start_camera.clone();
+                self.view.camera.jump_to(&camera);
+                self.renderer.reset_history();
+            }
+        }
+    }
+
+    /// Renders the scene at the view's size, then draws the panel over it and presents.
+    fn redraw(&mut self) -> Result<bool> {
+        let now = Instant::now();
+        let seconds = (now - self.last).as_secs_f32().min(0.25);
+        self.last = now;
+        let direction = self.input.direction();
+        if direction != Vec3::ZERO {
+            self.view.camera.fly(direction, seconds, self.input.fast());
+        }
+        let key = scene_key(&self.view);
+        if self.last_key.as_ref() == Some(&key) {
+            self.repeats += 1;
+        } else {
+            self.last_key = Some(key);
+            self.repeats = 0;
+        }
+        let settle = if self.view.settings.temporal.enabled {
+            SETTLE_FRAMES
+        } else {
+            1
+        };
+        self.view.idle = !self.view.continuous && self.repeats >= settle;
+        if !self.view.idle {
+            self.render_scene();
+        }
+        self.drawn += 1;
+
+        let raw_input = self.egui_state.take_egui_input(&self.window);
+        let ctx = self.egui_state.egui_ctx().clone();
+        let mut actions = Vec::new();
+        let mut output = ctx.run_ui(raw_input, |ui| {
+            actions = ui::draw(ui, &mut self.view, self.texture.as_ref());
+        });
+        for action in actions {
+            self.act(action);
+        }
+        self.egui_state
+            .handle_platform_output(&self.window, output.platform_output);
+        let jobs = ctx.tessellate(output.shapes, output.pixels_per_point);
+        let surface_texture = match self.wgpu.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(t)
+            | wgpu::CurrentSurfaceTexture::Suboptimal(t) => Some(t),
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                let size = self.window.inner_size();
+                self.wgpu.resize(size.width, size.height);
+                None
+            }
+            _ => None,
+        };
+        let gpu = &self.wgpu.gpu;
+        // Drained as they are applied: egui checks that none is dropped unapplied.
+        let mut textures = std::mem::take(&mut output.textures_delta);
+        for (id, deltas) in textures.set.drain() {
+            for delta in &deltas {
+                self.egui_renderer
+                    .update_texture(&gpu.device, &gpu.queue, id, delta);
+            }
+        }
+        let screen = egui_wgpu::ScreenDescriptor {
+            size_in_pixels: [self.wgpu.config.width, self.wgpu.config.height],
+            pixels_per_point: output.pixels_per_point,
+        };
+        let last_frame = self.frames.is_some_and(|frames| self.drawn >= frames);
+        let capture = (last_frame && self.screenshot.is_some()).then(|| self.wgpu.capture_target());
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        let commands = self.egui_renderer.update_buffers(
+            &gpu.device,
+            &gpu.queue,
+            &mut encoder,
+            &jobs,
+            &screen,
+        );
+        let targets = surface_texture
+            .iter()
+            .map(|t| &t.texture)
+            .chain(capture.as_ref());
+        for target in targets {
+            let view = target.create_view(&Default::default());
+            let mut pass = encoder
+                .begin_render_pass(&wgpu::RenderPassDescriptor {
+                    label: Some("aokit view egui"),
+                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                        view: &view,
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                            store: wgpu::StoreOp::Store,
+                        },
+                    })],
+                    ..Default::default()
+                })
+                .forget_lifetime();
+            self.egui_renderer.render(&mut pass, &jobs, &screen);
+        }
+        gpu.queue
+            .submit(commands.into_iter().chain([encoder.finish()]));
+        if let Some(texture) = surface_texture {
+            self.window.pre_present_notify();
+            gpu.queue.present(texture);
+        }
+        for id in textures.free.drain() {
+            self.egui_renderer.free_texture(&id);
+        }
+        if let (Some(target), Some(path)) = (&capture, &self.screenshot) {
+            let rgba = self.wgpu.read_rgba(target)?;
+            let size = [target.width(), target.height()];
+            aokit_eval::write_rgba_png(path, size, &rgba)
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            outln!(
+                "wrote {} ({}x{}, frame {}, {} at {:.0}% scale: {}x{})",
+                path.display(),
+                size[0],
+                size[1],
+                self.drawn,
+                self.view.mode.name(),
+                self.view.scale * 100.0,
+                self.view.render_size[0],
+                self.view.render_size[1]
+            );
+        }
+        Ok(!last_frame)
+    }
+
+    /// Applies changed settings, renders one frame of the scene at the view's size and scale,
+    /// and puts the image the display mode shows into the texture the central area draws.
+    fn render_scene(&mut self) {
+        let gpu = &self.wgpu.gpu;
+        if self.view.settings != *self.renderer.settings()
+            && let Err(e) = self.renderer.set_settings(gpu, &self.view.settings)
+        {
+            self.view.error = Some(format!("settings refused: {e}"));
+            self.view.settings = *self.renderer.settings();
+        }
+        let size = frame::internal_size(self.view.area, self.view.scale);
+        self.view.render_size = size;
+        self.renderer.debug_views = self.view.mode.debug_view().into_iter().collect();
+        let started = Instant::now();
+        let result =
+            self.renderer
+                .render_at(gpu, &self.view.camera.camera(), size, self.frame_index, 0.0);
+        self.frame_index += 1;
+        let frame = match result {
+            Ok(frame) => frame,
+            Err(e) => {
+                self.view.error = Some(format!("{} view: {e}", self.view.mode.name()));
+                return;
+            }
+        };
+        let passes = if self.view.timestamps {
+            self.renderer.last_ao_times(gpu).and_then(Result::ok)
+        } else {
+            None
+        };
+        self.view.timings.add(started.elapsed(), passes.as_deref());
+        let Some(rgba) = frame::image_of(&frame, self.view.mode) else {
+            self.view.error = Some(format!("no {} image this frame", self.view.mode.name()));
+            return;
+        };
+        self.view.error = None;
+        let image = egui::ColorImage::from_rgba_unmultiplied(
+            [frame.size[0] as usize, frame.size[1] as usize],
+            &rgba,
+        );
+        match &mut self.texture {
+            Some(texture) => texture.set(image, egui::TextureOptions::LINEAR),
+            None => {
+                self.texture = Some(self.egui_state.egui_ctx().load_texture(
+                    "aokit scene",
+                    image,
+                    egui::TextureOptions::LINEAR,
+                ))
+            }
+        }
+    }
+}

@@ -1,0 +1,303 @@
+//! `aokit view`, the interactive viewer, in its screenshot mode under Xvfb: `xvfb-run -a aokit
+//! view --frames 5 --screenshot FILE` opens the window, renders five frames and writes a PNG of
+//! the window. Skipped (with a notice) where `xvfb-run` is not installed (Debian package
+//! `xvfb`), unless `AOKIT_REQUIRE_XVFB=1` says it must be there (CI). The panel's generation
+//! from the settings' declarations is tested without a window in src/view/panel.rs.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+use crate::common::{command, failure, ok, output, text};
+
+/// Whether `xvfb-run` is here; panics where `AOKIT_REQUIRE_XVFB=1` but it is not.
+fn have_xvfb() -> bool {
+    let found = Command::new("xvfb-run").arg("--help").output().is_ok();
+    if !found {
+        assert!(
+            std::env::var("AOKIT_REQUIRE_XVFB").as_deref() != Ok("1"),
+            "AOKIT_REQUIRE_XVFB=1 but xvfb-run (Debian package xvfb) does not run"
+        );
+        eprintln!("skipping: no xvfb-run (Debian package xvfb): `aokit view` needs a display");
+    }
+    found
+}
+
+/// `aokit args` run in `dir` under a fresh Xvfb display.
+fn aokit_in_xvfb(dir: &Path, args: &[&str]) -> Output {
+    let aokit = command(dir, args);
+    let mut xvfb = Command::new("xvfb-run");
+    // A 24-bit screen: the default 8-bit one has no visual a Vulkan swapchain presents to.
+    xvfb.args(["-a", "-s", "-screen 0 1024x768x24"])
+        .arg(aokit.get_program())
+        .args(aokit.get_args())
+        .current_dir(dir);
+    output(&mut xvfb)
+}
+
+/// The mean of the RGB channels over a box of `r` (a fraction of the width) about the point
+/// (`x`, `y`), given as fractions of the image's size.
+fn mean_grey(image: &image::RgbaImage, x: f32, y: f32, r: f32) -> f32 {
+    let (w, h) = image.dimensions();
+    let (cx, cy, half) = (
+        (x * w as f32) as i64,
+        (y * h as f32) as i64,
+        (r * w as f32) as i64,
+    );
+    let mut sum = 0.0;
+    let mut count = 0.0;
+    for py in (cy - half)..=(cy + half) {
+        for px in (cx - half)..=(cx + half) {
+            let p = image.get_pixel(px as u32, py as u32);
+            sum += (f32::from(p[0]) + f32::from(p[1]) + f32::from(p[2])) / 3.0;
+            count += 1.0;
+        }
+    }
+    sum / count
+}
+
+#[test]
+fn screenshot_of_the_room_shows_the_window_with_a_dark_corner() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit_in_xvfb(
+        dir.path(),
+        &[
+            "view",
+            "--scene",
+            "room",
+            "--mode",
+            "ao",
+            "--no-panel",
+            "--window-size",
+            "320x180",
+            "--frames",
+            "5",
+            "--screenshot",
+            "shot.png",
+        ],
+    );
+    let stdout = ok(&out);
+    assert!(stdout.contains("wrote shot.png (320x180"), "{stdout}");
+    let shot = image::open(dir.path().join("shot.png")).unwrap().to_rgba8();
+    assert_eq!(shot.dimensions(), (320, 180));
+    // The `front` camera looks at the back wall: its left end meets the left wall and the
+    // floor in a concave corner; the floor in front of the camera is open. (The bottom edge
+    // holds the software-adapter note on lavapipe: the floor is sampled above it.)
+    let corner = mean_grey(&shot, 0.31, 0.5, 0.02);
+    let floor = mean_grey(&shot, 0.5, 0.72, 0.02);
+    assert!(floor > 240.0, "open floor should be unoccluded: {floor}");
+    assert!(
+        corner < floor - 30.0,
+        "the corner ({corner}) should be darker than the open floor ({floor})"
+    );
+}
+
+#[test]
+fn screenshot_with_the_panel_is_the_window_size_and_draws_the_panel() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = aokit_in_xvfb(
+        dir.path(),
+        &[
+            "view",
+            "--window-size",
+            "640x360",
+            "--frames",
+            "3",
+            "--screenshot",
+            "panel.png",
+        ],
+    );
+    let stdout = ok(&out);
+    assert!(stdout.contains("wrote panel.png (640x360"), "{stdout}");
+    let shot = image::open(dir.path().join("panel.png"))
+        .unwrap()
+        .to_rgba8();
+    assert_eq!(shot.dimensions(), (640, 360));
+    // egui's dark panel on the left, the lit room (bright walls and floor) on the right.
+    let panel = mean_grey(&shot, 0.1, 0.5, 0.03);
+    let scene = mean_grey(&shot, 0.8, 0.8, 0.03);
+    assert!(panel < 80.0, "panel: {panel}");
+    assert!(scene > panel + 60.0, "scene {scene} vs panel {panel}");
+}
+
+#[test]
+fn bad_flags_are_refused_before_any_window_opens() {
+    let dir = tempfile::tempdir().unwrap();
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--screenshot", "shot.jpg", "--frames", "1"],
+    ));
+    assert!(err.contains("must name a .png file"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--mode", "sideways"],
+    ));
+    assert!(err.contains("unknown display mode"), "{err}");
+    let err = failure(&crate::common::aokit(dir.path(), &["view", "--scale", "7"]));
+    assert!(err.contains("outside"), "{err}");
+    // Without a display, the error says how to get one.
+    let out = output(
+        command(dir.path(), &["view", "--frames", "1"])
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY"),
+    );
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("xvfb-run"),
+        "{}",
+        text(&out.stderr)
+    );
+}
+
+/// The panel's widgets as `--panel-layout` prints them: every declared setting gets one, in its
+/// key's group, of its kind, within its declared bounds. No window opens.
+#[test]
+fn the_panel_has_a_widget_within_its_bounds_for_every_declared_setting() {
+    use aokit::settings::{SETTINGS, SettingKind};
+    use aokit::{AoSettings, Method, Preset};
+
+    let dir = tempfile::tempdir().unwrap();
+    for (method, preset) in [(Method::Gtao, Preset::High), (Method::Vbao, Preset::Low)] {
+        let layout = ok(&crate::common::aokit(
+            dir.path(),
+            &[
+                "view",
+                "--scene",
+                "room",
+                "--method",
+                method.name(),
+                "--preset",
+                preset.name(),
+                "--panel-layout",
+            ],
+        ));
+        let lines: Vec<Vec<&str>> = layout
+            .lines()
+            .map(|line| line.split('\t').collect())
+            .collect();
+        assert_eq!(lines.len(), SETTINGS.len(), "{layout}");
+        // The settings the flags give: the preset with the room's radius.
+        let mut settings = AoSettings::preset(method, preset);
+        settings.radius = 1.0;
+        for spec in SETTINGS {
+            let line = lines
+                .iter()
+                .find(|fields| fields[1] == spec.name)
+                .unwrap_or_else(|| panic!("no widget for {}", spec.name));
+            let group = spec.name.split_once('.').map_or("general", |(g, _)| g);
+            assert_eq!(line[0], group, "{}", spec.name);
+            let widget: Vec<&str> = line[2].split(' ').collect();
+            let number = |text: &str| -> f32 { text.parse().unwrap() };
+            match spec.kind {
+                SettingKind::Bool => assert_eq!(widget, ["check"]),
+                SettingKind::Integer(range) => assert_eq!(
+                    line[2],
+                    format!(
+                        "int-slider {}..={} step {}",
+                        range.min, range.max, range.step
+                    )
+                ),
+                SettingKind::Choice(names) => {
+                    assert_eq!(widget, ["combo", &names.join("|")], "{}", spec.name)
+                }
+                SettingKind::Float(range) => match widget[..] {
+                    ["float-slider", bounds] => {
+                        let (min, max) = bounds.split_once("..=").unwrap();
+                        let (min, max) = (number(min), number(max));
+                        assert!(min <= max, "{}: {bounds}", spec.name);
+                        assert!(range.contains(min, &settings), "{}: {min}", spec.name);
+                        assert!(range.contains(max, &settings), "{}: {max}", spec.name);
+                    }
+                    ["float-drag", bounds] => {
+                        let min = number(bounds.strip_suffix("..").unwrap());
+                        assert!(range.contains(min, &settings), "{}: {min}", spec.name);
+                        assert_eq!(range.max_value(&settings), None, "{}", spec.name);
+                    }
+                    _ => panic!("{}: a float got {}", spec.name, line[2]),
+                },
+            }
+        }
+    }
+}
+
+/// Drives the window with xdotool under Xvfb: `P` prints the pose, holding `W` flies forward, a
+/// right-button drag to the right turns the view right, `Escape` quits. Needs xdotool as well
+/// (skipped without it unless `AOKIT_REQUIRE_XVFB=1`).
+#[test]
+fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
+    if !have_xvfb() {
+        return;
+    }
+    if Command::new("xdotool").arg("version").output().is_err() {
+        assert!(
+            std::env::var("AOKIT_REQUIRE_XVFB").as_deref() != Ok("1"),
+            "AOKIT_REQUIRE_XVFB=1 but xdotool (Debian package xdotool) does not run"
+        );
+        eprintln!("skipping: no xdotool (Debian package xdotool)");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // The window opens, `P`, `W` held for a second and a half, `P`, a drag, `P`, `Escape`.
+    let script = r#"
+        "$1" view --scene room --window-size 320x180 --no-panel > out.txt 2> err.txt &
+        app=$!
+        window=$(xdotool search --sync --name "aokit view" | head -n 1)
+        sleep 1
+        # No window manager: focus the window and put the pointer over it.
+        xdotool windowfocus --sync "$window"
+        xdotool mousemove --window "$window" 160 90
+        xdotool key p; sleep 0.5
+        xdotool keydown w; sleep 1.5; xdotool keyup w; sleep 0.5
+        xdotool key p; sleep 0.5
+        xdotool mousemove --window "$window" 160 90 mousedown 3
+        for i in 1 2 3 4 5 6 7 8 9 10; do xdotool mousemove_relative 10 0; sleep 0.1; done
+        xdotool mouseup 3; sleep 0.5
+        xdotool key p; sleep 0.5
+        xdotool key Escape
+        wait $app
+    "#;
+    let out = output(
+        Command::new("xvfb-run")
+            .args([
+                "-a",
+                "-s",
+                "-screen 0 1024x768x24",
+                "sh",
+                "-c",
+                script,
+                "sh",
+            ])
+            .arg(env!("CARGO_BIN_EXE_aokit"))
+            .current_dir(dir.path()),
+    );
+    let printed = std::fs::read_to_string(dir.path().join("out.txt")).unwrap();
+    let errors = std::fs::read_to_string(dir.path().join("err.txt")).unwrap();
+    assert!(out.status.success(), "{}\n{errors}", text(&out.stderr));
+    let poses: Vec<[f32; 6]> = printed
+        .lines()
+        .map(|line| {
+            let words: Vec<&str> = line.split(' ').collect();
+            assert_eq!(words[0], "--eye", "{line}");
+            assert_eq!(words[2], "--target", "{line}");
+            let mut values = words[1].split(',').chain(words[3].split(','));
+            std::array::from_fn(|_| values.next().unwrap().parse().unwrap())
+        })
+        .collect();
+    assert_eq!(poses.len(), 3, "{printed}\n{errors}");
+    // The room's `front` camera, looking down -Z.
+    assert_eq!(poses[0], [0.0, 2.4, 6.5, 0.0, 0.9, -1.2]);
+    // W: forward, towards -Z; the view direction is kept.
+    assert!(poses[1][2] < 6.0, "{printed}");
+    assert!(
+        poses[1][0].abs() < 1e-3 && poses[1][3].abs() < 1e-3,
+        "{printed}"
+    );
+    // A drag to the right turns right: the target moves to +X, the eye stays.
+    assert_eq!(poses[2][..3], poses[1][..3], "{printed}");
+    assert!(poses[2][3] > 0.5, "{printed}");
+}
