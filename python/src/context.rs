@@ -33,6 +33,16 @@ struct Frame {
 /// AO of one frame, and its bent normals when asked for.
 type Output = (Vec<f32>, Option<Vec<[f32; 4]>>);
 
+/// One frame as the Python layer hands it in: depth and normal bytes, and the camera.
+type FrameIn<'py> = (
+    Bound<'py, PyBytes>,
+    Option<Bound<'py, PyBytes>>,
+    PyRef<'py, Camera>,
+);
+
+/// One frame's AO and bent normals as bytearrays.
+type FrameOut<'py> = (Bound<'py, PyByteArray>, Option<Bound<'py, PyByteArray>>);
+
 fn render_error(error: RenderError) -> PyErr {
     use aokit::AoError;
     match error {
@@ -142,11 +152,7 @@ impl Context {
     fn run<'py>(
         &mut self,
         py: Python<'py>,
-        frames: Vec<(
-            Bound<'py, PyBytes>,
-            Option<Bound<'py, PyBytes>>,
-            PyRef<'py, Camera>,
-        )>,
+        frames: Vec<FrameIn<'py>>,
         names: Vec<(String, String)>,
         depth_kind: &str,
         normal_space: Option<&str>,
@@ -156,7 +162,7 @@ impl Context {
         settings: Option<&Bound<'py, PyDict>>,
         bent_normals: bool,
         first_frame: u32,
-    ) -> PyResult<Vec<(Bound<'py, PyByteArray>, Option<Bound<'py, PyByteArray>>)>> {
+    ) -> PyResult<Vec<FrameOut<'py>>> {
         let depth_kind: DepthKind = depth_kind
             .parse()
             .map_err(|e: String| PyValueError::new_err(format!("depth_kind: {e}")))?;

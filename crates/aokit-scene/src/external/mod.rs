@@ -280,6 +280,7 @@ impl ExternalAo {
     /// }
     /// # Ok(()) }
     /// ```
+    #[allow(clippy::type_complexity)]
     pub fn run_with_bent_normals(
         &mut self,
         gpu: &GpuContext,
@@ -288,6 +289,7 @@ impl ExternalAo {
         self.run_outputs(gpu, frame_index, true)
     }
 
+    #[allow(clippy::type_complexity)]
     fn run_outputs(
         &mut self,
         gpu: &GpuContext,
