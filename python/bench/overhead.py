@@ -5,8 +5,8 @@
 Renders a G-buffer of the stairs with the `aokit` CLI ($AOKIT_BIN, else cargo's target
 directory), makes FRAMES frames of it (shifted a pixel each), times `ao_batch` on them, and
 times the Rust example `rust_batch` (python/bench/rust_batch.rs: `ExternalAo` with the passes
-replaced each frame, as `ao_batch` runs it) on the same frames, each after a warm-up. Prints
-both and their ratio. Both run the default settings (GTAO high) on the same adapter; build both
+replaced each frame, as `ao_batch` runs it) on the same frames, each after a warm-up, in
+ROUNDS alternating rounds of REPEATS batches. Prints the medians and the ratio of each round. Both run the default settings (GTAO high) on the same adapter; build both
 in the same profile (`maturin develop` and `cargo run` are dev builds with optimised
 dependencies, `--release` for both otherwise).
 """
@@ -14,7 +14,7 @@ dependencies, `--release` for both otherwise).
 from __future__ import annotations
 
 import argparse
-import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -35,6 +35,7 @@ def main() -> None:
     parser.add_argument("--size", default="320x180")
     parser.add_argument("--frames", type=int, default=8)
     parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--release", action="store_true", help="run the Rust side in release")
     args = parser.parse_args()
     cli = _find_cli()
@@ -59,28 +60,33 @@ def main() -> None:
 
         ctx = aokit.Context()
         ctx.ao_batch(depths, normal_frames, cameras=camera)
-        started = time.perf_counter()
-        for _ in range(args.repeats):
-            ctx.ao_batch(depths, normal_frames, cameras=camera)
-        python_ms = (time.perf_counter() - started) * 1e3 / args.repeats
-
         cargo = ["cargo", "run", "--quiet", "-p", "aokit-python", "--example", "rust_batch"]
         if args.release:
             cargo.insert(2, "--release")
-        out = subprocess.run(
-            [*cargo, "--", str(d), str(args.frames), str(args.repeats)],
-            check=True,
-            capture_output=True,
-            text=True,
-            cwd=REPO,
-            env={**os.environ},
-        )
-        rust_ms = float(out.stdout.strip().splitlines()[-1])
+        rust = [*cargo, "--", str(d), str(args.frames), str(args.repeats)]
+        subprocess.run(rust, check=True, capture_output=True, cwd=REPO)  # build it first
+        # Rounds alternate the two sides, so that a busy spell of a shared machine falls on
+        # both; the medians are reported.
+        python_times, rust_times = [], []
+        for _ in range(args.rounds):
+            started = time.perf_counter()
+            for _ in range(args.repeats):
+                ctx.ao_batch(depths, normal_frames, cameras=camera)
+            python_times.append((time.perf_counter() - started) * 1e3 / args.repeats)
+            out = subprocess.run(rust, check=True, capture_output=True, text=True, cwd=REPO)
+            rust_times.append(float(out.stdout.strip().splitlines()[-1]))
+    python_ms = statistics.median(python_times)
+    rust_ms = statistics.median(rust_times)
+    ratios = sorted(p / r for p, r in zip(python_times, rust_times))
     print(f"adapter: {ctx.adapter}")
-    print(f"{args.frames} frames of {args.size}, GTAO high, mean of {args.repeats} batches")
+    print(
+        f"{args.frames} frames of {args.size}, GTAO high, median of {args.rounds} rounds "
+        f"of {args.repeats} batches"
+    )
     print(f"ao_batch (Python): {python_ms:.1f} ms per batch ({python_ms / args.frames:.2f} ms per frame)")
     print(f"ExternalAo (Rust): {rust_ms:.1f} ms per batch ({rust_ms / args.frames:.2f} ms per frame)")
-    print(f"ratio: {python_ms / rust_ms:.3f} (overhead {100 * (python_ms / rust_ms - 1):+.1f}%)")
+    print(f"ratio of the medians: {python_ms / rust_ms:.3f}")
+    print(f"ratio per round: {', '.join(f'{r:.3f}' for r in ratios)}")
 
 
 if __name__ == "__main__":
