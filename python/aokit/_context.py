@@ -24,6 +24,10 @@ class Context:
     one context for all the images of a session. `adapter="auto"` takes a GPU where there is
     one, else the software rasteriser (lavapipe); `"software"` takes lavapipe even beside a
     GPU; `"hardware"` refuses to fall back. Raises RuntimeError when there is no such adapter.
+
+    A context runs one call at a time: the GIL is released while the GPU works, and a call
+    from another thread meanwhile raises RuntimeError (already borrowed). Use one context per
+    thread to run in parallel.
     """
 
     def __init__(self, adapter: Adapter = "auto") -> None:

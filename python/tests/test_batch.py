@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import threading
+import time
+
 import numpy as np
 
 import aokit
@@ -58,3 +61,31 @@ def test_bent_normals_in_a_batch(ctx, gbuffer):
     depths, normals = frames(gbuffer, 2)
     ao, bent = ctx.ao_batch(depths, normals, cameras=gbuffer.camera, bent_normals=True)
     assert ao.shape == (2, 32, 48) and bent.shape == (2, 32, 48, 3)
+
+
+def test_the_gil_is_released_while_the_gpu_works(ctx):
+    # A Python thread keeps counting while the pipeline runs: with the GIL held it would not
+    # count at all during the native call.
+    camera = aokit.Camera.perspective(60.0, 256, 256)
+    depth = np.full((4, 256, 256), 3.0, dtype=np.float32)
+    ctx.ao_batch(depth, cameras=camera)
+    count, done = [0], [False]
+
+    def spin():
+        while not done[0]:
+            count[0] += 1
+
+    spinner = threading.Thread(target=spin, daemon=True)
+    spinner.start()
+    try:
+        time.sleep(0.05)
+        started, before = time.perf_counter(), count[0]
+        ctx.ao_batch(depth, cameras=camera)
+        elapsed, during = time.perf_counter() - started, count[0] - before
+        before = count[0]
+        time.sleep(elapsed)
+        idle = count[0] - before
+    finally:
+        done[0] = True
+        spinner.join()
+    assert during > 0.02 * idle, (during, idle)

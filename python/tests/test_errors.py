@@ -111,3 +111,27 @@ def test_no_adapter_raises_runtime_error(monkeypatch):
         aokit.Context()
     with pytest.raises(ValueError, match="adapter: `tpu`"):
         aokit.Context("tpu")
+
+
+def test_resolved_settings_and_the_table():
+    table = aokit.settings_table()
+    keys = [row[0] for row in table]
+    assert "gtao.slice_count" in keys and "spatial.enabled" in keys
+    resolved = aokit.resolve_settings("hbao", "low", 0.5, {"spatial.enabled": True, "noise.kind": "blue"})
+    assert set(resolved) == set(keys)
+    assert resolved["method"] == "hbao" and resolved["radius"] == 0.5
+    assert resolved["spatial.enabled"] is True and resolved["noise.kind"] == "blue"
+    # Strings are read as `--set` reads them; numpy scalars are numbers.
+    assert aokit.resolve_settings(settings={"gtao.slice_count": "4"})["gtao.slice_count"] == 4
+    assert aokit.resolve_settings(settings={"gtao.slice_count": np.int64(5)})["gtao.slice_count"] == 5
+    assert aokit.resolve_settings(settings={"power": np.float32(1.5)})["power"] == 1.5
+    with pytest.raises(ValueError, match="out of range"):
+        aokit.resolve_settings(settings={"gtao.slice_count": 0})
+
+
+def test_orthographic_cameras_run(ctx):
+    cam = aokit.Camera.orthographic(4.0, 16, 12, near=0.5, far=50.0)
+    assert cam.projection == "orthographic" and cam.ortho_height == 4.0 and cam.far == 50.0
+    assert aokit.Camera.from_json(cam.to_dict()) == cam
+    ao = ctx.ao(DEPTH, NORMALS, camera=cam)
+    assert ao.shape == (12, 16) and np.all(ao > 0.99)
