@@ -23,13 +23,15 @@ fi
 rm -rf "$VENV"
 "$PYTHON" -m venv "$VENV"
 "$VENV/bin/python" -m pip install --quiet --upgrade pip
-"$VENV/bin/python" -m pip install --quiet "maturin>=1.9,<2" "pytest>=7" numpy
+"$VENV/bin/python" -m pip install --quiet "maturin>=1.9,<2" "pytest>=7" numpy mypy
 # The wheel in the dev profile, from the build `cargo test` left (a release build of wgpu
 # would double CI's time); `pip install ./python` builds the same package in release.
 rm -rf "$TARGET/python-wheels"
 "$VENV/bin/maturin" build --quiet --profile dev --manifest-path python/Cargo.toml \
     --interpreter "$VENV/bin/python" --out "$TARGET/python-wheels"
 "$VENV/bin/python" -m pip install --quiet "$TARGET"/python-wheels/aokit-*.whl
+# The package's annotations and the native module's stubs (aokit/_aokit.pyi) agree.
+"$VENV/bin/mypy" --strict --no-incremental python/aokit
 # The CLI the parity tests compare against; they fail rather than skip without it.
 cargo build --quiet -p aokit-cli
 export AOKIT_BIN="$TARGET/debug/aokit" AOKIT_REQUIRE_CLI=1

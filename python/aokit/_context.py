@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal, Mapping, Optional, Sequence, Tuple, Union, overload
+from typing import Any, List, Literal, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -132,12 +132,16 @@ class Context:
             bent_normals=bent_normals,
             first_frame=frame_index,
         )
-        return results[0] if bent_normals else results[0][0]
+        ao, bent = results[0]
+        if bent_normals:
+            assert bent is not None, "the pipeline returned no bent normals"
+            return ao, bent
+        return ao
 
     def ao_batch(
         self,
-        depths: Union[npt.ArrayLike, Sequence[npt.ArrayLike]],
-        normals: Optional[Union[npt.ArrayLike, Sequence[npt.ArrayLike]]] = None,
+        depths: Union[np.ndarray, Sequence[npt.ArrayLike]],
+        normals: Optional[Union[np.ndarray, Sequence[npt.ArrayLike]]] = None,
         *,
         cameras: Union[Camera, Sequence[Camera]],
         depth_kind: DepthKind = "linear",
@@ -193,7 +197,7 @@ class Context:
         ao_out: Any = np.stack(aos) if same_size else aos
         if not bent_normals:
             return ao_out
-        bents = [b for _, b in results]
+        bents = [b for _, b in results if b is not None]
         return ao_out, (np.stack(bents) if same_size else bents)
 
     def _run(
@@ -211,7 +215,7 @@ class Context:
         settings: Optional[Mapping[str, SettingValue]],
         bent_normals: bool,
         first_frame: int,
-    ) -> list:
+    ) -> List[Tuple[np.ndarray, Optional[np.ndarray]]]:
         frames = []
         names = []
         for i, depth in enumerate(depths):
