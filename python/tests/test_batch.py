@@ -89,3 +89,17 @@ def test_the_gil_is_released_while_the_gpu_works(ctx):
         done[0] = True
         spinner.join()
     assert during > 0.02 * idle, (during, idle)
+
+
+def test_adapter_kinds():
+    software = aokit.Context("software")
+    assert software.software
+    depth = np.full((12, 16), 2.0, dtype=np.float32)
+    camera = aokit.Camera.perspective(60.0, 16, 12)
+    assert np.all(software.ao(depth, camera=camera) > 0.99)
+    try:
+        hardware = aokit.Context("hardware")
+    except RuntimeError as error:
+        assert "no GPU adapter" in str(error) or "no adapter" in str(error), error
+    else:
+        assert not hardware.software
