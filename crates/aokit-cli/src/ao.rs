@@ -29,7 +29,7 @@ pub struct AoArgs {
     #[arg(long, value_name = "camera.json")]
     pub camera: PathBuf,
     /// Whether the depth is linear view depth or depth-buffer values.
-    #[arg(long, value_enum, default_value = "linear")]
+    #[arg(long, value_parser = passes::depth_kind_parser(), default_value = "linear")]
     pub depth_kind: DepthKind,
     /// Whether the normals are in view or world space (camera.json's `view_from_world` turns
     /// world-space ones); the same as `--set normals.space=SPACE`, which wins when both are

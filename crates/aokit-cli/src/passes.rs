@@ -7,16 +7,15 @@ use anyhow::{Context, Result, anyhow, bail};
 use aokit::{NormalSpace, Projection};
 use aokit_eval::{read_depth, read_normals};
 use aokit_scene::CameraFile;
-use clap::ValueEnum;
+pub use aokit_scene::external::DepthKind;
+use aokit_scene::external::{linear_depth, view_normals};
 use glam::Vec3;
 
-/// What the depth file holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum DepthKind {
-    /// Positive distance along the view axis.
-    Linear,
-    /// Depth-buffer values in [0, 1], in the convention camera.json names.
-    Ndc,
+/// `--depth-kind`: the names [`DepthKind`] takes, listed in `--help`.
+pub fn depth_kind_parser() -> impl clap::builder::TypedValueParser<Value = DepthKind> {
+    use clap::builder::TypedValueParser;
+    clap::builder::PossibleValuesParser::new(DepthKind::ALL.map(DepthKind::name))
+        .map(|name| name.parse().expect("one of DepthKind::ALL's names"))
 }
 
 /// Passes ready for the AO pipeline.
@@ -69,30 +68,14 @@ pub fn load(
         camera: camera_path,
     } = *files;
     let camera = read_camera(camera_path)?;
-    let projection = camera
-        .projection()
+    let (projection, view_from_world) = camera
+        .checked()
         .map_err(|e| anyhow!("{}: {e}", camera_path.display()))?;
-    let view_from_world = camera.view_from_world();
-    if !view_from_world.is_finite() {
-        bail!(
-            "{}: view_from_world has non-finite entries",
-            camera_path.display()
-        );
-    }
-    // World-space normals are turned by the rotation part: a zero or degenerate one (a
-    // camera.json written by hand) would turn every normal into zero, which decodes to a normal
-    // facing the camera and darkens the AO without a word.
-    if normal_space == NormalSpace::World && normals_path.is_some() {
-        let rotation = glam::Mat3::from_mat4(view_from_world);
-        let determinant = rotation.determinant();
-        if !(determinant.is_finite() && determinant.abs() > 1e-6) {
-            bail!(
-                "{}: view_from_world's 3x3 part has determinant {determinant}, not a rotation; \
-                 world-space normals (--normal-space world) cannot be turned into view space \
-                 with it",
-                camera_path.display()
-            );
-        }
+    // World-space normals are turned by the rotation part: a degenerate one (a camera.json
+    // written by hand) is refused before any image is read.
+    if normals_path.is_some() {
+        view_normals(Vec::new(), normal_space, view_from_world)
+            .map_err(|e| anyhow!("{}: {e} (--normal-space world)", camera_path.display()))?;
     }
     let size = [camera.width, camera.height];
     let read_linear = |path: &Path| -> Result<Vec<f32>> {
@@ -108,37 +91,8 @@ pub fn load(
                 size[1]
             );
         }
-        Ok(match depth_kind {
-            DepthKind::Linear => depth.data,
-            DepthKind::Ndc => {
-                // Depth-buffer values lie in [0, 1]; others (linear depth given by mistake)
-                // would map to plausible but wrong distances. Non-finite values stay background.
-                let outside = |d: &f32| d.is_finite() && !(0.0..=1.0).contains(d);
-                let bad = depth.data.iter().filter(|d| outside(d)).count();
-                if bad > 0 {
-                    let (i, example) = depth
-                        .data
-                        .iter()
-                        .enumerate()
-                        .find(|(_, d)| outside(d))
-                        .expect("counted above");
-                    bail!(
-                        "{}: {bad} of {} pixels hold depth outside [0, 1] (e.g. {example} at \
-                         x {}, y {}), which --depth-kind ndc needs; is it linear depth \
-                         (--depth-kind linear)?",
-                        path.display(),
-                        depth.data.len(),
-                        i % size[0] as usize,
-                        i / size[0] as usize
-                    );
-                }
-                depth
-                    .data
-                    .iter()
-                    .map(|&d| projection.surface_depth(d))
-                    .collect()
-            }
-        })
+        linear_depth(depth.data, depth_kind, &projection, size[0])
+            .map_err(|e| anyhow!("{}: {e}", path.display()))
     };
     let linear_depth = read_linear(depth_path)?;
     let back_depth = back_depth_path.map(read_linear).transpose()?;
@@ -155,17 +109,13 @@ pub fn load(
                     size[1]
                 );
             }
-            Ok(image
+            let normals = image
                 .data
                 .chunks_exact(3)
-                .map(|n| {
-                    let n = Vec3::new(n[0], n[1], n[2]);
-                    match normal_space {
-                        NormalSpace::View => n,
-                        NormalSpace::World => view_from_world.transform_vector3(n),
-                    }
-                })
-                .collect())
+                .map(|n| Vec3::new(n[0], n[1], n[2]))
+                .collect();
+            view_normals(normals, normal_space, view_from_world)
+                .map_err(|e| anyhow!("{}: {e}", camera_path.display()))
         })
         .transpose()?;
     Ok(LoadedPasses {

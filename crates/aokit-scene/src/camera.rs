@@ -432,6 +432,29 @@ impl CameraFile {
     pub fn view_from_world(&self) -> Mat4 {
         Mat4::from_cols_array_2d(&self.view_from_world).transpose()
     }
+
+    /// The projection ([`CameraFile::projection`]) and the world-to-view matrix, checked: what
+    /// `aokit ao` and the Python package refuse a camera.json for.
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use aokit_scene::CameraFile;
+    /// use glam::Mat4;
+    /// let projection = Projection::perspective(1.0, 1.0, 0.1, None);
+    /// let mut file = CameraFile::new(&projection, Mat4::IDENTITY, [8, 8]);
+    /// assert_eq!(file.checked()?, (projection, Mat4::IDENTITY));
+    /// file.view_from_world[1][2] = f32::NAN;
+    /// assert!(file.checked().unwrap_err().contains("non-finite"));
+    /// # Ok::<(), String>(())
+    /// ```
+    pub fn checked(&self) -> Result<(Projection, Mat4), String> {
+        let projection = self.projection()?;
+        let view_from_world = self.view_from_world();
+        if !view_from_world.is_finite() {
+            return Err("view_from_world has non-finite entries".into());
+        }
+        Ok((projection, view_from_world))
+    }
 }
 
 #[cfg(test)]

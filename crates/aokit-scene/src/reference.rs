@@ -1,6 +1,6 @@
 //! The ray-traced reference of a scene: the same triangles and the same pixels as the raster.
 
-use aokit::ProjectionKind;
+use aokit::{Projection, ProjectionKind};
 use aokit_reference::{Lens as RayLens, PixelCamera, ReferenceError, Tracer};
 
 use crate::camera::Camera;
@@ -61,6 +61,28 @@ pub fn tracer_at(scene: &Scene, time: f32) -> Result<Tracer, ReferenceError> {
 /// ```
 pub fn pixel_camera(scene: &Scene, camera: &Camera, size: [u32; 2]) -> PixelCamera {
     let projection = camera.projection(size[0] as f32 / size[1] as f32, &scene.bounds);
+    pixel_camera_for(&projection, camera.view_from_world(), size)
+}
+
+/// The tracer's pixel grid for a rasteriser's `projection` and `view_from_world` at `size`: the
+/// camera of a camera.json ([`crate::CameraFile::checked`]), for ground truth of exported
+/// passes.
+///
+/// ```
+/// use aokit::Projection;
+/// use aokit_reference::Lens;
+/// use aokit_scene::reference::pixel_camera_for;
+/// use glam::Mat4;
+/// let projection = Projection::orthographic(4.0, 2.0, 0.5, 20.0);
+/// let camera = pixel_camera_for(&projection, Mat4::IDENTITY, [64, 32]);
+/// assert_eq!(camera.lens, Lens::Orthographic { height: 4.0 });
+/// assert_eq!((camera.near, camera.far), (0.5, Some(20.0)));
+/// ```
+pub fn pixel_camera_for(
+    projection: &Projection,
+    view_from_world: glam::Mat4,
+    size: [u32; 2],
+) -> PixelCamera {
     let lens = match projection.kind {
         ProjectionKind::Perspective { fov_y } => RayLens::Perspective { fov_y },
         ProjectionKind::Orthographic { height } => RayLens::Orthographic { height },
@@ -68,7 +90,7 @@ pub fn pixel_camera(scene: &Scene, camera: &Camera, size: [u32; 2]) -> PixelCame
     PixelCamera {
         size,
         lens,
-        view_from_world: camera.view_from_world(),
+        view_from_world,
         near: projection.near,
         far: projection.far,
     }

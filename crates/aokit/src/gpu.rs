@@ -159,6 +159,24 @@ impl GpuContext {
     /// # Ok(()) }
     /// ```
     pub async fn headless_with_features_async(wanted: wgpu::Features) -> Result<Self, GpuError> {
+        Self::open(wanted, None).await
+    }
+
+    /// [`GpuContext::headless`] on an adapter of `kind` only: [`AdapterKind::Software`] runs on
+    /// lavapipe or llvmpipe even where a GPU is present (results to compare across machines,
+    /// or a GPU kept free), and fails with [`GpuError::NoAdapter`] where there is none.
+    ///
+    /// ```no_run
+    /// use aokit::{AdapterKind, GpuContext};
+    /// let gpu = GpuContext::headless_of_kind(AdapterKind::Software)?;
+    /// assert_eq!(gpu.adapter_kind(), AdapterKind::Software);
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
+    pub fn headless_of_kind(kind: AdapterKind) -> Result<Self, GpuError> {
+        pollster::block_on(Self::open(wgpu::Features::empty(), Some(kind)))
+    }
+
+    async fn open(wanted: wgpu::Features, kind: Option<AdapterKind>) -> Result<Self, GpuError> {
         let descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
         let backends = descriptor.backends;
         let instance = wgpu::Instance::new(descriptor);
@@ -167,8 +185,13 @@ impl GpuContext {
         let mut adapters = instance
             .enumerate_adapters(backends & wgpu::Backends::PRIMARY)
             .await;
+        let of_kind = |adapter: &wgpu::Adapter| {
+            kind.is_none_or(|kind| adapter_kind(&adapter.get_info()) == kind)
+        };
+        adapters.retain(of_kind);
         if adapters.is_empty() {
             adapters = instance.enumerate_adapters(backends).await;
+            adapters.retain(of_kind);
         }
         let adapter = choose_adapter(adapters, std::env::var("WGPU_ADAPTER_NAME").ok()).map_err(
             |e| match e {

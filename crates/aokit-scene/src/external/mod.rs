@@ -1,6 +1,10 @@
 //! AO for G-buffer passes that come from files or another renderer rather than the raster.
 
-use aokit::gpu::{read_texture_f32, upload_texture_2d};
+mod convert;
+
+pub use convert::{DepthKind, linear_depth, view_normals};
+
+use aokit::gpu::{read_texture_f32, read_texture_rgba16f, upload_texture_2d};
 use aokit::normals::encode_texels;
 use aokit::{
     AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, NormalEncoding, PassTime, Projection,
@@ -92,39 +96,69 @@ impl ExternalAo {
         settings: &AoSettings,
         passes: &Passes<'_>,
     ) -> Result<Self, RenderError> {
-        let (device, queue) = (&gpu.device, &gpu.queue);
-        let upload = |label, depth: &[f32]| {
-            upload_texture_2d(
-                device,
-                queue,
-                label,
-                passes.size,
-                wgpu::TextureFormat::R32Float,
-                bytemuck::cast_slice(depth),
-            )
-        };
-        if let Some(normals) = passes.normals {
-            check_normals(normals, passes.linear_depth, passes.size)?;
-        }
-        let depth = upload("external linear depth", passes.linear_depth)?;
-        let back_depth = passes
-            .back_depth
-            .map(|back| upload("external back-face depth", back))
-            .transpose()?;
-        let source_normals: Option<Vec<Vec3>> = passes
-            .normals
-            .map(|normals| normals.iter().map(|n| n.normalize_or(Vec3::Z)).collect());
+        let uploaded = Uploaded::new(gpu, passes)?;
         let mut external = Self {
-            depth,
-            back_depth,
-            source_normals,
+            depth: uploaded.depth,
+            back_depth: uploaded.back_depth,
+            source_normals: uploaded.source_normals,
             normals: None,
             projection: passes.projection,
-            pipeline: AoPipeline::new(device, queue, settings)?,
+            pipeline: AoPipeline::new(&gpu.device, &gpu.queue, settings)?,
             reset_history: false,
         };
         external.upload_normals(gpu, settings.normals.encoding)?;
         Ok(external)
+    }
+
+    /// Replaces the passes with `passes` (of any size), keeping the compiled pipeline and, for
+    /// the temporal filter, the history: the next frame of a sequence, or another view run with
+    /// the same settings without compiling the pipeline again.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, frames: &[aokit_scene::external::Passes<'_>])
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::AoSettings;
+    /// use aokit_scene::external::ExternalAo;
+    /// let mut external = ExternalAo::new(gpu, &AoSettings::default(), &frames[0])?;
+    /// for (index, passes) in frames.iter().enumerate() {
+    ///     external.set_passes(gpu, passes)?;
+    ///     let ao = external.run(gpu, index as u32)?;
+    /// }
+    /// # Ok(()) }
+    /// ```
+    pub fn set_passes(&mut self, gpu: &GpuContext, passes: &Passes<'_>) -> Result<(), RenderError> {
+        let uploaded = Uploaded::new(gpu, passes)?;
+        self.depth = uploaded.depth;
+        self.back_depth = uploaded.back_depth;
+        self.source_normals = uploaded.source_normals;
+        self.projection = passes.projection;
+        self.upload_normals(gpu, self.pipeline.settings().normals.encoding)?;
+        Ok(())
+    }
+
+    /// Starts the temporal history over at the next run, as for the first frame of another
+    /// sequence.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// external.reset_history();
+    /// let first = external.run(gpu, 0)?;
+    /// # Ok(()) }
+    /// ```
+    pub fn reset_history(&mut self) {
+        self.reset_history = true;
+    }
+
+    /// The settings the pipeline runs.
+    ///
+    /// ```no_run
+    /// # fn f(external: &aokit_scene::external::ExternalAo) {
+    /// println!("radius {}", external.settings().radius);
+    /// # }
+    /// ```
+    pub fn settings(&self) -> &AoSettings {
+        self.pipeline.settings()
     }
 
     /// Uploads the normals in `encoding`.
@@ -229,6 +263,39 @@ impl ExternalAo {
     /// # Ok(()) }
     /// ```
     pub fn run(&mut self, gpu: &GpuContext, frame_index: u32) -> Result<Vec<f32>, RenderError> {
+        Ok(self.run_outputs(gpu, frame_index, false)?.0)
+    }
+
+    /// [`ExternalAo::run`], also reading back the bent normals where the settings compute them
+    /// ([`AoSettings::bent_normals`]): per pixel the mean unoccluded direction in view space
+    /// and the kernel's AO, `[x, y, z, ao]`.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// let (ao, bent) = external.run_with_bent_normals(gpu, 0)?;
+    /// if let Some(bent) = bent {
+    ///     let [x, y, z, _] = bent[0];
+    ///     println!("AO {} towards ({x}, {y}, {z})", ao[0]);
+    /// }
+    /// # Ok(()) }
+    /// ```
+    #[allow(clippy::type_complexity)]
+    pub fn run_with_bent_normals(
+        &mut self,
+        gpu: &GpuContext,
+        frame_index: u32,
+    ) -> Result<(Vec<f32>, Option<Vec<[f32; 4]>>), RenderError> {
+        self.run_outputs(gpu, frame_index, true)
+    }
+
+    #[allow(clippy::type_complexity)]
+    fn run_outputs(
+        &mut self,
+        gpu: &GpuContext,
+        frame_index: u32,
+        bent: bool,
+    ) -> Result<(Vec<f32>, Option<Vec<[f32; 4]>>), RenderError> {
         let (device, queue) = (&gpu.device, &gpu.queue);
         let mut encoder = device.create_command_encoder(&Default::default());
         let outputs = self.pipeline.encode(
@@ -244,7 +311,48 @@ impl ExternalAo {
             },
         )?;
         queue.submit([encoder.finish()]);
-        Ok(read_texture_f32(device, queue, outputs.ao)?)
+        let ao = read_texture_f32(device, queue, outputs.ao)?;
+        let bent_normals = match (bent, outputs.bent_normals) {
+            (true, Some(texture)) => Some(read_texture_rgba16f(device, queue, texture)?),
+            _ => None,
+        };
+        Ok((ao, bent_normals))
+    }
+}
+
+/// One view's passes on the GPU, the normals still on the CPU for their encoding.
+struct Uploaded {
+    depth: wgpu::Texture,
+    back_depth: Option<wgpu::Texture>,
+    /// The unit normals as given.
+    source_normals: Option<Vec<Vec3>>,
+}
+
+impl Uploaded {
+    fn new(gpu: &GpuContext, passes: &Passes<'_>) -> Result<Self, RenderError> {
+        let upload = |label, depth: &[f32]| {
+            upload_texture_2d(
+                &gpu.device,
+                &gpu.queue,
+                label,
+                passes.size,
+                wgpu::TextureFormat::R32Float,
+                bytemuck::cast_slice(depth),
+            )
+        };
+        if let Some(normals) = passes.normals {
+            check_normals(normals, passes.linear_depth, passes.size)?;
+        }
+        Ok(Self {
+            depth: upload("external linear depth", passes.linear_depth)?,
+            back_depth: passes
+                .back_depth
+                .map(|back| upload("external back-face depth", back))
+                .transpose()?,
+            source_normals: passes
+                .normals
+                .map(|normals| normals.iter().map(|n| n.normalize_or(Vec3::Z)).collect()),
+        })
     }
 }
 
