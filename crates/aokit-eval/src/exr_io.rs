@@ -51,15 +51,19 @@ fn read_error(path: &Path, error: exr::error::Error) -> EvalError {
 }
 
 /// Every layer's full-resolution channels; deep data and subsampled channels are refused.
-fn read_layers(path: &Path) -> Result<Vec<ExrLayer>> {
-    let image = read()
+/// `bytes` is the file's contents, or `None` to read the file at `path`.
+fn read_layers(path: &Path, bytes: Option<&[u8]>) -> Result<Vec<ExrLayer>> {
+    let reader = read()
         .no_deep_data()
         .largest_resolution_level()
         .all_channels()
         .all_layers()
-        .all_attributes()
-        .from_file(path)
-        .map_err(|e| read_error(path, e))?;
+        .all_attributes();
+    let image = match bytes {
+        Some(bytes) => reader.from_buffered(std::io::Cursor::new(bytes)),
+        None => reader.from_file(path),
+    }
+    .map_err(|e| read_error(path, e))?;
     let mut layers = Vec::new();
     for layer in image.layer_data {
         let (width, height) = (layer.size.width() as u64, layer.size.height() as u64);
@@ -115,8 +119,14 @@ fn list_channels(layers: &[ExrLayer], only: Option<(usize, &[usize])>) -> String
 }
 
 /// The first layer with a channel `rank` accepts; else the file's only channel.
-fn read_ranked(path: &Path, rank: fn(&str) -> u8, what: &str, wanted: &str) -> Result<FloatImage> {
-    let layers = read_layers(path)?;
+fn read_ranked(
+    path: &Path,
+    bytes: Option<&[u8]>,
+    rank: fn(&str) -> u8,
+    what: &str,
+    wanted: &str,
+) -> Result<FloatImage> {
+    let layers = read_layers(path, bytes)?;
     for (l, layer) in layers.iter().enumerate() {
         match pick_by_rank(layer.names(), rank) {
             Pick::One(c) => return Ok(layer.image(&[c])),
@@ -150,22 +160,25 @@ fn read_ranked(path: &Path, rank: fn(&str) -> u8, what: &str, wanted: &str) -> R
 /// Reads a one-channel EXR such as the `ao.exr` or `reference.exr` aokit writes: the channel
 /// `Y`, else `R`, else the file's only channel.
 pub fn read_scalar_exr(path: &Path) -> Result<FloatImage> {
-    read_ranked(path, scalar_rank, "AO", "Y or R")
+    read_ranked(path, None, scalar_rank, "AO", "Y or R")
 }
 
-/// Linear depth from an EXR; see [`read_depth`](crate::read_depth) for the channel rules.
-pub(crate) fn read_depth_exr(path: &Path) -> Result<FloatImage> {
+/// Linear depth from an EXR's bytes (`None`: the file at `path`); see
+/// [`read_depth`](crate::read_depth) for the channel rules.
+pub(crate) fn read_depth_exr(path: &Path, bytes: Option<&[u8]>) -> Result<FloatImage> {
     read_ranked(
         path,
+        bytes,
         depth_rank,
         "depth",
         "Z, depth, V, Y or R, optionally layer-qualified",
     )
 }
 
-/// Normals from an EXR: X, Y, Z or R, G, B, optionally layer-qualified.
-pub(crate) fn read_normals_exr(path: &Path) -> Result<FloatImage> {
-    let layers = read_layers(path)?;
+/// Normals from an EXR's bytes (`None`: the file at `path`): X, Y, Z or R, G, B, optionally
+/// layer-qualified.
+pub(crate) fn read_normals_exr(path: &Path, bytes: Option<&[u8]>) -> Result<FloatImage> {
+    let layers = read_layers(path, bytes)?;
     for (l, layer) in layers.iter().enumerate() {
         match pick_normals(&layer.names()) {
             Pick::One(indices) => return Ok(layer.image(&indices)),
