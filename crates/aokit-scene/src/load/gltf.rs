@@ -22,12 +22,37 @@ use crate::scene::{Scene, SceneError};
 /// # Ok::<(), aokit_scene::SceneError>(())
 /// ```
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let bytes = std::fs::read(path).map_err(|e| SceneError::Parse {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    })?;
+    // Buffers in other files are read from beside this one.
+    load_from(path, &bytes, path.parent())
+}
+
+/// Loads a self-contained glTF held in memory: a `.glb`, or `.gltf` JSON whose buffers are
+/// `data:` URIs. A buffer in another file is refused (there is no folder to read it from).
+/// `name` stands for the file in messages and gives the scene its name (its stem).
+///
+/// ```no_run
+/// // A GLB that came over the network or out of an archive, never written to disk.
+/// let bytes = std::fs::read("assets/Sponza.glb")?;
+/// let scene = aokit_scene::load::gltf::load_slice("Sponza.glb", &bytes)?;
+/// assert_eq!(scene.name, "Sponza");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn load_slice(name: &str, bytes: &[u8]) -> Result<Scene, SceneError> {
+    load_from(Path::new(name), bytes, None)
+}
+
+/// The glTF `bytes`, named `path`, its external buffers read from `folder` (none: refused).
+fn load_from(path: &Path, bytes: &[u8], folder: Option<&Path>) -> Result<Scene, SceneError> {
     let parse = |reason: String| SceneError::Parse {
         path: path.to_path_buf(),
         reason,
     };
-    let gltf = ::gltf::Gltf::open(path).map_err(|e| parse(e.to_string()))?;
-    let buffers = ::gltf::import_buffers(&gltf.document, path.parent(), gltf.blob.clone())
+    let gltf = ::gltf::Gltf::from_slice(bytes).map_err(|e| parse(e.to_string()))?;
+    let buffers = ::gltf::import_buffers(&gltf.document, folder, gltf.blob.clone())
         .map_err(|e| parse(e.to_string()))?;
     let document = &gltf.document;
     let scene = document
