@@ -53,7 +53,9 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
         path,
         &obj,
         |mtl| tobj::load_mtl(folder.join(mtl)),
-        sidecar.as_ref().map(|(p, text)| (p.as_path(), text.as_slice())),
+        sidecar
+            .as_ref()
+            .map(|(p, text)| (p.as_path(), text.as_slice())),
     )
 }
 

@@ -28,7 +28,12 @@ struct Assign {
 }
 
 /// A setting's value at `at` (0 to 1) of its range, or its `choice`-th name.
-fn value_in_range(kind: SettingKind, settings: &AoSettings, at: f64, choice: usize) -> SettingValue {
+fn value_in_range(
+    kind: SettingKind,
+    settings: &AoSettings,
+    at: f64,
+    choice: usize,
+) -> SettingValue {
     match kind {
         SettingKind::Bool => SettingValue::Bool(at < 0.5),
         SettingKind::Integer(range) => {
@@ -227,7 +232,12 @@ fn frame(
     prop_assert_eq!(ao.len(), (w * h) as usize);
     for (i, (&a, &d)) in ao.iter().zip(&case.depth).enumerate() {
         let at = format!("x {}, y {} (depth {d})", i as u32 % w, i as u32 / w);
-        prop_assert!(a.is_finite() && (0.0..=1.0).contains(&a), "AO {} at {}", a, at);
+        prop_assert!(
+            a.is_finite() && (0.0..=1.0).contains(&a),
+            "AO {} at {}",
+            a,
+            at
+        );
         if !(d.is_finite() && d > 0.0) {
             prop_assert!(a == 1.0, "AO {} without a surface at {}", a, at);
         }
