@@ -104,6 +104,7 @@ fn load_parts(
         ignore_points: true,
         ignore_lines: true,
     };
+    check_face_indices(obj).map_err(parse)?;
     let (models, materials) = tobj::load_obj_buf(&mut std::io::BufReader::new(obj), &options, mtl)
         .map_err(|e| parse(e.to_string()))?;
     let mut notes = Vec::new();
@@ -152,6 +153,8 @@ fn load_parts(
     if mesh.triangle_count() == 0 {
         return Err(SceneError::Empty(path.to_path_buf()));
     }
+    // Each part is checked above; their extent together is checked here.
+    mesh.validate().map_err(parse)?;
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -163,6 +166,53 @@ fn load_parts(
     let mut scene = Scene::new(&stem, mesh, cameras, radius);
     scene.notes = notes;
     Ok(scene)
+}
+
+/// Refuses a face whose texture-coordinate or normal index lies outside the ones defined
+/// before it (relative indices, `-1` for the last, included). tobj multiplies such an index
+/// without a check: a panic on overflow where overflow checks are on (debug builds, the fuzz
+/// targets), a wrapped index, or another vertex's normal, where they are off. Positions it
+/// checks itself; they are checked here too, for one message.
+fn check_face_indices(obj: &[u8]) -> Result<(), String> {
+    const KINDS: [&str; 3] = ["position", "texture coordinate", "normal"];
+    let mut counts = [0usize; 3];
+    for (number, line) in obj.split(|&b| b == b'\n').enumerate() {
+        let Ok(line) = std::str::from_utf8(line) else {
+            continue; // tobj refuses it
+        };
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f") => {
+                for corner in words {
+                    for (kind, index) in corner.split('/').enumerate().take(3) {
+                        let Ok(index) = index.parse::<i64>() else {
+                            continue; // empty (`1//2`), or refused by tobj
+                        };
+                        let count = counts[kind] as i64;
+                        let within = if index < 0 {
+                            -index <= count
+                        } else {
+                            (1..=count).contains(&index)
+                        };
+                        if !within {
+                            return Err(format!(
+                                "line {}: face {} index {index} is out of range for the {count} \
+                                 {}s before it",
+                                number + 1,
+                                KINDS[kind],
+                                KINDS[kind]
+                            ));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 fn sidecar_path(obj: &Path) -> Option<PathBuf> {

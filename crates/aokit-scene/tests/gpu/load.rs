@@ -299,3 +299,67 @@ fn sidecar_with_a_bad_radius_is_refused_with_its_name() {
         "{err}"
     );
 }
+
+/// Found by the `obj` fuzz target (fuzz/): a face's relative normal index before the first
+/// normal (`-5` with one normal) made tobj multiply a wrapped index: a panic where overflow
+/// checks are on, another vertex's normal or a wrapped read where they are off.
+#[test]
+fn obj_face_index_outside_its_normals_is_refused() {
+    let crash: &[u8] = b"g tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf -3//-5 -2 -1//-1\ns 1\n\
+        l 1 2\np 3\nri\nmtllib cube.mtl\nuse -0.5\nv 0 0 1\nd -3//-0 -2 -1//-";
+    let err = aokit_scene::load::obj::load_slice("crash.obj", crash, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("crash.obj")
+            && err.contains("line 6: face normal index -5 is out of range for the 1 normals"),
+        "{err}"
+    );
+    // The same past the end, counting from 1, and 0, for texture coordinates and positions.
+    for (face, message) in [
+        (
+            "f 1/1 2/1 3/9",
+            "face texture coordinate index 9 is out of range for the 1",
+        ),
+        (
+            "f 1//1 2//1 3//0",
+            "face normal index 0 is out of range for the 1",
+        ),
+        ("f 1 2 4", "face position index 4 is out of range for the 3"),
+    ] {
+        let obj = format!("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n{face}\n");
+        let err = aokit_scene::load::obj::load_slice("tri.obj", obj.as_bytes(), None)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(message), "{face}: {err}");
+    }
+    // Relative indices within range still load.
+    let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf -3/-1/-1 -2/-1/-1 -1/-1/-1\n";
+    let scene = aokit_scene::load::obj::load_slice("tri.obj", obj, None).unwrap();
+    assert_eq!(scene.mesh.triangle_count(), 1);
+}
+
+/// Found by the `obj` fuzz target: finite positions 5.6e32 apart gave an infinite bounding
+/// radius, and so a framing camera at infinity ("non-finite eye"). The loaders refuse such an
+/// extent, naming it; every part of an OBJ may be finite on its own.
+#[test]
+fn positions_too_far_apart_for_f32_are_refused() {
+    let crash =
+        b"v 0 0 0\nv 2 0 0\nv 2 0 -555555555555555555555555555555552\nv 0 1 -2\nf 1 2 3 4\n";
+    let err = aokit_scene::load::obj::load_slice("far.obj", crash, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("far.obj") && err.contains("farther than 32-bit floats can measure"),
+        "{err}"
+    );
+    let two_parts = b"o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\
+        o b\nv 3e19 0 0\nv 3e19 1 0\nv 3e19 0 1\nf 4 5 6\n";
+    let err = aokit_scene::load::obj::load_slice("parts.obj", two_parts, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("farther than 32-bit floats can measure"),
+        "{err}"
+    );
+}
