@@ -8,7 +8,7 @@ use exr::prelude::{
 };
 
 use crate::channel_pick::{Pick, depth_rank, pick_by_rank, pick_normals, scalar_rank};
-use crate::error::{EvalError, Result};
+use crate::error::{EvalError, Result, read_file};
 use crate::float_image::{FloatImage, sample_count};
 
 /// One layer (EXR part) of a file, every channel converted to `f32`.
@@ -50,20 +50,78 @@ fn read_error(path: &Path, error: exr::error::Error) -> EvalError {
     }
 }
 
+/// The most pixels a layer may have: aokit's budget (`aokit::inputs::MAX_PIXELS`, 8192x8192).
+const MAX_PIXELS: u64 = 8192 * 8192;
+
+/// The most bytes of samples a file may claim per byte of its own: zlib, the EXR codec that
+/// compresses real passes best, stays under 1032:1. The decoders allocate what the header
+/// claims before they find the data missing: a 610-byte file (found by fuzzing) asked for
+/// 2.4 GB.
+const MAX_EXPANSION: u64 = 2048;
+
+/// Refuses a file whose headers claim more pixels than aokit works on, or far more sample
+/// bytes than the file could hold, before the decoders allocate for them.
+fn check_claimed_size(path: &Path, bytes: &[u8]) -> Result<()> {
+    let meta =
+        exr::meta::MetaData::read_from_buffered(bytes, false).map_err(|e| read_error(path, e))?;
+    let mut total = 0u64;
+    for header in meta.headers.iter() {
+        let (width, height) = (
+            header.layer_size.width() as u64,
+            header.layer_size.height() as u64,
+        );
+        let pixels = width.saturating_mul(height);
+        if pixels > MAX_PIXELS {
+            return Err(EvalError::format(
+                path,
+                format!(
+                    "a layer of {width}x{height} is more than the {MAX_PIXELS} pixels (8192x8192) \
+                     aokit reads"
+                ),
+            ));
+        }
+        let per_pixel: u64 = header
+            .channels
+            .list
+            .iter()
+            .map(|c| c.sample_type.bytes_per_sample() as u64)
+            .sum();
+        total = total.saturating_add(pixels.saturating_mul(per_pixel));
+    }
+    let limit = MAX_EXPANSION.saturating_mul(bytes.len() as u64);
+    if total > limit {
+        return Err(EvalError::format(
+            path,
+            format!(
+                "not a readable OpenEXR file: its headers claim {total} bytes of samples, more \
+                 than {MAX_EXPANSION} times its {} bytes (truncated or corrupt)",
+                bytes.len()
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// Every layer's full-resolution channels; deep data and subsampled channels are refused.
 /// `bytes` is the file's contents, or `None` to read the file at `path`.
 fn read_layers(path: &Path, bytes: Option<&[u8]>) -> Result<Vec<ExrLayer>> {
-    let reader = read()
+    let owned;
+    let bytes = match bytes {
+        Some(bytes) => bytes,
+        None => {
+            owned = read_file(path)?;
+            &owned
+        }
+    };
+    check_claimed_size(path, bytes)?;
+    let image = read()
         .no_deep_data()
         .largest_resolution_level()
         .all_channels()
         .all_layers()
-        .all_attributes();
-    let image = match bytes {
-        Some(bytes) => reader.from_buffered(std::io::Cursor::new(bytes)),
-        None => reader.from_file(path),
-    }
-    .map_err(|e| read_error(path, e))?;
+        .all_attributes()
+        .from_buffered(std::io::Cursor::new(bytes))
+        .map_err(|e| read_error(path, e))?;
     let mut layers = Vec::new();
     for layer in image.layer_data {
         let (width, height) = (layer.size.width() as u64, layer.size.height() as u64);
