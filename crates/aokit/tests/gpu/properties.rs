@@ -4,7 +4,7 @@
 //! surface (depth 0, negative or not finite) stay 1, and changing the settings between two
 //! frames on one pipeline never fails.
 //!
-//! The cases are few, for lavapipe: `AOKIT_PROPTEST_CASES` sets how many (24 by default).
+//! The cases are few, for lavapipe: `AOKIT_PROPTEST_CASES` sets how many (32 by default).
 
 use aokit::gpu::{read_texture_f32, upload_texture_2d};
 use aokit::normals::encode_texels;
@@ -251,7 +251,7 @@ fn random_settings_sizes_and_content_give_finite_ao_in_0_1() {
     let cases = std::env::var("AOKIT_PROPTEST_CASES")
         .ok()
         .and_then(|n| n.parse().ok())
-        .unwrap_or(24);
+        .unwrap_or(32);
     let config = Config {
         cases,
         max_shrink_iters: 64,
