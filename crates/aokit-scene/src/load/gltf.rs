@@ -152,6 +152,21 @@ impl State<'_> {
         // would read as "no indices" (every vertex in order) or "no normals": check first.
         if let Some(indices) = primitive.indices() {
             check_accessor(&indices, "indices", self.buffers)?;
+            // The reader panics ("unreachable") on other types, which the specification
+            // forbids for indices but the parser lets through.
+            use ::gltf::accessor::{DataType, Dimensions};
+            if !matches!(
+                indices.data_type(),
+                DataType::U8 | DataType::U16 | DataType::U32
+            ) || indices.dimensions() != Dimensions::Scalar
+            {
+                return Err(format!(
+                    "accessor {} (indices) holds {:?} {:?}, not unsigned byte, short or int scalars",
+                    indices.index(),
+                    indices.data_type(),
+                    indices.dimensions()
+                ));
+            }
         }
         for (semantic, accessor) in primitive.attributes() {
             if matches!(

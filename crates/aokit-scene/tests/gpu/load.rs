@@ -363,3 +363,26 @@ fn positions_too_far_apart_for_f32_are_refused() {
         "{err}"
     );
 }
+
+/// Found by the `gltf` fuzz target (fuzz/): indices of signed shorts (componentType 5122),
+/// which the specification forbids and the parser lets through, hit an `unreachable!()` in the
+/// gltf crate's reader. They are refused, naming the accessor.
+#[test]
+fn gltf_indices_of_a_signed_type_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = triangle_gltf(dir.path(), "tri.glb", r#"[{"mesh": 0}]"#, 2, 3);
+    let bytes = std::fs::read(&path).unwrap();
+    // The same length: the GLB's chunk lengths still hold.
+    let at = bytes.windows(4).position(|w| w == b"5123").unwrap();
+    let mut signed = bytes.clone();
+    signed[at..at + 4].copy_from_slice(b"5122");
+    let err = aokit_scene::load::gltf::load_slice("signed.glb", &signed)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("signed.glb") && err.contains("accessor 1 (indices) holds I16 Scalar"),
+        "{err}"
+    );
+    // Unsigned shorts, as written, load.
+    assert!(aokit_scene::load::gltf::load_slice("tri.glb", &bytes).is_ok());
+}
