@@ -51,7 +51,16 @@ fn load_from(path: &Path, bytes: &[u8], folder: Option<&Path>) -> Result<Scene, 
         path: path.to_path_buf(),
         reason,
     };
-    let gltf = ::gltf::Gltf::from_slice(bytes).map_err(|e| parse(e.to_string()))?;
+    // Parsed, then checked for what the gltf crate's validation indexes without a check, then
+    // validated.
+    let parsed =
+        ::gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| parse(e.to_string()))?;
+    check_position_accessors(parsed.document.as_json()).map_err(parse)?;
+    let gltf = ::gltf::Gltf {
+        document: ::gltf::Document::from_json(parsed.document.into_json())
+            .map_err(|e| parse(e.to_string()))?,
+        blob: parsed.blob,
+    };
     let buffers = ::gltf::import_buffers(&gltf.document, folder, gltf.blob.clone())
         .map_err(|e| parse(e.to_string()))?;
     let document = &gltf.document;
@@ -255,6 +264,28 @@ impl State<'_> {
             reverse_z: true,
         });
     }
+}
+
+/// Refuses a primitive whose POSITION accessor does not exist: the gltf crate's validation
+/// reads that accessor before it checks the index, and panics (found by fuzzing: a file whose
+/// `accessors` key was misspelt).
+fn check_position_accessors(root: &::gltf::json::Root) -> Result<(), String> {
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            let position = ::gltf::json::validation::Checked::Valid(::gltf::Semantic::Positions);
+            if let Some(index) = primitive.attributes.get(&position)
+                && index.value() >= root.accessors.len()
+            {
+                return Err(format!(
+                    "mesh {m}, primitive {p}: POSITION names accessor {}, but the file has {} \
+                     accessors",
+                    index.value(),
+                    root.accessors.len()
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Checks that `accessor`'s elements lie inside its buffer view and the view inside its buffer.

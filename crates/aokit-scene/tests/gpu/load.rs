@@ -386,3 +386,22 @@ fn gltf_indices_of_a_signed_type_are_refused() {
     // Unsigned shorts, as written, load.
     assert!(aokit_scene::load::gltf::load_slice("tri.glb", &bytes).is_ok());
 }
+
+/// Found by the `gltf` fuzz target (fuzz/): with its `accessors` key misspelt (`accessOrs`),
+/// a file's POSITION named an accessor that does not exist, and the gltf crate's own
+/// validation indexed it: a panic. It is refused, naming the mesh and primitive.
+#[test]
+fn gltf_position_naming_a_missing_accessor_is_refused() {
+    let crash = r#"{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0, 1]}], "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 3]}], "cameras": [{"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "accessOrs": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}], "bufferViews": [{"buffer": 0, "byteLength": 36}], "buffers": [{"byteLength": 36, "uri": "data:applicataon/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}"#;
+    let err = aokit_scene::load::gltf::load_slice("crash.gltf", crash.as_bytes())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("crash.gltf")
+            && err.contains("mesh 0, primitive 0: POSITION names accessor 0, but the file has 0"),
+        "{err}"
+    );
+    // Spelt right, it loads.
+    let fixed = crash.replace("accessOrs", "accessors");
+    assert!(aokit_scene::load::gltf::load_slice("fixed.gltf", fixed.as_bytes()).is_ok());
+}
