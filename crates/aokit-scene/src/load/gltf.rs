@@ -53,6 +53,17 @@ fn load_from(path: &Path, bytes: &[u8], folder: Option<&Path>) -> Result<Scene, 
     };
     // Parsed, then checked for what the gltf crate's validation indexes without a check, then
     // validated.
+    // A GLB whose header gives a length under the header's own 12 bytes: the gltf crate
+    // subtracts 12 from it unchecked (a panic where overflow checks are on; found by fuzzing).
+    if bytes.starts_with(b"glTF")
+        && let Some(length) = bytes.get(8..12)
+        && u32::from_le_bytes([length[0], length[1], length[2], length[3]]) < 12
+    {
+        return Err(parse(format!(
+            "the GLB header gives a length of {} bytes, less than the header's own 12",
+            u32::from_le_bytes([length[0], length[1], length[2], length[3]])
+        )));
+    }
     let parsed =
         ::gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| parse(e.to_string()))?;
     check_position_accessors(parsed.document.as_json()).map_err(parse)?;

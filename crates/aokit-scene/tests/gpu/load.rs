@@ -405,3 +405,20 @@ fn gltf_position_naming_a_missing_accessor_is_refused() {
     let fixed = crash.replace("accessOrs", "accessors");
     assert!(aokit_scene::load::gltf::load_slice("fixed.gltf", fixed.as_bytes()).is_ok());
 }
+
+/// Found by the `gltf` fuzz target (fuzz/): a GLB header whose length field is under the
+/// header's own 12 bytes made the gltf crate subtract past zero (a panic where overflow checks
+/// are on). It is refused.
+#[test]
+fn glb_length_shorter_than_its_header_is_refused() {
+    let mut glb = b"glTF\x02\x00\x00\x00\x00\x00\x00\x00".to_vec();
+    glb.extend_from_slice(&[0; 24]);
+    let err = aokit_scene::load::gltf::load_slice("short.glb", &glb)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("short.glb")
+            && err.contains("a length of 0 bytes, less than the header's own 12"),
+        "{err}"
+    );
+}
