@@ -8,7 +8,7 @@ use exr::prelude::{
 };
 
 use crate::channel_pick::{Pick, depth_rank, pick_by_rank, pick_normals, scalar_rank};
-use crate::error::{EvalError, Result};
+use crate::error::{EvalError, Result, read_file};
 use crate::float_image::{FloatImage, sample_count};
 
 /// One layer (EXR part) of a file, every channel converted to `f32`.
@@ -50,15 +50,77 @@ fn read_error(path: &Path, error: exr::error::Error) -> EvalError {
     }
 }
 
+/// The most pixels a layer may have: aokit's budget (`aokit::inputs::MAX_PIXELS`, 8192x8192).
+const MAX_PIXELS: u64 = 8192 * 8192;
+
+/// The most bytes of samples a file may claim per byte of its own: zlib, the EXR codec that
+/// compresses real passes best, stays under 1032:1. The decoders allocate what the header
+/// claims before they find the data missing: a 610-byte file (found by fuzzing) asked for
+/// 2.4 GB.
+const MAX_EXPANSION: u64 = 2048;
+
+/// Refuses a file whose headers claim more pixels than aokit works on, or far more sample
+/// bytes than the file could hold, before the decoders allocate for them.
+fn check_claimed_size(path: &Path, bytes: &[u8]) -> Result<()> {
+    let meta =
+        exr::meta::MetaData::read_from_buffered(bytes, false).map_err(|e| read_error(path, e))?;
+    let mut total = 0u64;
+    for header in meta.headers.iter() {
+        let (width, height) = (
+            header.layer_size.width() as u64,
+            header.layer_size.height() as u64,
+        );
+        let pixels = width.saturating_mul(height);
+        if pixels > MAX_PIXELS {
+            return Err(EvalError::format(
+                path,
+                format!(
+                    "a layer of {width}x{height} is more than the {MAX_PIXELS} pixels (8192x8192) \
+                     aokit reads"
+                ),
+            ));
+        }
+        let per_pixel: u64 = header
+            .channels
+            .list
+            .iter()
+            .map(|c| c.sample_type.bytes_per_sample() as u64)
+            .sum();
+        total = total.saturating_add(pixels.saturating_mul(per_pixel));
+    }
+    let limit = MAX_EXPANSION.saturating_mul(bytes.len() as u64);
+    if total > limit {
+        return Err(EvalError::format(
+            path,
+            format!(
+                "not a readable OpenEXR file: its headers claim {total} bytes of samples, more \
+                 than {MAX_EXPANSION} times its {} bytes (truncated or corrupt)",
+                bytes.len()
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// Every layer's full-resolution channels; deep data and subsampled channels are refused.
-fn read_layers(path: &Path) -> Result<Vec<ExrLayer>> {
+/// `bytes` is the file's contents, or `None` to read the file at `path`.
+fn read_layers(path: &Path, bytes: Option<&[u8]>) -> Result<Vec<ExrLayer>> {
+    let owned;
+    let bytes = match bytes {
+        Some(bytes) => bytes,
+        None => {
+            owned = read_file(path)?;
+            &owned
+        }
+    };
+    check_claimed_size(path, bytes)?;
     let image = read()
         .no_deep_data()
         .largest_resolution_level()
         .all_channels()
         .all_layers()
         .all_attributes()
-        .from_file(path)
+        .from_buffered(std::io::Cursor::new(bytes))
         .map_err(|e| read_error(path, e))?;
     let mut layers = Vec::new();
     for layer in image.layer_data {
@@ -115,8 +177,14 @@ fn list_channels(layers: &[ExrLayer], only: Option<(usize, &[usize])>) -> String
 }
 
 /// The first layer with a channel `rank` accepts; else the file's only channel.
-fn read_ranked(path: &Path, rank: fn(&str) -> u8, what: &str, wanted: &str) -> Result<FloatImage> {
-    let layers = read_layers(path)?;
+fn read_ranked(
+    path: &Path,
+    bytes: Option<&[u8]>,
+    rank: fn(&str) -> u8,
+    what: &str,
+    wanted: &str,
+) -> Result<FloatImage> {
+    let layers = read_layers(path, bytes)?;
     for (l, layer) in layers.iter().enumerate() {
         match pick_by_rank(layer.names(), rank) {
             Pick::One(c) => return Ok(layer.image(&[c])),
@@ -150,22 +218,25 @@ fn read_ranked(path: &Path, rank: fn(&str) -> u8, what: &str, wanted: &str) -> R
 /// Reads a one-channel EXR such as the `ao.exr` or `reference.exr` aokit writes: the channel
 /// `Y`, else `R`, else the file's only channel.
 pub fn read_scalar_exr(path: &Path) -> Result<FloatImage> {
-    read_ranked(path, scalar_rank, "AO", "Y or R")
+    read_ranked(path, None, scalar_rank, "AO", "Y or R")
 }
 
-/// Linear depth from an EXR; see [`read_depth`](crate::read_depth) for the channel rules.
-pub(crate) fn read_depth_exr(path: &Path) -> Result<FloatImage> {
+/// Linear depth from an EXR's bytes (`None`: the file at `path`); see
+/// [`read_depth`](crate::read_depth) for the channel rules.
+pub(crate) fn read_depth_exr(path: &Path, bytes: Option<&[u8]>) -> Result<FloatImage> {
     read_ranked(
         path,
+        bytes,
         depth_rank,
         "depth",
         "Z, depth, V, Y or R, optionally layer-qualified",
     )
 }
 
-/// Normals from an EXR: X, Y, Z or R, G, B, optionally layer-qualified.
-pub(crate) fn read_normals_exr(path: &Path) -> Result<FloatImage> {
-    let layers = read_layers(path)?;
+/// Normals from an EXR's bytes (`None`: the file at `path`): X, Y, Z or R, G, B, optionally
+/// layer-qualified.
+pub(crate) fn read_normals_exr(path: &Path, bytes: Option<&[u8]>) -> Result<FloatImage> {
+    let layers = read_layers(path, bytes)?;
     for (l, layer) in layers.iter().enumerate() {
         match pick_normals(&layer.names()) {
             Pick::One(indices) => return Ok(layer.image(&indices)),

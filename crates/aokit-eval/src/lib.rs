@@ -47,7 +47,7 @@ pub use error::{EvalError, Result};
 pub use exr_io::{read_scalar_exr, write_exr};
 pub use float_image::FloatImage;
 pub use gif_io::{grey_to_rgba, write_gif};
-pub use inputs::{read_depth, read_normals};
+pub use inputs::{parse_depth, parse_normals, read_depth, read_normals};
 pub use masks::{depth_edge_mask, grazing_mask, surface_mask};
 pub use metrics::{Metrics, SequenceMetrics, compare};
 pub use png_io::{encode_png_grey, encode_png_rgb, write_grey_png, write_rgba_png};

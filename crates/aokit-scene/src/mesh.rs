@@ -218,6 +218,17 @@ impl Mesh {
         if let Some(p) = self.positions.iter().find(|p| !p.is_finite()) {
             return Err(format!("non-finite vertex position {p}"));
         }
+        // Each position finite, but the extent past what f32 measures (about 1e19: a length
+        // squares it): the bounds' radius, the framing camera and the reference's ray offsets
+        // would all be infinite.
+        if let Some(bounds) = self.bounds()
+            && !bounds.radius().is_finite()
+        {
+            return Err(format!(
+                "the positions span from {} to {}, farther than 32-bit floats can measure",
+                bounds.min, bounds.max
+            ));
+        }
         Ok(())
     }
 }

@@ -262,3 +262,23 @@ fn unreadable_files_name_the_path() {
             .contains("/nonexistent-dir/ao.exr")
     );
 }
+
+/// Found by the `exr` fuzz target (fuzz/): a 610-byte file whose header claims a large image
+/// made the ZIP decoder allocate 2.4 GB before it found the data missing. The headers are
+/// checked first: a claim past aokit's pixel budget, or of far more sample bytes than the file
+/// holds, is refused without the allocation.
+#[test]
+fn an_exr_claiming_far_more_than_it_holds_is_refused_before_allocating() {
+    let crash = include_bytes!("data/fuzz-claims-2.4-gb.exr");
+    for result in [
+        aokit_eval::parse_depth(Path::new("crash.exr"), crash),
+        aokit_eval::parse_normals(Path::new("crash.exr"), crash),
+    ] {
+        let err = result.unwrap_err().to_string();
+        assert!(
+            err.starts_with("crash.exr: ")
+                && (err.contains("times its 610 bytes") || err.contains("pixels (8192x8192)")),
+            "{err}"
+        );
+    }
+}

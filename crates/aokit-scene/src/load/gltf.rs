@@ -22,12 +22,57 @@ use crate::scene::{Scene, SceneError};
 /// # Ok::<(), aokit_scene::SceneError>(())
 /// ```
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let bytes = std::fs::read(path).map_err(|e| SceneError::Parse {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    })?;
+    // Buffers in other files are read from beside this one.
+    load_from(path, &bytes, path.parent())
+}
+
+/// Loads a self-contained glTF held in memory: a `.glb`, or `.gltf` JSON whose buffers are
+/// `data:` URIs. A buffer in another file is refused (there is no folder to read it from).
+/// `name` stands for the file in messages and gives the scene its name (its stem).
+///
+/// ```no_run
+/// // A GLB that came over the network or out of an archive, never written to disk.
+/// let bytes = std::fs::read("assets/Sponza.glb")?;
+/// let scene = aokit_scene::load::gltf::load_slice("Sponza.glb", &bytes)?;
+/// assert_eq!(scene.name, "Sponza");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn load_slice(name: &str, bytes: &[u8]) -> Result<Scene, SceneError> {
+    load_from(Path::new(name), bytes, None)
+}
+
+/// The glTF `bytes`, named `path`, its external buffers read from `folder` (none: refused).
+fn load_from(path: &Path, bytes: &[u8], folder: Option<&Path>) -> Result<Scene, SceneError> {
     let parse = |reason: String| SceneError::Parse {
         path: path.to_path_buf(),
         reason,
     };
-    let gltf = ::gltf::Gltf::open(path).map_err(|e| parse(e.to_string()))?;
-    let buffers = ::gltf::import_buffers(&gltf.document, path.parent(), gltf.blob.clone())
+    // Parsed, then checked for what the gltf crate's validation indexes without a check, then
+    // validated.
+    // A GLB whose header gives a length under the header's own 12 bytes: the gltf crate
+    // subtracts 12 from it unchecked (a panic where overflow checks are on; found by fuzzing).
+    if bytes.starts_with(b"glTF")
+        && let Some(length) = bytes.get(8..12)
+        && u32::from_le_bytes([length[0], length[1], length[2], length[3]]) < 12
+    {
+        return Err(parse(format!(
+            "the GLB header gives a length of {} bytes, less than the header's own 12",
+            u32::from_le_bytes([length[0], length[1], length[2], length[3]])
+        )));
+    }
+    let parsed =
+        ::gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| parse(e.to_string()))?;
+    check_position_accessors(parsed.document.as_json()).map_err(parse)?;
+    let gltf = ::gltf::Gltf {
+        document: ::gltf::Document::from_json(parsed.document.into_json())
+            .map_err(|e| parse(e.to_string()))?,
+        blob: parsed.blob,
+    };
+    let buffers = ::gltf::import_buffers(&gltf.document, folder, gltf.blob.clone())
         .map_err(|e| parse(e.to_string()))?;
     let document = &gltf.document;
     let scene = document
@@ -127,6 +172,21 @@ impl State<'_> {
         // would read as "no indices" (every vertex in order) or "no normals": check first.
         if let Some(indices) = primitive.indices() {
             check_accessor(&indices, "indices", self.buffers)?;
+            // The reader panics ("unreachable") on other types, which the specification
+            // forbids for indices but the parser lets through.
+            use ::gltf::accessor::{DataType, Dimensions};
+            if !matches!(
+                indices.data_type(),
+                DataType::U8 | DataType::U16 | DataType::U32
+            ) || indices.dimensions() != Dimensions::Scalar
+            {
+                return Err(format!(
+                    "accessor {} (indices) holds {:?} {:?}, not unsigned byte, short or int scalars",
+                    indices.index(),
+                    indices.data_type(),
+                    indices.dimensions()
+                ));
+            }
         }
         for (semantic, accessor) in primitive.attributes() {
             if matches!(
@@ -215,6 +275,28 @@ impl State<'_> {
             reverse_z: true,
         });
     }
+}
+
+/// Refuses a primitive whose POSITION accessor does not exist: the gltf crate's validation
+/// reads that accessor before it checks the index, and panics (found by fuzzing: a file whose
+/// `accessors` key was misspelt).
+fn check_position_accessors(root: &::gltf::json::Root) -> Result<(), String> {
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            let position = ::gltf::json::validation::Checked::Valid(::gltf::Semantic::Positions);
+            if let Some(index) = primitive.attributes.get(&position)
+                && index.value() >= root.accessors.len()
+            {
+                return Err(format!(
+                    "mesh {m}, primitive {p}: POSITION names accessor {}, but the file has {} \
+                     accessors",
+                    index.value(),
+                    root.accessors.len()
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Checks that `accessor`'s elements lie inside its buffer view and the view inside its buffer.

@@ -34,6 +34,66 @@ const CREASE_DEGREES: f32 = 35.0;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let obj = std::fs::read(path).map_err(|e| SceneError::Parse {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    })?;
+    let sidecar = match sidecar_path(path) {
+        Some(sidecar) => {
+            let text = std::fs::read(&sidecar).map_err(|e| SceneError::Parse {
+                path: sidecar.clone(),
+                reason: e.to_string(),
+            })?;
+            Some((sidecar, text))
+        }
+        None => None,
+    };
+    let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    load_parts(
+        path,
+        &obj,
+        |mtl| tobj::load_mtl(folder.join(mtl)),
+        sidecar
+            .as_ref()
+            .map(|(p, text)| (p.as_path(), text.as_slice())),
+    )
+}
+
+/// Loads an OBJ held in memory, with the text of its camera sidecar when there is one: what
+/// [`load`] does with the files, without a file system. `name` stands for the file in messages
+/// and gives the scene its name (its stem); a `mtllib` the OBJ names is not read (there is no
+/// folder to read it from), so every surface is grey and a note says so.
+///
+/// ```
+/// let obj = b"v 0 0 0\nv 2 0 0\nv 2 1 -2\nv 0 1 -2\nf 1 2 3 4\n";
+/// let sidecar = br#"{"suggested_ao_radius": 0.3, "cameras": []}"#;
+/// let scene = aokit_scene::load::obj::load_slice("ramp.obj", obj, Some(sidecar))?;
+/// assert_eq!((scene.name.as_str(), scene.mesh.triangle_count()), ("ramp", 2));
+/// assert_eq!(scene.suggested_radius, Some(0.3));
+/// // A sidecar that does not parse is named as `<stem>-cameras.json`.
+/// let err = aokit_scene::load::obj::load_slice("ramp.obj", obj, Some(b"{")).unwrap_err();
+/// assert!(err.to_string().contains("ramp-cameras.json"));
+/// # Ok::<(), aokit_scene::SceneError>(())
+/// ```
+pub fn load_slice(name: &str, obj: &[u8], sidecar: Option<&[u8]>) -> Result<Scene, SceneError> {
+    let path = Path::new(name);
+    let sidecar_name = sidecar_name(path);
+    load_parts(
+        path,
+        obj,
+        |_| Err(tobj::LoadError::OpenFileFailed),
+        sidecar.map(|text| (sidecar_name.as_path(), text)),
+    )
+}
+
+/// The OBJ `obj` (named `path`), its materials from `mtl` and its sidecar (named, and its
+/// bytes) when there is one.
+fn load_parts(
+    path: &Path,
+    obj: &[u8],
+    mtl: impl Fn(&Path) -> tobj::MTLLoadResult,
+    sidecar: Option<(&Path, &[u8])>,
+) -> Result<Scene, SceneError> {
     let parse = |reason: String| SceneError::Parse {
         path: path.to_path_buf(),
         reason,
@@ -44,7 +104,9 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
         ignore_points: true,
         ignore_lines: true,
     };
-    let (models, materials) = tobj::load_obj(path, &options).map_err(|e| parse(e.to_string()))?;
+    check_face_indices(obj).map_err(parse)?;
+    let (models, materials) = tobj::load_obj_buf(&mut std::io::BufReader::new(obj), &options, mtl)
+        .map_err(|e| parse(e.to_string()))?;
     let mut notes = Vec::new();
     let materials = materials.unwrap_or_else(|e| {
         notes.push(format!("materials not loaded ({e}); using grey albedo"));
@@ -91,12 +153,14 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
     if mesh.triangle_count() == 0 {
         return Err(SceneError::Empty(path.to_path_buf()));
     }
+    // Each part is checked above; their extent together is checked here.
+    mesh.validate().map_err(parse)?;
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let (cameras, radius) = match sidecar_path(path) {
-        Some(sidecar) => read_sidecar(&sidecar)?,
+    let (cameras, radius) = match sidecar {
+        Some((sidecar, text)) => read_sidecar(sidecar, text)?,
         None => (Vec::new(), None),
     };
     let mut scene = Scene::new(&stem, mesh, cameras, radius);
@@ -104,10 +168,62 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
     Ok(scene)
 }
 
+/// Refuses a face whose texture-coordinate or normal index lies outside the ones defined
+/// before it (relative indices, `-1` for the last, included). tobj multiplies such an index
+/// without a check: a panic on overflow where overflow checks are on (debug builds, the fuzz
+/// targets), a wrapped index, or another vertex's normal, where they are off. Positions it
+/// checks itself; they are checked here too, for one message.
+fn check_face_indices(obj: &[u8]) -> Result<(), String> {
+    const KINDS: [&str; 3] = ["position", "texture coordinate", "normal"];
+    let mut counts = [0usize; 3];
+    for (number, line) in obj.split(|&b| b == b'\n').enumerate() {
+        let Ok(line) = std::str::from_utf8(line) else {
+            continue; // tobj refuses it
+        };
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f") => {
+                for corner in words {
+                    for (kind, index) in corner.split('/').enumerate().take(3) {
+                        let Ok(index) = index.parse::<i64>() else {
+                            continue; // empty (`1//2`), or refused by tobj
+                        };
+                        let count = counts[kind] as i64;
+                        let within = if index < 0 {
+                            -index <= count
+                        } else {
+                            (1..=count).contains(&index)
+                        };
+                        if !within {
+                            return Err(format!(
+                                "line {}: face {} index {index} is out of range for the {count} \
+                                 {}s before it",
+                                number + 1,
+                                KINDS[kind],
+                                KINDS[kind]
+                            ));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 fn sidecar_path(obj: &Path) -> Option<PathBuf> {
-    let stem = obj.file_stem()?.to_string_lossy();
-    let candidate = obj.with_file_name(format!("{stem}-cameras.json"));
-    candidate.exists().then_some(candidate)
+    let candidate = sidecar_name(obj);
+    (obj.file_stem().is_some() && candidate.exists()).then_some(candidate)
+}
+
+/// `<stem>-cameras.json` beside `obj`.
+fn sidecar_name(obj: &Path) -> PathBuf {
+    let stem = obj.file_stem().unwrap_or_default().to_string_lossy();
+    obj.with_file_name(format!("{stem}-cameras.json"))
 }
 
 #[derive(Deserialize)]
@@ -132,14 +248,13 @@ fn default_up() -> [f32; 3] {
     [0.0, 1.0, 0.0]
 }
 
-/// Reads named cameras and the suggested radius from a `<stem>-cameras.json` file.
-fn read_sidecar(path: &Path) -> Result<(Vec<Camera>, Option<f32>), SceneError> {
+/// Reads named cameras and the suggested radius from the text of a `<stem>-cameras.json` file.
+fn read_sidecar(path: &Path, text: &[u8]) -> Result<(Vec<Camera>, Option<f32>), SceneError> {
     let parse = |reason: String| SceneError::Parse {
         path: path.to_path_buf(),
         reason,
     };
-    let text = std::fs::read_to_string(path).map_err(|e| parse(e.to_string()))?;
-    let sidecar: Sidecar = serde_json::from_str(&text).map_err(|e| parse(e.to_string()))?;
+    let sidecar: Sidecar = serde_json::from_slice(text).map_err(|e| parse(e.to_string()))?;
     let cameras = sidecar
         .cameras
         .into_iter()

@@ -299,3 +299,126 @@ fn sidecar_with_a_bad_radius_is_refused_with_its_name() {
         "{err}"
     );
 }
+
+/// Found by the `obj` fuzz target (fuzz/): a face's relative normal index before the first
+/// normal (`-5` with one normal) made tobj multiply a wrapped index: a panic where overflow
+/// checks are on, another vertex's normal or a wrapped read where they are off.
+#[test]
+fn obj_face_index_outside_its_normals_is_refused() {
+    let crash: &[u8] = b"g tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf -3//-5 -2 -1//-1\ns 1\n\
+        l 1 2\np 3\nri\nmtllib cube.mtl\nuse -0.5\nv 0 0 1\nd -3//-0 -2 -1//-";
+    let err = aokit_scene::load::obj::load_slice("crash.obj", crash, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("crash.obj")
+            && err.contains("line 6: face normal index -5 is out of range for the 1 normals"),
+        "{err}"
+    );
+    // The same past the end, counting from 1, and 0, for texture coordinates and positions.
+    for (face, message) in [
+        (
+            "f 1/1 2/1 3/9",
+            "face texture coordinate index 9 is out of range for the 1",
+        ),
+        (
+            "f 1//1 2//1 3//0",
+            "face normal index 0 is out of range for the 1",
+        ),
+        ("f 1 2 4", "face position index 4 is out of range for the 3"),
+    ] {
+        let obj = format!("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n{face}\n");
+        let err = aokit_scene::load::obj::load_slice("tri.obj", obj.as_bytes(), None)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(message), "{face}: {err}");
+    }
+    // Relative indices within range still load.
+    let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf -3/-1/-1 -2/-1/-1 -1/-1/-1\n";
+    let scene = aokit_scene::load::obj::load_slice("tri.obj", obj, None).unwrap();
+    assert_eq!(scene.mesh.triangle_count(), 1);
+}
+
+/// Found by the `obj` fuzz target: finite positions 5.6e32 apart gave an infinite bounding
+/// radius, and so a framing camera at infinity ("non-finite eye"). The loaders refuse such an
+/// extent, naming it; every part of an OBJ may be finite on its own.
+#[test]
+fn positions_too_far_apart_for_f32_are_refused() {
+    let crash =
+        b"v 0 0 0\nv 2 0 0\nv 2 0 -555555555555555555555555555555552\nv 0 1 -2\nf 1 2 3 4\n";
+    let err = aokit_scene::load::obj::load_slice("far.obj", crash, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("far.obj") && err.contains("farther than 32-bit floats can measure"),
+        "{err}"
+    );
+    let two_parts = b"o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\
+        o b\nv 3e19 0 0\nv 3e19 1 0\nv 3e19 0 1\nf 4 5 6\n";
+    let err = aokit_scene::load::obj::load_slice("parts.obj", two_parts, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("farther than 32-bit floats can measure"),
+        "{err}"
+    );
+}
+
+/// Found by the `gltf` fuzz target (fuzz/): indices of signed shorts (componentType 5122),
+/// which the specification forbids and the parser lets through, hit an `unreachable!()` in the
+/// gltf crate's reader. They are refused, naming the accessor.
+#[test]
+fn gltf_indices_of_a_signed_type_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = triangle_gltf(dir.path(), "tri.glb", r#"[{"mesh": 0}]"#, 2, 3);
+    let bytes = std::fs::read(&path).unwrap();
+    // The same length: the GLB's chunk lengths still hold.
+    let at = bytes.windows(4).position(|w| w == b"5123").unwrap();
+    let mut signed = bytes.clone();
+    signed[at..at + 4].copy_from_slice(b"5122");
+    let err = aokit_scene::load::gltf::load_slice("signed.glb", &signed)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("signed.glb") && err.contains("accessor 1 (indices) holds I16 Scalar"),
+        "{err}"
+    );
+    // Unsigned shorts, as written, load.
+    assert!(aokit_scene::load::gltf::load_slice("tri.glb", &bytes).is_ok());
+}
+
+/// Found by the `gltf` fuzz target (fuzz/): with its `accessors` key misspelt (`accessOrs`),
+/// a file's POSITION named an accessor that does not exist, and the gltf crate's own
+/// validation indexed it: a panic. It is refused, naming the mesh and primitive.
+#[test]
+fn gltf_position_naming_a_missing_accessor_is_refused() {
+    let crash = r#"{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0, 1]}], "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 3]}], "cameras": [{"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "accessOrs": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}], "bufferViews": [{"buffer": 0, "byteLength": 36}], "buffers": [{"byteLength": 36, "uri": "data:applicataon/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}"#;
+    let err = aokit_scene::load::gltf::load_slice("crash.gltf", crash.as_bytes())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("crash.gltf")
+            && err.contains("mesh 0, primitive 0: POSITION names accessor 0, but the file has 0"),
+        "{err}"
+    );
+    // Spelt right, it loads.
+    let fixed = crash.replace("accessOrs", "accessors");
+    assert!(aokit_scene::load::gltf::load_slice("fixed.gltf", fixed.as_bytes()).is_ok());
+}
+
+/// Found by the `gltf` fuzz target (fuzz/): a GLB header whose length field is under the
+/// header's own 12 bytes made the gltf crate subtract past zero (a panic where overflow checks
+/// are on). It is refused.
+#[test]
+fn glb_length_shorter_than_its_header_is_refused() {
+    let mut glb = b"glTF\x02\x00\x00\x00\x00\x00\x00\x00".to_vec();
+    glb.extend_from_slice(&[0; 24]);
+    let err = aokit_scene::load::gltf::load_slice("short.glb", &glb)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("short.glb")
+            && err.contains("a length of 0 bytes, less than the header's own 12"),
+        "{err}"
+    );
+}

@@ -71,7 +71,9 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         let offset = vec2<i32>(k % 3 - 1, k / 3 - 1);
         let at = centre + offset;
         let d = depths[k];
-        let r = abs(d - depth) * relative_scale;
+        // 0 at the centre's depth even where relative_scale overflowed to infinity (a denormal
+        // depth): 0 * infinity would be NaN.
+        let r = select(abs(d - depth) * relative_scale, 0.0, d == depth);
         let spatial_weight =
             select(1.0, edge_weight, offset.x != 0) * select(1.0, edge_weight, offset.y != 0);
         var log2_w = 0.0;

@@ -50,7 +50,9 @@ fn neighbour_weight(offset: f32, depth: f32, centre_depth: f32, relative_scale: 
     }
     // Both differences in units of their sigma.
     let x = offset * spatial.spatial_scale;
-    let r = abs(depth - centre_depth) * relative_scale;
+    // The centre itself, and a neighbour at its depth, differ by 0 even where relative_scale
+    // overflowed to infinity (a denormal depth): 0 * infinity would be NaN.
+    let r = select(abs(depth - centre_depth) * relative_scale, 0.0, depth == centre_depth);
     var log2_w = -0.5 * LOG2_E * x * x;
     var kept = true;
     if DEPTH_WEIGHT == DEPTH_THRESHOLD {
