@@ -422,3 +422,22 @@ fn glb_length_shorter_than_its_header_is_refused() {
         "{err}"
     );
 }
+
+/// Found by the `gltf` fuzz target (fuzz/): a buffer's relative URI with `%AA`, which
+/// percent-decodes to a byte that is not UTF-8, made the gltf crate's import unwrap an error
+/// (a panic). It is refused, naming the buffer.
+#[test]
+fn gltf_buffer_uri_decoding_to_non_utf8_is_refused() {
+    let json = r#"{"asset": {"version": "2.0"}, "scenes": [{"nodes": []}],
+        "buffers": [{"byteLength": 4, "uri": "mesh%AA.bin"}]}"#;
+    let err = aokit_scene::load::gltf::load_slice("crash.gltf", json.as_bytes())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("crash.gltf")
+            && err.contains(
+                r#"buffer 0: URI "mesh%AA.bin" percent-decodes to bytes that are not UTF-8"#
+            ),
+        "{err}"
+    );
+}
