@@ -195,6 +195,20 @@ impl State<'_> {
                 ::gltf::Semantic::Positions | ::gltf::Semantic::Normals
             ) {
                 check_accessor(&accessor, &semantic.to_string(), self.buffers)?;
+                // The reader takes them as f32 triples whatever they hold: another type reads
+                // as garbage (or trips a debug assertion; found by fuzzing).
+                use ::gltf::accessor::{DataType, Dimensions};
+                if accessor.data_type() != DataType::F32
+                    || accessor.dimensions() != Dimensions::Vec3
+                {
+                    return Err(format!(
+                        "accessor {} ({}) holds {:?} {:?}, not float VEC3",
+                        accessor.index(),
+                        semantic.to_string(),
+                        accessor.data_type(),
+                        accessor.dimensions()
+                    ));
+                }
             }
         }
         let reader = primitive.reader(|buffer| self.buffers.get(buffer.index()).map(|d| &d.0[..]));
