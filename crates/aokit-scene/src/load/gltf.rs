@@ -67,6 +67,7 @@ fn load_from(path: &Path, bytes: &[u8], folder: Option<&Path>) -> Result<Scene, 
     let parsed =
         ::gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| parse(e.to_string()))?;
     check_position_accessors(parsed.document.as_json()).map_err(parse)?;
+    check_buffer_uris(parsed.document.as_json()).map_err(parse)?;
     let gltf = ::gltf::Gltf {
         document: ::gltf::Document::from_json(parsed.document.into_json())
             .map_err(|e| parse(e.to_string()))?,
@@ -194,6 +195,20 @@ impl State<'_> {
                 ::gltf::Semantic::Positions | ::gltf::Semantic::Normals
             ) {
                 check_accessor(&accessor, &semantic.to_string(), self.buffers)?;
+                // The reader takes them as f32 triples whatever they hold: another type reads
+                // as garbage (or trips a debug assertion; found by fuzzing).
+                use ::gltf::accessor::{DataType, Dimensions};
+                if accessor.data_type() != DataType::F32
+                    || accessor.dimensions() != Dimensions::Vec3
+                {
+                    return Err(format!(
+                        "accessor {} ({}) holds {:?} {:?}, not float VEC3",
+                        accessor.index(),
+                        semantic.to_string(),
+                        accessor.data_type(),
+                        accessor.dimensions()
+                    ));
+                }
             }
         }
         let reader = primitive.reader(|buffer| self.buffers.get(buffer.index()).map(|d| &d.0[..]));
@@ -275,6 +290,44 @@ impl State<'_> {
             reverse_z: true,
         });
     }
+}
+
+/// Refuses a buffer whose relative URI percent-decodes to bytes that are not UTF-8: the gltf
+/// crate's import unwraps that decoding, and panics (found by fuzzing).
+fn check_buffer_uris(root: &::gltf::json::Root) -> Result<(), String> {
+    for (i, buffer) in root.buffers.iter().enumerate() {
+        let Some(uri) = buffer.uri.as_deref() else {
+            continue;
+        };
+        if uri.contains(':') {
+            continue; // data:, file: or a scheme the import refuses itself
+        }
+        let bytes = uri.as_bytes();
+        let mut decoded = Vec::with_capacity(bytes.len());
+        let mut at = 0;
+        while at < bytes.len() {
+            let hex = bytes
+                .get(at + 1..at + 3)
+                .and_then(|h| std::str::from_utf8(h).ok())
+                .and_then(|h| u8::from_str_radix(h, 16).ok());
+            match (bytes[at], hex) {
+                (b'%', Some(byte)) => {
+                    decoded.push(byte);
+                    at += 3;
+                }
+                (byte, _) => {
+                    decoded.push(byte);
+                    at += 1;
+                }
+            }
+        }
+        if std::str::from_utf8(&decoded).is_err() {
+            return Err(format!(
+                "buffer {i}: URI {uri:?} percent-decodes to bytes that are not UTF-8"
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Refuses a primitive whose POSITION accessor does not exist: the gltf crate's validation

@@ -422,3 +422,44 @@ fn glb_length_shorter_than_its_header_is_refused() {
         "{err}"
     );
 }
+
+/// Found by the `gltf` fuzz target (fuzz/): a buffer's relative URI with `%AA`, which
+/// percent-decodes to a byte that is not UTF-8, made the gltf crate's import unwrap an error
+/// (a panic). It is refused, naming the buffer.
+#[test]
+fn gltf_buffer_uri_decoding_to_non_utf8_is_refused() {
+    let json = r#"{"asset": {"version": "2.0"}, "scenes": [{"nodes": []}],
+        "buffers": [{"byteLength": 4, "uri": "mesh%AA.bin"}]}"#;
+    let err = aokit_scene::load::gltf::load_slice("crash.gltf", json.as_bytes())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("crash.gltf")
+            && err.contains(
+                r#"buffer 0: URI "mesh%AA.bin" percent-decodes to bytes that are not UTF-8"#
+            ),
+        "{err}"
+    );
+}
+
+/// Found by the `gltf` fuzz target (fuzz/): a POSITION accessor of another type than float
+/// VEC3 was read as f32 triples all the same (a debug assertion in the gltf crate, garbage
+/// positions without one). It is refused, naming the accessor and its type.
+#[test]
+fn gltf_positions_of_another_type_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = triangle_gltf(dir.path(), "tri.glb", r#"[{"mesh": 0}]"#, 2, 3);
+    let bytes = std::fs::read(&path).unwrap();
+    // componentType 5126 (float) to 5125 (unsigned int): the same length.
+    let at = bytes.windows(4).position(|w| w == b"5126").unwrap();
+    let mut ints = bytes.clone();
+    ints[at..at + 4].copy_from_slice(b"5125");
+    let err = aokit_scene::load::gltf::load_slice("ints.glb", &ints)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("ints.glb")
+            && err.contains("accessor 0 (POSITION) holds U32 Vec3, not float VEC3"),
+        "{err}"
+    );
+}
