@@ -596,9 +596,8 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     if args.timing_frames > 1000 {
         bail!("--timing-frames {} is more than 1000", args.timing_frames);
     }
-    let temporal = args
-        .overrides
-        .apply(&AoSettings::default(), None)?
+    // As every method will run it (`peer.*` keys left to the peer).
+    let temporal = settings_for(args, methods[0], args.presets[0], 1.0)?
         .temporal
         .enabled;
     for note in crate::sequence::single_frame_notes(args.frames, args.path, temporal) {
