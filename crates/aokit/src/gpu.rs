@@ -624,6 +624,16 @@ pub fn create_uniform_buffer<T: bytemuck::Pod>(device: &wgpu::Device, label: &st
     })
 }
 
+/// The sampler the passes read depth and AO through: nearest texel, coordinates clamped to the
+/// edge (wgpu's default sampler), so gathers and off-screen samples repeat edge texels instead
+/// of wrapping to the other side of the image.
+pub(crate) fn create_point_clamp_sampler(device: &wgpu::Device, label: &str) -> wgpu::Sampler {
+    device.create_sampler(&wgpu::SamplerDescriptor {
+        label: Some(label),
+        ..Default::default()
+    })
+}
+
 /// Bytes per texel of the formats aokit reads back.
 fn texel_size(format: wgpu::TextureFormat) -> Result<u32, GpuError> {
     format

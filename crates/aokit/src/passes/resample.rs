@@ -117,10 +117,10 @@ impl ResamplePass {
             upsamples: HashMap::new(),
             current: None,
             uniforms: create_uniform_buffer::<UpsampleUniforms>(device, "aokit upsample settings"),
-            point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
-                label: Some("aokit upsample point clamp"),
-                ..Default::default()
-            }),
+            point_clamp: crate::gpu::create_point_clamp_sampler(
+                device,
+                "aokit upsample point clamp",
+            ),
             motion_in_placeholder: placeholder(
                 "aokit motion placeholder",
                 MOTION_VECTOR_FORMATS[0],

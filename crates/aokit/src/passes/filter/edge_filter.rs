@@ -45,10 +45,10 @@ impl EdgeFilterPass {
             kernels: HashMap::new(),
             current: None,
             uniforms: create_uniform_buffer::<SpatialUniforms>(device, "aokit edge filter"),
-            point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
-                label: Some("aokit edge filter point clamp"),
-                ..Default::default()
-            }),
+            point_clamp: crate::gpu::create_point_clamp_sampler(
+                device,
+                "aokit edge filter point clamp",
+            ),
         };
         pass.set_settings(device, queue, settings);
         pass

@@ -146,10 +146,10 @@ impl TemporalFilterPass {
             settings: *settings,
             kernels: [kernel(false), kernel(true)],
             uniforms: create_uniform_buffer::<TemporalUniforms>(device, "aokit temporal settings"),
-            point_clamp: device.create_sampler(&wgpu::SamplerDescriptor {
-                label: Some("aokit temporal point clamp"),
-                ..Default::default()
-            }),
+            point_clamp: crate::gpu::create_point_clamp_sampler(
+                device,
+                "aokit temporal point clamp",
+            ),
             motion_placeholder: stand_in_view(
                 device,
                 "aokit motion placeholder",

@@ -174,12 +174,7 @@ impl MethodPass {
     /// Creates the shared resources and compiles the kernel of `settings.method` (none when the
     /// separable HBAO passes run instead).
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: &AoSettings) -> Self {
-        // Depths are gathered and loaded, never filtered: clamping repeats edge depths instead
-        // of wrapping to the other side of the image.
-        let point_clamp = device.create_sampler(&wgpu::SamplerDescriptor {
-            label: Some("aokit point clamp"),
-            ..Default::default()
-        });
+        let point_clamp = crate::gpu::create_point_clamp_sampler(device, "aokit point clamp");
         let placeholder = |label, format, usage| stand_in_view(device, label, format, usage);
         let mut pass = Self {
             kernels: HashMap::new(),
