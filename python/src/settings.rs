@@ -5,7 +5,7 @@ use aokit::settings::{SETTINGS, SetError, SettingValue, find_setting, suggest_se
 use aokit::{AoSettings, Method, NormalSpace, Preset};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyString};
+use pyo3::types::{PyDict, PyString};
 
 /// What the arguments resolve to: the settings, and the space the normals come in.
 pub struct Resolved {
@@ -20,8 +20,9 @@ fn set_error(error: SetError) -> PyErr {
     PyValueError::new_err(error.to_string())
 }
 
-/// A Python value for the setting `key`: bool, int, float (numpy scalars too) or str, which is
-/// read as `--set` reads text (`"blue"`, `"true"`, `"4"`).
+/// A Python value for the setting `key`: bool, int, float (NumPy scalars too) or str. Each is
+/// read from the text `--set` would be given for it (`True` as `true`, `0.25` as `0.25`), so a
+/// value of the wrong kind or out of range fails with the text `aokit ao --set` prints.
 fn setting_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<SettingValue> {
     let spec = find_setting(key).ok_or_else(|| {
         set_error(SetError::UnknownKey {
@@ -29,25 +30,22 @@ fn setting_value(key: &str, value: &Bound<'_, PyAny>) -> PyResult<SettingValue> 
             suggestion: suggest_setting(key),
         })
     })?;
-    if let Ok(flag) = value.cast::<PyBool>() {
-        return Ok(SettingValue::Bool(flag.is_true()));
-    }
-    if let Ok(text) = value.cast::<PyString>() {
-        return spec.parse(&text.to_cow()?).map_err(set_error);
-    }
-    if let Ok(integer) = value.extract::<i64>() {
-        return Ok(match u32::try_from(integer) {
-            Ok(integer) => SettingValue::Integer(integer),
-            Err(_) => SettingValue::Float(integer as f32),
-        });
-    }
-    if let Ok(number) = value.extract::<f64>() {
-        return Ok(SettingValue::Float(number as f32));
-    }
-    Err(PyTypeError::new_err(format!(
-        "settings[{key:?}]: expected bool, int, float or str, not {}",
-        value.get_type().name()?
-    )))
+    let text = if let Ok(text) = value.cast::<PyString>() {
+        text.to_cow()?.into_owned()
+    } else if let Ok(flag) = value.extract::<bool>() {
+        flag.to_string()
+    } else if let Ok(integer) = value.extract::<i64>() {
+        integer.to_string()
+    } else if let Ok(number) = value.extract::<f64>() {
+        // Python's shortest round-trip text, as an f-string would put it on a command line.
+        number.to_string()
+    } else {
+        return Err(PyTypeError::new_err(format!(
+            "settings[{key:?}]: expected bool, int, float or str, not {}",
+            value.get_type().name()?
+        )));
+    };
+    spec.parse(&text).map_err(set_error)
 }
 
 /// Resolves the arguments as `aokit ao` resolves its flags: the preset (VBAO's tuned with

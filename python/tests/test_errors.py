@@ -53,15 +53,18 @@ def test_non_float_arrays_raise_type_error(ctx):
 
 
 def test_settings_errors_read_as_the_clis(cli, gbuffer, tmp_path, ctx):
-    # Out-of-range values, rules between settings and unknown keys. (A value of the wrong type
-    # is worded by `AoSettings::set` here and by the TOML reader in the CLI.)
-    cases = [("spatial.radius", 9), ("gtao.slices", 2), ("radius", -1), ("temporal.blend", 1.5)]
+    # Out-of-range values, rules between settings, and values of the wrong kind: each is read
+    # from the text `--set` is given for it.
+    cases = [
+        ("spatial.radius", 9), ("gtao.slices", 2), ("radius", -1), ("temporal.blend", 1.5),
+        ("spatial.enabled", 4), ("spatial.kind", True), ("gtao.slices", 2.5), ("radius", "far"),
+    ]
     for key, value in cases:
         with pytest.raises(ValueError) as error:
             ctx.ao(gbuffer.depth, camera=gbuffer.camera, settings={key: value})
         out = cli(
             "ao", "--depth", str(gbuffer.depth_path), "--camera", str(gbuffer.camera_path),
-            "--set", f"{key}={value}", "--out", str(tmp_path / "o"), cwd=tmp_path, check=False,
+            "--set", f"{key}={str(value).lower() if isinstance(value, bool) else value}", "--out", str(tmp_path / "o"), cwd=tmp_path, check=False,
         )
         assert out.returncode != 0
         assert str(error.value) in out.stderr, (str(error.value), out.stderr)
