@@ -157,12 +157,17 @@ pub const BACK_FACES: [ShaderSource; 4] = per_depth_input!(
     [include_str!("../shaders/input/back_faces.wgsl")]
 );
 
+/// `normal_from_depth`, the reconstruction of a normal from linear depth that
+/// [`NORMALS_FROM_DEPTH`] writes and the normal decode falls back to.
+const DEPTH_NORMAL: &str = include_str!("../shaders/common/depth_normal.wgsl");
+
 /// Normals reconstructed from linear depth.
 pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
     name: "normals_from_depth",
     parts: &[
         VIEW,
         ENCODING,
+        DEPTH_NORMAL,
         include_str!("../shaders/input/normals_from_depth.wgsl"),
     ],
 };
@@ -179,6 +184,7 @@ pub const DECODE_NORMALS_UINT: ShaderSource = ShaderSource {
     parts: &[
         VIEW,
         ENCODING,
+        DEPTH_NORMAL,
         ENCODED_UINT,
         include_str!("../shaders/input/decode_normals.wgsl"),
     ],
@@ -190,6 +196,7 @@ pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
     parts: &[
         VIEW,
         ENCODING,
+        DEPTH_NORMAL,
         ENCODED_FLOAT,
         include_str!("../shaders/input/decode_normals.wgsl"),
     ],

@@ -607,7 +607,7 @@ fn every_target_a_step_reads_is_an_input_or_written_before() {
 fn reads(pass: &Pass) -> Vec<Target> {
     match *pass {
         Pass::LinearDepth => vec![Target::InputDepth],
-        Pass::DecodeNormals { .. } => vec![Target::InputNormals],
+        Pass::DecodeNormals { .. } => vec![Target::InputNormals, Target::LinearDepth],
         Pass::NormalsFromDepth { .. } => vec![Target::LinearDepth],
         Pass::Downsample { depth, normals, .. } => vec![depth, normals],
         Pass::BackFaces { depth, .. } | Pass::DepthMips { depth, .. } => vec![depth],
