@@ -125,6 +125,10 @@ impl NormalEncoding {
     /// let constants = [("ENCODING", f64::from(NormalEncoding::Oct32.shader_code()))];
     /// let options =
     ///     wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
+    /// assert_eq!(options.constants, &[("ENCODING", 0.0)]);
+    /// // One code per encoding, so that the override picks exactly one.
+    /// let codes: Vec<u32> = NormalEncoding::ALL.iter().map(|e| e.shader_code()).collect();
+    /// assert!(codes.iter().enumerate().all(|(i, code)| !codes[..i].contains(code)));
     /// ```
     pub fn shader_code(self) -> u32 {
         self as u32

@@ -37,7 +37,10 @@ pub const VIEW: &str = include_str!("../shaders/common/view.wgsl");
 ///     return pack_oct32(normalize(surface.view_normal));
 /// }"],
 /// };
-/// GBUFFER.validate()?;
+/// let module = GBUFFER.validate()?;
+/// // aokit's snippet and the pass are one module: the pass's entry point is in it.
+/// let entry = module.entry_points.iter().find(|e| e.name == "fs_main").unwrap();
+/// assert_eq!(entry.stage, wgpu::naga::ShaderStage::Fragment);
 /// # Ok::<(), String>(())
 /// ```
 pub const ENCODING: &str = include_str!("../shaders/common/encoding.wgsl");
@@ -90,7 +93,10 @@ pub const OCCLUSION: &str = include_str!("../shaders/common/occlusion.wgsl");
 /// }"],
 /// };
 /// // naga finds WGSL errors in a unit test, before any device exists.
-/// NORMALS_OVERLAY.validate()?;
+/// let module = NORMALS_OVERLAY.validate()?;
+/// // One compute entry point, its workgroup as declared.
+/// assert_eq!(module.entry_points.len(), 1);
+/// assert_eq!(module.entry_points[0].workgroup_size, [8, 8, 1]);
 /// # Ok::<(), String>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
@@ -614,6 +620,10 @@ impl ShaderSource {
     /// let wgsl = aokit::shader::GTAO.source();
     /// let line = wgsl.lines().nth(120 - 1).expect("gtao is longer than 120 lines");
     /// eprintln!("gtao:120: {line}");
+    /// // Line 1 is the first snippet's first line; the snippets follow each other on new lines.
+    /// let parts = aokit::shader::GTAO.parts;
+    /// assert_eq!(wgsl.lines().next(), parts[0].lines().next());
+    /// assert!(wgsl.lines().count() >= parts.iter().map(|p| p.lines().count()).sum::<usize>());
     /// ```
     pub fn source(&self) -> String {
         self.parts.join("\n")
