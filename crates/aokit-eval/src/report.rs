@@ -119,7 +119,11 @@ impl Report {
     /// ```
     /// # let report = aokit_eval::report::Report { title: "run".into(), notes: Vec::new(),
     /// #     error_range: 0.5, legend_png: Vec::new(), views: Vec::new() };
-    /// std::fs::write(std::env::temp_dir().join("metrics.csv"), report.csv())?;
+    /// let csv = report.csv();
+    /// // A header row, then one row per view and method: none in an empty report.
+    /// assert!(csv.starts_with("view,method,preset,samples_per_pixel,gpu_ms,"));
+    /// assert_eq!(csv.lines().count(), 1);
+    /// std::fs::write(std::env::temp_dir().join("metrics.csv"), csv)?;
     /// # Ok::<(), std::io::Error>(())
     /// ```
     pub fn csv(&self) -> String {
@@ -143,7 +147,8 @@ impl Report {
     /// ```
     /// # let report = aokit_eval::report::Report { title: "run".into(), notes: Vec::new(),
     /// #     error_range: 0.5, legend_png: Vec::new(), views: Vec::new() };
-    /// println!("{}", report.markdown_by_method());
+    /// // One table per method that ran: none without views.
+    /// assert_eq!(report.markdown_by_method(), "");
     /// ```
     pub fn markdown_by_method(&self) -> String {
         markdown::render_by_method(self)

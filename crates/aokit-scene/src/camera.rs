@@ -9,7 +9,8 @@ use crate::mesh::Bounds;
 /// What the camera sees through.
 ///
 /// ```
-/// use aokit_scene::{Camera, Lens};
+/// use aokit::ProjectionKind;
+/// use aokit_scene::{Camera, Lens, mesh::Bounds};
 /// use glam::Vec3;
 /// // A plan view of a 20 m floor plan.
 /// let plan = Camera {
@@ -18,6 +19,11 @@ use crate::mesh::Bounds;
 ///     ..Camera::perspective("plan", Vec3::new(0.0, 50.0, 0.0), Vec3::ZERO, 60.0)
 /// };
 /// plan.validate()?;
+/// // 20 units tall whatever the distance, with planes fitted around the floor, 50 units down.
+/// let floor = Bounds { min: Vec3::new(-10.0, 0.0, -10.0), max: Vec3::new(10.0, 3.0, 10.0) };
+/// let projection = plan.projection(1.0, &floor);
+/// assert_eq!(projection.kind, ProjectionKind::Orthographic { height: 20.0 });
+/// assert!(projection.near < 47.0 && projection.far.unwrap() > 50.0);
 /// # Ok::<(), String>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,6 +50,13 @@ pub enum Lens {
 /// camera.near = Some(0.05);
 /// camera.far = Some(100.0);
 /// camera.validate()?;
+/// // The planes are used as given, whatever the scene's bounds.
+/// let bounds = aokit_scene::mesh::Bounds { min: Vec3::splat(-500.0), max: Vec3::splat(500.0) };
+/// let projection = camera.projection(1.5, &bounds);
+/// assert_eq!((projection.near, projection.far), (0.05, Some(100.0)));
+/// // A far plane before the near one is refused.
+/// camera.far = Some(0.01);
+/// assert!(camera.validate().is_err());
 /// # Ok::<(), String>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]

@@ -304,6 +304,13 @@ impl GBuffer {
 ///     previous_clip_from_world: before.projection(16.0 / 9.0, &bounds).clip_from_view()
 ///         * before.view_from_world(),
 /// };
+/// // A point nearer than the target both cameras look at: the eye moved right, so it moved
+/// // left on screen (parallax), and the motion vector points back to the right.
+/// let point = Vec3::new(0.0, 0.0, 3.0).extend(1.0);
+/// let ndc = |clip: glam::Vec4| clip.truncate() / clip.w;
+/// let was = ndc(camera.previous_clip_from_world * point);
+/// let is = ndc(projection.clip_from_view() * camera.view_from_world * point);
+/// assert!(is.x < was.x - 0.01, "{was} -> {is}");
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct GBufferCamera<'a> {

@@ -180,8 +180,13 @@ impl Mesh {
     /// use aokit_scene::shapes::{quad, sphere};
     /// use glam::Vec3;
     /// let mut mesh = quad(Vec3::new(-2.0, 0.0, 2.0), 4.0 * Vec3::X, -4.0 * Vec3::Z, Vec3::ONE);
-    /// mesh.append(&sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, Vec3::ONE));
+    /// let ball = sphere(Vec3::new(0.0, 0.5, 0.0), 0.5, Vec3::ONE);
+    /// mesh.append(&ball);
     /// mesh.validate()?;
+    /// // The ball's triangles follow the quad's two, their indices shifted past its vertices.
+    /// assert_eq!(mesh.triangle_count(), 2 + ball.triangle_count());
+    /// let bounds = mesh.bounds().unwrap();
+    /// assert_eq!((bounds.min.y, bounds.max.y), (0.0, 1.0));
     /// # Ok::<(), String>(())
     /// ```
     pub fn append(&mut self, other: &Mesh) {

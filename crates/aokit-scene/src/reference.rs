@@ -33,6 +33,9 @@ pub fn tracer(scene: &Scene) -> Result<Tracer, ReferenceError> {
 ///     let time = frame as f32 / (frames - 1) as f32;
 ///     // The triangles as the raster draws them in this frame.
 ///     let tracer = tracer_at(&scene, time)?;
+///     // Every triangle the raster draws, but the degenerate ones, which cover no pixel.
+///     let drawn = scene.mesh_at(time).triangle_count();
+///     assert!(tracer.triangle_count() > drawn / 2 && tracer.triangle_count() <= drawn);
 ///     // ... trace this frame's reference ...
 /// }
 /// # Ok::<(), Box<dyn std::error::Error>>(())

@@ -18,6 +18,8 @@ use crate::mesh::{Bounds, Mesh};
 ///     eprintln!("{}: {note}", scene.name);
 /// }
 /// println!("{} triangles, {} cameras", scene.mesh.triangle_count(), scene.cameras.len());
+/// // A built-in scene comes with geometry and at least one camera to look at it through.
+/// assert!(scene.mesh.triangle_count() > 0 && !scene.cameras.is_empty());
 /// # Ok::<(), aokit_scene::SceneError>(())
 /// ```
 #[derive(Clone, Debug)]

@@ -29,7 +29,8 @@ pub const SHADOW: ShaderSource = ShaderSource {
 /// ```
 /// // Catches a WGSL error on the CPU, before any device is opened.
 /// for shader in aokit_scene::shaders::ALL {
-///     shader.validate().unwrap_or_else(|e| panic!("{}: {e}", shader.name));
+///     let validated = shader.validate();
+///     assert!(validated.is_ok(), "{}: {}", shader.name, validated.unwrap_err());
 /// }
 /// ```
 pub const ALL: &[ShaderSource] = &[GBUFFER, COMPOSITE, SHADOW];

@@ -71,6 +71,25 @@ pub enum AoError {
         /// The setting that makes the outputs have it.
         needs: &'static str,
     },
+    /// The device was lost (destroyed, a driver reset, a removed GPU): nothing it runs any more
+    /// produces a frame. Make a new device and a new pipeline. Reported by the pipeline's next
+    /// call once the device's lost callback has run (wgpu runs it while polling the device),
+    /// see [`AoPipeline::device_lost_callback`](crate::AoPipeline::device_lost_callback).
+    #[error("the GPU device was lost ({reason}); make a new device and a new AoPipeline on it")]
+    DeviceLost {
+        /// wgpu's reason, and its message when it gave one.
+        reason: String,
+    },
+    /// The device ran out of memory making the pipeline's buffers and noise textures
+    /// ([`AoPipeline::new`](crate::AoPipeline::new)) or the intermediate textures that
+    /// [`AoPipeline::encode`](crate::AoPipeline::encode) makes when the frame's size or layout
+    /// changes: lower the resolution, or free GPU memory. The pipeline keeps nothing it made:
+    /// the next `encode` tries again.
+    #[error("out of GPU memory making {what}; try a lower resolution or free GPU memory")]
+    OutOfMemory {
+        /// What was being made.
+        what: String,
+    },
     /// A [`DebugStyle`](crate::debug::DebugStyle) value is out of range.
     #[error("debug style: {0}")]
     DebugStyle(String),

@@ -13,6 +13,7 @@
 #![warn(missing_docs)]
 
 pub mod debug;
+mod device_errors;
 pub mod error;
 pub mod gpu;
 pub mod inputs;

@@ -28,6 +28,37 @@ use crate::settings::NormalEncoding;
 /// ```
 pub const STEREOGRAPHIC_RANGE: f32 = 4.0;
 
+/// Shortest and longest vector taken for a unit normal (and normalised) where one is stored as
+/// its components (`rgba16f`, `rgb10a2`, normals handed over on the CPU); `USABLE_LENGTH_MIN`
+/// and `USABLE_LENGTH_MAX` in WGSL. Quantisation to 8 or 10 bits and interpolated normals left
+/// unnormalised are off by far less; a vector outside is not a normal at all.
+///
+/// ```
+/// use aokit::normals::USABLE_LENGTH;
+/// // An 8-bit unorm component is off by up to 1/255: a unit normal stays well inside.
+/// let worst = 3f32.sqrt() / 255.0;
+/// assert!(USABLE_LENGTH.contains(&(1.0 - worst)) && USABLE_LENGTH.contains(&(1.0 + worst)));
+/// assert!(!USABLE_LENGTH.contains(&0.0));
+/// ```
+pub const USABLE_LENGTH: std::ops::RangeInclusive<f32> = 0.5..=2.0;
+
+/// Whether `n` can be taken for a normal: finite, with a length within [`USABLE_LENGTH`]. The
+/// pipeline's decode reconstructs the normal from depth at a texel that fails this
+/// (docs/normals.md, "Unusable normals").
+///
+/// ```
+/// use aokit::normals::is_usable;
+/// use glam::Vec3;
+/// assert!(is_usable(Vec3::new(0.0, 0.0, 0.98)));
+/// assert!(!is_usable(Vec3::ZERO));
+/// assert!(!is_usable(Vec3::new(f32::NAN, 0.0, 1.0)));
+/// assert!(!is_usable(Vec3::new(0.0, f32::INFINITY, 0.0)));
+/// assert!(!is_usable(Vec3::new(3.0, 0.0, 0.0)));
+/// ```
+pub fn is_usable(n: Vec3) -> bool {
+    n.is_finite() && USABLE_LENGTH.contains(&n.length())
+}
+
 impl NormalEncoding {
     /// The texture format that holds one encoded normal per texel.
     ///
@@ -94,6 +125,10 @@ impl NormalEncoding {
     /// let constants = [("ENCODING", f64::from(NormalEncoding::Oct32.shader_code()))];
     /// let options =
     ///     wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
+    /// assert_eq!(options.constants, &[("ENCODING", 0.0)]);
+    /// // One code per encoding, so that the override picks exactly one.
+    /// let codes: Vec<u32> = NormalEncoding::ALL.iter().map(|e| e.shader_code()).collect();
+    /// assert!(codes.iter().enumerate().all(|(i, code)| !codes[..i].contains(code)));
     /// ```
     pub fn shader_code(self) -> u32 {
         self as u32
@@ -754,6 +789,24 @@ mod tests {
                 "{name}"
             );
         }
+    }
+
+    #[test]
+    fn usable_length_matches_wgsl() {
+        let module = crate::shader::DECODE_NORMALS_FLOAT.validate().unwrap();
+        let constant = |name: &str| {
+            let (_, constant) = module
+                .constants
+                .iter()
+                .find(|(_, c)| c.name.as_deref() == Some(name))
+                .unwrap();
+            match module.global_expressions[constant.init] {
+                wgpu::naga::Expression::Literal(wgpu::naga::Literal::F32(value)) => value,
+                ref other => panic!("{name}: {other:?}"),
+            }
+        };
+        assert_eq!(constant("USABLE_LENGTH_MIN"), *USABLE_LENGTH.start());
+        assert_eq!(constant("USABLE_LENGTH_MAX"), *USABLE_LENGTH.end());
     }
 
     #[test]

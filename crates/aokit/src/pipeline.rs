@@ -1,5 +1,6 @@
 //! [`AoPipeline`]: owns the passes and the intermediate textures, and wires them per frame.
 
+use crate::device_errors::{DeviceLoss, allocating};
 use crate::error::AoError;
 use crate::gpu::{create_uniform_buffer, missing_storage_formats};
 use crate::inputs::{AoInputs, InputError};
@@ -194,13 +195,21 @@ pub struct AoPipeline {
     input_normals_view: Option<wgpu::TextureView>,
     targets: Option<Targets>,
     timer: Option<PassTimer>,
+    /// Filled by the device's lost callback.
+    loss: DeviceLoss,
 }
 
 impl AoPipeline {
     /// Compiles the passes the settings need. Fails, naming the field, when the settings are
     /// out of range, with [`AoError::Fp16DepthMipsUnsupported`] when they ask for an fp16
-    /// depth MIP chain the device cannot write, and with [`AoError::StorageFormats`] on a
-    /// device that cannot write the storage textures the passes write.
+    /// depth MIP chain the device cannot write, with [`AoError::StorageFormats`] on a
+    /// device that cannot write the storage textures the passes write, and with
+    /// [`AoError::OutOfMemory`] when its buffers and noise textures do not fit.
+    ///
+    /// Sets the device's lost callback, so that the calls after a device loss return
+    /// [`AoError::DeviceLost`]. A device has one: a renderer with a callback of its own, or
+    /// more than one pipeline on the device, forwards to each pipeline's
+    /// [`AoPipeline::device_lost_callback`].
     ///
     /// ```no_run
     /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::AoError> {
@@ -219,18 +228,49 @@ impl AoPipeline {
         settings: &AoSettings,
     ) -> Result<Self, AoError> {
         check_settings(device, settings)?;
-        Ok(Self {
-            settings: *settings,
-            view_uniforms: create_uniform_buffer::<ViewUniforms>(device, "aokit view"),
-            working_view_uniforms: create_uniform_buffer::<ViewUniforms>(
-                device,
-                "aokit working view",
-            ),
-            passes: Passes::new(device, queue, settings),
-            input_normals_view: None,
-            targets: None,
-            timer: None,
-        })
+        let loss = DeviceLoss::watch(device);
+        allocating(
+            device,
+            || "the pipeline's buffers and noise textures".to_string(),
+            || Self {
+                settings: *settings,
+                view_uniforms: create_uniform_buffer::<ViewUniforms>(device, "aokit view"),
+                working_view_uniforms: create_uniform_buffer::<ViewUniforms>(
+                    device,
+                    "aokit working view",
+                ),
+                passes: Passes::new(device, queue, settings),
+                input_normals_view: None,
+                targets: None,
+                timer: None,
+                loss,
+            },
+        )
+    }
+
+    /// A device-lost callback that makes this pipeline's next calls return
+    /// [`AoError::DeviceLost`], for a renderer that sets a callback of its own (which replaces
+    /// the one [`AoPipeline::new`] set) or runs several pipelines on one device: call it from
+    /// yours.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), aokit::AoError> {
+    /// use aokit::{AoError, AoPipeline, AoSettings};
+    /// let mut pipeline = AoPipeline::new(device, queue, &AoSettings::default())?;
+    /// let aokit_lost = pipeline.device_lost_callback();
+    /// device.set_device_lost_callback(move |reason, message| {
+    ///     eprintln!("device lost: {reason:?} {message}");
+    ///     aokit_lost(reason, message);
+    /// });
+    /// device.destroy();
+    /// // wgpu runs the callback while polling, once the queue is idle.
+    /// device.poll(wgpu::PollType::wait_indefinitely()).ok();
+    /// let err = pipeline.set_settings(device, queue, &AoSettings::default()).unwrap_err();
+    /// assert!(matches!(err, AoError::DeviceLost { .. }), "{err}");
+    /// # Ok(()) }
+    /// ```
+    pub fn device_lost_callback(&self) -> impl Fn(wgpu::DeviceLostReason, String) + Send + 'static {
+        self.loss.callback()
     }
 
     /// Times every pass with GPU timestamps from now on. Returns `false`, and changes nothing,
@@ -319,6 +359,7 @@ impl AoPipeline {
         queue: &wgpu::Queue,
         settings: &AoSettings,
     ) -> Result<(), AoError> {
+        self.loss.check()?;
         check_settings(device, settings)?;
         self.settings = *settings;
         self.passes.set_settings(device, queue, settings);
@@ -360,12 +401,24 @@ impl AoPipeline {
         encoder: &mut wgpu::CommandEncoder,
         inputs: &AoInputs<'a>,
     ) -> Result<AoOutputs<'a>, AoError> {
+        self.loss.check()?;
         let settings = self.settings;
         let size = check_inputs(device, &settings, inputs)?;
         let plan = FramePlan::new(&settings, &describe(inputs, size));
         let layout = Layout::of(&plan);
         if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
-            self.targets = Some(Targets::new(device, layout, self.passes.pair));
+            // The old textures go first, so that they do not count against the new ones.
+            self.targets = None;
+            let what = || {
+                format!(
+                    "the intermediate textures of a {}x{} frame",
+                    size[0], size[1]
+                )
+            };
+            let pair = self.passes.pair;
+            self.targets = Some(allocating(device, what, || {
+                Targets::new(device, layout, pair)
+            })?);
         }
         let targets = self.targets.as_ref().expect("targets were just made");
         let (projection, frame_index) = (&inputs.projection, inputs.frame_index);

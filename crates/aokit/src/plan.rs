@@ -92,7 +92,8 @@ pub(crate) enum Kernel {
 pub(crate) enum Pass {
     /// [`Target::InputDepth`] -> [`Target::LinearDepth`].
     LinearDepth,
-    /// [`Target::InputNormals`] -> [`Target::Normals`], turned into view space when `world`.
+    /// [`Target::InputNormals`] -> [`Target::Normals`], turned into view space when `world`;
+    /// reads [`Target::LinearDepth`] where a texel holds no usable normal.
     DecodeNormals {
         encoding: NormalEncoding,
         world: bool,
@@ -202,29 +203,31 @@ impl FramePlan {
         let mut step = |at, pass| steps.push(Step { at, pass });
 
         // Input: normals from the buffer when the settings use it, as they are when oct32 in
-        // view space; else from the linear depth.
+        // view space, else decoded; else from the linear depth.
         let buffer_normals = inputs.normals && settings.normals.source == NormalSource::Buffer;
+        let world = settings.normals.space == NormalSpace::World;
+        let encoding = settings.normals.encoding;
+        let decode = buffer_normals && (encoding != NormalEncoding::Oct32 || world);
         // The linear depth pass runs at full resolution, and where normals are reconstructed
-        // from its output. Otherwise the downsample and the upsample read the renderer's depth
-        // themselves, and the upsample writes the full-resolution linear depth: one pass less.
-        let linear_pass = !below_full || !buffer_normals;
+        // from its output (the decode falls back to them where a texel holds no normal).
+        // Otherwise the downsample and the upsample read the renderer's depth themselves, and
+        // the upsample writes the full-resolution linear depth: one pass less.
+        let linear_pass = !below_full || !buffer_normals || decode;
         let depth = if linear_pass {
             step(At::Input, Pass::LinearDepth);
             Target::LinearDepth
         } else {
             Target::InputDepth
         };
-        let world = settings.normals.space == NormalSpace::World;
-        let encoding = settings.normals.encoding;
         let normals = if !buffer_normals {
             let source = settings.normals.source;
             step(At::Input, Pass::NormalsFromDepth { source });
             Target::Normals
-        } else if encoding == NormalEncoding::Oct32 && !world {
-            Target::InputNormals
-        } else {
+        } else if decode {
             step(At::Input, Pass::DecodeNormals { encoding, world });
             Target::Normals
+        } else {
+            Target::InputNormals
         };
 
         // Resample: the kernel's inputs at working size, with the motion the filters need there.

@@ -144,8 +144,9 @@ impl Passes {
                     glam::Mat3::IDENTITY
                 };
                 let (input, output) = (view(Target::InputNormals), view(Target::Normals));
+                let depth = view(Target::LinearDepth);
                 self.decode_normals
-                    .encode(ctx, queue, encoding, to_view, input, output);
+                    .encode(ctx, queue, encoding, to_view, input, depth, output);
             }
             Pass::NormalsFromDepth { source } => {
                 let (depth, output) = (view(Target::LinearDepth), view(Target::Normals));

@@ -37,7 +37,10 @@ pub const VIEW: &str = include_str!("../shaders/common/view.wgsl");
 ///     return pack_oct32(normalize(surface.view_normal));
 /// }"],
 /// };
-/// GBUFFER.validate()?;
+/// let module = GBUFFER.validate()?;
+/// // aokit's snippet and the pass are one module: the pass's entry point is in it.
+/// let entry = module.entry_points.iter().find(|e| e.name == "fs_main").unwrap();
+/// assert_eq!(entry.stage, wgpu::naga::ShaderStage::Fragment);
 /// # Ok::<(), String>(())
 /// ```
 pub const ENCODING: &str = include_str!("../shaders/common/encoding.wgsl");
@@ -90,7 +93,10 @@ pub const OCCLUSION: &str = include_str!("../shaders/common/occlusion.wgsl");
 /// }"],
 /// };
 /// // naga finds WGSL errors in a unit test, before any device exists.
-/// NORMALS_OVERLAY.validate()?;
+/// let module = NORMALS_OVERLAY.validate()?;
+/// // One compute entry point, its workgroup as declared.
+/// assert_eq!(module.entry_points.len(), 1);
+/// assert_eq!(module.entry_points[0].workgroup_size, [8, 8, 1]);
 /// # Ok::<(), String>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
@@ -157,12 +163,17 @@ pub const BACK_FACES: [ShaderSource; 4] = per_depth_input!(
     [include_str!("../shaders/input/back_faces.wgsl")]
 );
 
+/// `normal_from_depth`, the reconstruction of a normal from linear depth that
+/// [`NORMALS_FROM_DEPTH`] writes and the normal decode falls back to.
+const DEPTH_NORMAL: &str = include_str!("../shaders/common/depth_normal.wgsl");
+
 /// Normals reconstructed from linear depth.
 pub const NORMALS_FROM_DEPTH: ShaderSource = ShaderSource {
     name: "normals_from_depth",
     parts: &[
         VIEW,
         ENCODING,
+        DEPTH_NORMAL,
         include_str!("../shaders/input/normals_from_depth.wgsl"),
     ],
 };
@@ -179,6 +190,7 @@ pub const DECODE_NORMALS_UINT: ShaderSource = ShaderSource {
     parts: &[
         VIEW,
         ENCODING,
+        DEPTH_NORMAL,
         ENCODED_UINT,
         include_str!("../shaders/input/decode_normals.wgsl"),
     ],
@@ -190,6 +202,7 @@ pub const DECODE_NORMALS_FLOAT: ShaderSource = ShaderSource {
     parts: &[
         VIEW,
         ENCODING,
+        DEPTH_NORMAL,
         ENCODED_FLOAT,
         include_str!("../shaders/input/decode_normals.wgsl"),
     ],
@@ -607,6 +620,10 @@ impl ShaderSource {
     /// let wgsl = aokit::shader::GTAO.source();
     /// let line = wgsl.lines().nth(120 - 1).expect("gtao is longer than 120 lines");
     /// eprintln!("gtao:120: {line}");
+    /// // Line 1 is the first snippet's first line; the snippets follow each other on new lines.
+    /// let parts = aokit::shader::GTAO.parts;
+    /// assert_eq!(wgsl.lines().next(), parts[0].lines().next());
+    /// assert!(wgsl.lines().count() >= parts.iter().map(|p| p.lines().count()).sum::<usize>());
     /// ```
     pub fn source(&self) -> String {
         self.parts.join("\n")

@@ -356,25 +356,23 @@ impl Uploaded {
     }
 }
 
-/// Shortest and longest normal taken as a unit normal (and normalised): half-float exports and
-/// interpolated normals are off by far less; a normal outside is not a unit normal at all.
-const NORMAL_LENGTH: std::ops::RangeInclusive<f32> = 0.5..=2.0;
-
 /// Refuses normals that are zero, NaN, infinite or far from unit length at a pixel showing a
 /// surface: normalising them falls back to a normal facing the camera, which the kernels take
 /// for a real one and the AO darkens without a word (the room's mean AO 0.95 to 0.28 with
-/// zero normals). Pixels without a surface may hold anything.
+/// zero normals). Pixels without a surface may hold anything. The bound is the one the
+/// pipeline's decode holds normal textures to ([`aokit::normals::is_usable`]), where it falls
+/// back to normals from depth instead: a file of normals is checked whole, so its errors are
+/// reported rather than patched.
 fn check_normals(
     normals: &[Vec3],
     linear_depth: &[f32],
     size: [u32; 2],
 ) -> Result<(), RenderError> {
-    let usable = |n: &Vec3| n.is_finite() && NORMAL_LENGTH.contains(&n.length());
     let mut bad = normals
         .iter()
         .zip(linear_depth)
         .enumerate()
-        .filter(|(_, (n, d))| d.is_finite() && **d > 0.0 && !usable(n));
+        .filter(|(_, (n, d))| d.is_finite() && **d > 0.0 && !aokit::normals::is_usable(**n));
     let Some((first, (example, _))) = bad.next() else {
         return Ok(());
     };

@@ -172,6 +172,34 @@ fn decode_normal_uint(bits: u32, encoding: u32) -> vec3<f32> {
     }
 }
 
+// Shortest and longest stored vector taken for a unit normal (`normals::USABLE_LENGTH` in Rust;
+// a test compares them): 8- and 10-bit quantisation and interpolated, unrenormalised normals are
+// off by far less, and a vector outside is not a normal at all (a cleared or garbage texel).
+const USABLE_LENGTH_MIN: f32 = 0.5;
+const USABLE_LENGTH_MAX: f32 = 2.0;
+
+// Whether every component of `v` is finite. Tested on the bits: WGSL lets the compiler assume
+// floats are never NaN or infinite, so a comparison may be folded away.
+fn all_finite(v: vec3<f32>) -> bool {
+    let exponent = vec3<u32>(0x7f800000u);
+    return all((bitcast<vec3<u32>>(v) & exponent) != exponent);
+}
+
+// Whether a texel of a float encoding holds a normal. The encodings that store the vector itself
+// (rgb10a2, rgba16f) can hold one that is zero, NaN, infinite or of any length; the octahedral
+// ones store a direction, which every texel decodes to.
+fn normal_texel_usable(texel: vec4<f32>, encoding: u32) -> bool {
+    var v: vec3<f32>;
+    switch encoding {
+        case ENCODING_RGB10A2: { v = texel.xyz * 2.0 - 1.0; }
+        case ENCODING_RGBA16F: { v = texel.xyz; }
+        default: { return true; }
+    }
+    let length_squared = dot(v, v);
+    return all_finite(v) && length_squared >= USABLE_LENGTH_MIN * USABLE_LENGTH_MIN
+        && length_squared <= USABLE_LENGTH_MAX * USABLE_LENGTH_MAX;
+}
+
 // Encodings stored in unorm or float texels: oct24, oct16, oct20, rgb10a2, rgba16f. The value
 // written is what the texture holds: oct16 in an Rg8Unorm texel keeps only its first two channels.
 fn encode_normal_float(n: vec3<f32>, encoding: u32) -> vec4<f32> {

@@ -181,6 +181,31 @@ fn below_full_resolution_with_a_normal_buffer_the_resample_reads_the_input_depth
 }
 
 #[test]
+fn below_full_resolution_decoded_normals_run_the_linear_depth_pass_their_fallback_reads() {
+    let mut settings = half(AoSettings::default());
+    settings.normals.encoding = NormalEncoding::Rgba16f;
+    let plan = plan(settings);
+    assert_eq!(
+        names(&plan),
+        [
+            "linear_depth@i",
+            "decode_normals@i",
+            "downsample@w",
+            "method@w",
+            "upsample@i"
+        ]
+    );
+    assert!(matches!(
+        step(&plan, "upsample").pass,
+        Pass::Upsample {
+            depth: Target::LinearDepth,
+            write_linear_depth: false,
+            ..
+        }
+    ));
+}
+
+#[test]
 fn below_full_resolution_with_normals_from_depth_the_linear_depth_pass_runs() {
     let inputs = FrameInputs {
         normals: false,
@@ -607,7 +632,7 @@ fn every_target_a_step_reads_is_an_input_or_written_before() {
 fn reads(pass: &Pass) -> Vec<Target> {
     match *pass {
         Pass::LinearDepth => vec![Target::InputDepth],
-        Pass::DecodeNormals { .. } => vec![Target::InputNormals],
+        Pass::DecodeNormals { .. } => vec![Target::InputNormals, Target::LinearDepth],
         Pass::NormalsFromDepth { .. } => vec![Target::LinearDepth],
         Pass::Downsample { depth, normals, .. } => vec![depth, normals],
         Pass::BackFaces { depth, .. } | Pass::DepthMips { depth, .. } => vec![depth],

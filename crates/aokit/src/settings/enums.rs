@@ -505,6 +505,9 @@ named_enum! {
     ///     ..AoSettings::preset(Method::Gtao, Preset::High)
     /// };
     /// settings.validate()?;
+    /// // The offset counts in log2 pixels from 0: a negative one is refused, naming it.
+    /// let error = AoSettings { depth_mip_offset: -1.0, ..settings }.validate().unwrap_err();
+    /// assert_eq!(error.field, "depth_mip_offset");
     /// # Ok::<(), aokit::SettingsError>(())
     /// ```
     pub enum DepthMips ("depth mips") {
@@ -538,6 +541,9 @@ named_enum! {
     ///     ..AoSettings::preset(Method::Gtao, Preset::High)
     /// };
     /// settings.validate()?;
+    /// // GTAO marches slices, so it reads the setting; `--set sample_depth=interpolated` names it.
+    /// assert!(settings.method.marches_slices());
+    /// assert_eq!(settings.sample_depth.name(), "interpolated");
     /// # Ok::<(), aokit::SettingsError>(())
     /// ```
     pub enum SampleDepth ("sample depth") {
@@ -570,6 +576,9 @@ named_enum! {
     ///     ..AoSettings::preset(Method::Gtao, Preset::High)
     /// };
     /// general.validate()?;
+    /// // The presets march the lean way; the flag's value parses to the general march.
+    /// assert_eq!(AoSettings::preset(Method::Gtao, Preset::High).slice_march, SliceMarch::Lean);
+    /// assert_eq!("general".parse::<SliceMarch>(), Ok(SliceMarch::General));
     /// # Ok::<(), aokit::SettingsError>(())
     /// ```
     pub enum SliceMarch ("slice march") {

@@ -377,7 +377,7 @@ pub(super) struct Rule {
 ///
 /// ```
 /// use aokit::AoSettings;
-/// use aokit::settings::{SETTINGS, SettingKind};
+/// use aokit::settings::{SETTINGS, SettingKind, SettingValue};
 /// // A settings panel: one widget per setting, labelled by key, with its help as a tooltip.
 /// let settings = AoSettings::default();
 /// for spec in SETTINGS {
@@ -388,6 +388,11 @@ pub(super) struct Rule {
 ///     };
 ///     println!("{} ({widget}) = {}: {}", spec.name, spec.get(&settings), spec.help);
 /// }
+/// // Every setting has help for its tooltip; the radius is a slider showing its default.
+/// assert!(SETTINGS.iter().all(|spec| !spec.help.is_empty()));
+/// let radius = SETTINGS.iter().find(|spec| spec.name == "radius").unwrap();
+/// assert!(matches!(radius.kind, SettingKind::Float(_)));
+/// assert_eq!(radius.get(&settings), SettingValue::Float(settings.radius));
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct SettingSpec {

@@ -307,3 +307,140 @@ fn a_normal_texture_in_another_format_than_the_encoding_is_refused_naming_both()
         Err(AoError::Input(InputError::NormalsFormat { .. }))
     ));
 }
+
+/// A slanted floor with a block standing on it, as linear depth: enough relief for the AO to
+/// vary with the normal.
+fn block_scene() -> Vec<f32> {
+    let [w, h] = SIZE;
+    (0..w * h)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            let floor = 3.0 - 1.5 * y as f32 / h as f32;
+            let block = (40..88).contains(&x) && (16..48).contains(&y);
+            if block { floor - 0.4 } else { floor }
+        })
+        .collect()
+}
+
+/// Pixels given an unusable normal: a sparse scatter over the image, on the floor, the block and
+/// their edges.
+fn spoiled(i: usize) -> bool {
+    i % 23 == 5
+}
+
+/// One frame of `settings` on `depth` (and `normals`), its AO and normals read back.
+fn ao_and_normals(
+    gpu: &GpuContext,
+    settings: &AoSettings,
+    depth: &wgpu::Texture,
+    normals: Option<&wgpu::Texture>,
+) -> (Vec<f32>, Vec<u32>) {
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let mut pipeline = AoPipeline::new(device, queue, settings).unwrap();
+    let mut encoder = device.create_command_encoder(&Default::default());
+    let outputs = pipeline
+        .encode(
+            device,
+            queue,
+            &mut encoder,
+            &AoInputs {
+                normals,
+                ..AoInputs::new(depth, projection())
+            },
+        )
+        .unwrap();
+    queue.submit([encoder.finish()]);
+    let ao = aokit::gpu::read_texture_f32(device, queue, outputs.ao).unwrap();
+    let normals =
+        bytemuck::pod_collect_to_vec(&read_texture(device, queue, outputs.normals).unwrap());
+    (ao, normals)
+}
+
+#[test]
+fn unusable_normals_in_a_texture_fall_back_to_normals_from_depth_per_pixel() {
+    let gpu = gpu();
+    let (device, queue) = (&gpu.device, &gpu.queue);
+    let depth = upload_texture_2d(
+        device,
+        queue,
+        "depth",
+        SIZE,
+        wgpu::TextureFormat::R32Float,
+        bytemuck::cast_slice(&block_scene()),
+    )
+    .unwrap();
+    let mut settings = AoSettings::default();
+    settings.spatial.enabled = false;
+    settings.temporal.enabled = false;
+    let (from_depth, depth_normals) = ao_and_normals(&gpu, &settings, &depth, None);
+    // The renderer's normals: those from depth tilted 30 degrees about x, as a normal map
+    // would, so that its AO differs from the AO with normals from depth.
+    let tilt = glam::Quat::from_rotation_x(30f32.to_radians());
+    let good: Vec<Vec3> = depth_normals
+        .iter()
+        .map(|&bits| tilt * unpack_oct32(bits))
+        .collect();
+    for (encoding, unusable) in [
+        (
+            NormalEncoding::Rgba16f,
+            &[
+                Vec3::ZERO,
+                Vec3::new(f32::NAN, 0.0, 1.0),
+                Vec3::new(0.0, f32::INFINITY, 0.0),
+                Vec3::new(0.0, 0.0, -3.0),
+                Vec3::splat(0.1),
+            ][..],
+        ),
+        // Mid-grey, the nearest a 10-bit texel comes to the zero vector.
+        (NormalEncoding::Rgb10a2, &[Vec3::ZERO][..]),
+    ] {
+        settings.normals.encoding = encoding;
+        let upload = |normals: &[Vec3]| {
+            let bytes = aokit::normals::encode_texels(encoding, normals);
+            upload_texture_2d(
+                device,
+                queue,
+                "normals",
+                SIZE,
+                encoding.texture_format(),
+                &bytes,
+            )
+            .unwrap()
+        };
+        let mut bad = good.clone();
+        for (i, n) in bad.iter_mut().enumerate().filter(|(i, _)| spoiled(*i)) {
+            *n = unusable[i % unusable.len()];
+        }
+        let (with_good, _) = ao_and_normals(&gpu, &settings, &depth, Some(&upload(&good)));
+        let (with_bad, decoded) = ao_and_normals(&gpu, &settings, &depth, Some(&upload(&bad)));
+        let mut changed_by_the_tilt = 0;
+        for i in 0..good.len() {
+            let at = format!(
+                "{encoding:?}, x {}, y {}",
+                i as u32 % SIZE[0],
+                i as u32 / SIZE[0]
+            );
+            assert!(with_bad[i].is_finite(), "AO {} at {at}", with_bad[i]);
+            if spoiled(i) {
+                // The same normal as the reconstruction's, so the same AO.
+                assert_eq!(decoded[i], depth_normals[i], "normal at {at}");
+                assert!(
+                    (with_bad[i] - from_depth[i]).abs() < 1e-4,
+                    "AO {} at {at}, {} with normals from depth",
+                    with_bad[i],
+                    from_depth[i]
+                );
+                changed_by_the_tilt += usize::from((with_good[i] - from_depth[i]).abs() > 0.02);
+            } else {
+                assert_eq!(with_bad[i], with_good[i], "AO at {at}");
+            }
+        }
+        // Else the fallback could not be told from the renderer's normals.
+        let spoiled_count = (0..good.len()).filter(|&i| spoiled(i)).count();
+        assert!(
+            changed_by_the_tilt > spoiled_count / 2,
+            "{encoding:?}: the tilt changed the AO at only {changed_by_the_tilt} of the \
+             {spoiled_count} spoiled pixels"
+        );
+    }
+}

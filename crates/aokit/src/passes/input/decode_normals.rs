@@ -1,23 +1,24 @@
 //! Normal textures in any encoding but oct32, or in world space, decoded to the oct32
 //! view-space texture the kernels read, so that the kernels stay one program per method
-//! whatever the G-buffer holds.
+//! whatever the G-buffer holds. A texel that holds no usable normal (zero, NaN, infinite, far
+//! from unit length) gets the normal reconstructed from depth there instead.
 
 use std::collections::HashMap;
 
 use glam::Mat3;
 
 use crate::gpu::create_uniform_buffer;
-use crate::passes::input::normals_from_depth::NORMALS_FORMAT;
+use crate::passes::input::normals_from_depth::{BEST_RECONSTRUCTION, NORMALS_FORMAT};
 use crate::passes::{ComputeKernel, PassContext, bind};
 use crate::settings::NormalEncoding;
 use crate::shader;
 use crate::uniforms::DecodeUniforms;
 
 /// The program that decodes `encoding` and its bindings: view uniforms, the encoded texture,
-/// the oct32 normals written, the decode's settings.
+/// the oct32 normals written, the decode's settings, the linear depth the fallback reads.
 pub(crate) fn program(
     encoding: NormalEncoding,
-) -> (shader::ShaderSource, [wgpu::BindGroupLayoutEntry; 4]) {
+) -> (shader::ShaderSource, [wgpu::BindGroupLayoutEntry; 5]) {
     let (source, sample_type) = if encoding.is_uint() {
         (shader::DECODE_NORMALS_UINT, wgpu::TextureSampleType::Uint)
     } else {
@@ -31,6 +32,7 @@ pub(crate) fn program(
         bind::texture(1, sample_type),
         bind::storage_texture(2, NORMALS_FORMAT),
         bind::uniform(3),
+        bind::texture(4, wgpu::TextureSampleType::Float { filterable: false }),
     ];
     (source, layout)
 }
@@ -53,7 +55,9 @@ impl DecodeNormalsPass {
 
     /// Records the decode of `input`, a texture of `encoding.texture_format()` whose vectors
     /// `to_view` turns into view space, into `output`, an oct32 storage texture
-    /// ([`NORMALS_FORMAT`]) of `ctx.size`.
+    /// ([`NORMALS_FORMAT`]) of `ctx.size`; texels without a usable normal take
+    /// [`BEST_RECONSTRUCTION`]'s from `linear_depth` (`R32Float`, 0 where there is no surface).
+    #[allow(clippy::too_many_arguments)]
     pub fn encode(
         &mut self,
         ctx: &mut PassContext<'_>,
@@ -61,6 +65,7 @@ impl DecodeNormalsPass {
         encoding: NormalEncoding,
         to_view: Mat3,
         input: &wgpu::TextureView,
+        linear_depth: &wgpu::TextureView,
         output: &wgpu::TextureView,
     ) {
         queue.write_buffer(
@@ -74,7 +79,10 @@ impl DecodeNormalsPass {
                 ctx.device,
                 &source,
                 &layout,
-                &[("ENCODING", f64::from(encoding.shader_code()))],
+                &[
+                    ("ENCODING", f64::from(encoding.shader_code())),
+                    ("SOURCE", f64::from(BEST_RECONSTRUCTION as u32)),
+                ],
             )
         });
         ctx.dispatch(
@@ -83,6 +91,7 @@ impl DecodeNormalsPass {
                 wgpu::BindingResource::TextureView(input),
                 wgpu::BindingResource::TextureView(output),
                 self.uniforms.as_entire_binding(),
+                wgpu::BindingResource::TextureView(linear_depth),
             ],
         );
     }
