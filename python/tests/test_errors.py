@@ -60,7 +60,7 @@ def test_settings_errors_read_as_the_clis(cli, gbuffer, tmp_path, ctx):
         with pytest.raises(ValueError) as error:
             ctx.ao(gbuffer.depth, camera=gbuffer.camera, settings={key: value})
         out = cli(
-            "ao", "--depth", str(gbuffer.depth_path), "--camera", str(gbuffer.camera_path),
+            "ao", "--depth", str(gbuffer.depth_path), "--camera-json", str(gbuffer.camera_path),
             "--set", f"{key}={value}", "--out", str(tmp_path / "o"), cwd=tmp_path, check=False,
         )
         assert out.returncode != 0

@@ -9,7 +9,7 @@ use aokit_eval::{read_depth, read_normals};
 use aokit_scene::CameraFile;
 pub use aokit_scene::external::DepthKind;
 use aokit_scene::external::{linear_depth, view_normals};
-use glam::Vec3;
+use glam::{Mat4, Vec3};
 
 /// `--depth-kind`: the names [`DepthKind`] takes, listed in `--help`.
 pub fn depth_kind_parser() -> impl clap::builder::TypedValueParser<Value = DepthKind> {
@@ -19,9 +19,12 @@ pub fn depth_kind_parser() -> impl clap::builder::TypedValueParser<Value = Depth
 }
 
 /// Passes ready for the AO pipeline.
+#[derive(Clone)]
 pub struct LoadedPasses {
     pub size: [u32; 2],
     pub projection: Projection,
+    /// The camera's world-to-view transform.
+    pub view_from_world: Mat4,
     /// Linear view depth; non-positive or non-finite where there is no surface.
     pub linear_depth: Vec<f32>,
     /// View-space normals, when a normal file was given.
@@ -121,6 +124,7 @@ pub fn load(
     Ok(LoadedPasses {
         size,
         projection,
+        view_from_world,
         linear_depth,
         normals,
         back_depth,

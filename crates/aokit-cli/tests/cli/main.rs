@@ -11,6 +11,7 @@ mod composite;
 mod ground_truth;
 mod peer;
 mod robustness;
+mod roundtrip;
 mod settings;
 mod tune;
 mod view;
