@@ -29,6 +29,7 @@ mod render;
 mod sequence;
 mod settings_args;
 mod settings_list;
+mod suspicious;
 mod tune;
 mod view;
 

@@ -13,5 +13,6 @@ mod peer;
 mod robustness;
 mod roundtrip;
 mod settings;
+mod suspicious;
 mod tune;
 mod view;
