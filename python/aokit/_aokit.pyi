@@ -42,7 +42,7 @@ class Camera:
     @staticmethod
     def from_json(source: Union[str, "os.PathLike[str]", Dict[str, Any]]) -> "Camera":
         """The camera of a camera.json file (a path) or of its parsed contents (a dict), as
-        `aokit ao --camera` reads it. Raises OSError for an unreadable file and ValueError for
+        `aokit ao --camera-json` reads it. Raises OSError for an unreadable file and ValueError for
         contents that are not a valid camera.json."""
     def to_dict(self) -> Dict[str, Any]:
         """The camera.json contents, for `json.dump`."""

@@ -74,6 +74,9 @@ class GBuffer:
 def gbuffer(cli, tmp_path_factory) -> GBuffer:
     root = tmp_path_factory.mktemp("gbuffer")
     cli("render", "--scene", "stairs", "--size", "48x32", "--gbuffer", "--out", "g", cwd=root)
+    # The parity tests compare the package's defaults with the CLI's: without the settings the
+    # render recorded (the stairs' radius 0.5), `aokit ao` runs its defaults too.
+    (root / "g" / "ao-settings.json").unlink()
     return GBuffer(root / "g")
 
 
@@ -88,7 +91,7 @@ def cli_ao(cli, gbuffer, tmp_path) -> Callable[..., np.ndarray]:
         elif normals:
             files += ["--normals", str(normals)]
         out = tmp_path / "out"
-        cli("ao", *files, "--camera", str(gbuffer.camera_path), *args, "--out", str(out), cwd=tmp_path)
+        cli("ao", *files, "--camera-json", str(gbuffer.camera_path), *args, "--out", str(out), cwd=tmp_path)
         return aokit.read_depth(out / "ao.exr")
 
     return run

@@ -52,6 +52,11 @@ def test_non_float_arrays_raise_type_error(ctx):
         ctx.ao(DEPTH, camera=CAM, settings={"power": [1]})
 
 
+def as_text(value):
+    """`value` as a `--set` value: Python's text, `true`/`false` for a bool."""
+    return str(value).lower() if isinstance(value, bool) else str(value)
+
+
 def test_settings_errors_read_as_the_clis(cli, gbuffer, tmp_path, ctx):
     # Out-of-range values, rules between settings, and values of the wrong kind: each is read
     # from the text `--set` is given for it.
@@ -63,8 +68,9 @@ def test_settings_errors_read_as_the_clis(cli, gbuffer, tmp_path, ctx):
         with pytest.raises(ValueError) as error:
             ctx.ao(gbuffer.depth, camera=gbuffer.camera, settings={key: value})
         out = cli(
-            "ao", "--depth", str(gbuffer.depth_path), "--camera", str(gbuffer.camera_path),
-            "--set", f"{key}={str(value).lower() if isinstance(value, bool) else value}", "--out", str(tmp_path / "o"), cwd=tmp_path, check=False,
+            "ao", "--depth", str(gbuffer.depth_path), "--camera-json", str(gbuffer.camera_path),
+            "--set", f"{key}={as_text(value)}", "--out", str(tmp_path / "o"),
+            cwd=tmp_path, check=False,
         )
         assert out.returncode != 0
         assert str(error.value) in out.stderr, (str(error.value), out.stderr)

@@ -1,33 +1,49 @@
 //! `aokit ao`: AO for passes exported by another renderer.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use anyhow::Result;
-use aokit::{NormalSource, NormalSpace};
+use anyhow::{Result, bail};
+use aokit::{AoSettings, NormalSource, NormalSpace};
 use aokit_eval::{write_exr, write_grey_png};
-use aokit_scene::external;
+use aokit_scene::external::ExternalAo;
 use clap::Args;
 
 use crate::export::{check_out_dir, create_dir};
-use crate::passes::{self, DepthKind, PassFiles};
+use crate::passes::{self, DepthKind, LoadedPasses, PassFiles};
+use crate::recorded::{self, Recorded};
 use crate::render::{ao_summary, open_gpu};
 use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug)]
+#[command(mut_arg("radius", |arg| arg.help(
+    "AO radius in world units (default: the one recorded in ao-settings.json, else 1)"
+)))]
 pub struct AoArgs {
     /// Depth image: EXR, PFM or NPY (float32; H x W; background 0, +inf or NaN).
-    #[arg(long, value_name = "FILE")]
-    pub depth: PathBuf,
+    #[arg(long, value_name = "FILE", required_unless_present = "sequence")]
+    pub depth: Option<PathBuf>,
     /// Normal image: EXR, PFM or NPY (H x W x 3). Without it normals are reconstructed from depth.
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", conflicts_with = "sequence")]
     pub normals: Option<PathBuf>,
     /// Depth of the nearest back faces (the scene drawn with front faces culled), in the
     /// format and kind of --depth, for `--set vbao.back_faces=true`.
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", conflicts_with = "sequence")]
     pub back_depth: Option<PathBuf>,
-    /// The camera, in the camera.json format `render --gbuffer` writes.
-    #[arg(long, value_name = "camera.json")]
-    pub camera: PathBuf,
+    /// The camera, in the camera.json format `render --gbuffer` writes. An ao-settings.json
+    /// beside it (as `render --gbuffer` writes) gives the settings, under the flags below.
+    #[arg(
+        long,
+        value_name = "camera.json",
+        alias = "camera",
+        required_unless_present = "sequence"
+    )]
+    pub camera_json: Option<PathBuf>,
+    /// A sequence of frames instead of --depth, --normals, --back-depth and --camera-json: a
+    /// directory of depth-NNN.exr and camera-NNN.json, with normal-NNN.exr and
+    /// back_depth-NNN.exr where there are (what `render --frames N --gbuffer` writes into
+    /// frames/). The temporal filter, when on, accumulates over them.
+    #[arg(long, value_name = "DIR", conflicts_with_all = ["depth", "camera_json"])]
+    pub sequence: Option<PathBuf>,
     /// Whether the depth is linear view depth or depth-buffer values.
     #[arg(long, value_parser = passes::depth_kind_parser(), default_value = "linear")]
     pub depth_kind: DepthKind,
@@ -47,40 +63,109 @@ fn parse_normal_space(s: &str) -> Result<NormalSpace, String> {
     s.parse()
 }
 
+/// The files of one frame.
+struct FrameFiles {
+    depth: PathBuf,
+    normals: Option<PathBuf>,
+    back_depth: Option<PathBuf>,
+    camera: PathBuf,
+}
+
+impl FrameFiles {
+    fn pass_files(&self) -> PassFiles<'_> {
+        PassFiles {
+            depth: &self.depth,
+            normals: self.normals.as_deref(),
+            back_depth: self.back_depth.as_deref(),
+            camera: &self.camera,
+        }
+    }
+}
+
 pub fn run(args: &AoArgs) -> Result<()> {
     check_out_dir(&args.out)?;
-    // `--normal-space` is a setting like `--radius`: applied before `--set`, so that a
-    // `--set normals.space=...` (documented as applied last) wins over it, and a settings file's
-    // value stands when neither is given. A default on the flag would override both.
-    let mut settings_args = args.settings.clone();
-    if let Some(space) = args.normal_space {
-        let set = &mut settings_args.overrides.set;
-        set.insert(0, format!("normals.space={}", space.name()));
+    let frames = match &args.sequence {
+        Some(dir) => sequence_files(dir)?,
+        None => vec![FrameFiles {
+            depth: args.depth.clone().expect("clap requires --depth"),
+            normals: args.normals.clone(),
+            back_depth: args.back_depth.clone(),
+            camera: args
+                .camera_json
+                .clone()
+                .expect("clap requires --camera-json"),
+        }],
+    };
+    let recorded = recorded::read_beside(&frames[0].camera)?;
+    let mut settings = resolve_settings(args, recorded.as_ref())?;
+    if args.sequence.is_none() && settings.temporal.enabled {
+        eprintln!(
+            "note: {}",
+            crate::sequence::temporal_single_frame_note("--sequence DIR")
+        );
     }
-    let mut settings = settings_args.resolve(None)?;
     let normal_space = settings.normals.space;
-    let loaded = passes::load(
-        &PassFiles {
-            depth: &args.depth,
-            normals: args.normals.as_deref(),
-            back_depth: args.back_depth.as_deref(),
-            camera: &args.camera,
-        },
-        args.depth_kind,
-        normal_space,
-    )?;
+    let load =
+        |files: &FrameFiles| passes::load(&files.pass_files(), args.depth_kind, normal_space);
+    let first = load(&frames[0])?;
     // The normals were turned into view space as they were read.
     settings.normals.space = NormalSpace::View;
     let gpu = open_gpu()?;
-    let ao = external::ambient_occlusion(&gpu, &settings, &loaded.passes(), 0)?;
+    let mut external = ExternalAo::new(&gpu, &settings, &first.passes())?;
     create_dir(&args.out)?;
+    let mut last = None;
+    for (index, files) in frames.iter().enumerate() {
+        let loaded = match index {
+            0 => first.clone(),
+            _ => load(files)?,
+        };
+        if loaded.size != first.size {
+            bail!(
+                "{} is {}x{} but the sequence's first frame is {}x{}",
+                files.depth.display(),
+                loaded.size[0],
+                loaded.size[1],
+                first.size[0],
+                first.size[1]
+            );
+        }
+        if index > 0 {
+            external.set_passes(&gpu, &loaded.passes())?;
+        }
+        external.set_view_from_world(loaded.view_from_world);
+        let ao = external.run(&gpu, index as u32)?;
+        if args.sequence.is_some() {
+            let dir = args.out.join("frames");
+            create_dir(&dir)?;
+            write_exr(
+                &dir.join(format!("ao-{index:03}.exr")),
+                loaded.size,
+                &[("Y", ao.clone())],
+            )?;
+            write_grey_png(&dir.join(format!("ao-{index:03}.png")), loaded.size, &ao)?;
+        }
+        last = Some((loaded, ao));
+    }
+    let (loaded, ao) = last.expect("at least one frame");
     write_exr(&args.out.join("ao.exr"), loaded.size, &[("Y", ao.clone())])?;
     write_grey_png(&args.out.join("ao.png"), loaded.size, &ao)?;
+    let what = match &args.sequence {
+        Some(dir) => format!(
+            "{} frames of {} ({}x{}",
+            frames.len(),
+            dir.display(),
+            loaded.size[0],
+            loaded.size[1]
+        ),
+        None => format!(
+            "{} ({}x{}",
+            frames[0].depth.display(),
+            loaded.size[0],
+            loaded.size[1]
+        ),
+    };
     outln!(
-        "AO of {} ({}x{}, normals {}) with {} (radius {}): wrote ao.exr, ao.png to {}",
-        args.depth.display(),
-        loaded.size[0],
-        loaded.size[1],
+        "AO of {what}, normals {}) with {} (radius {}{}): wrote {}ao.exr, ao.png to {}",
         match (settings.normals.source, loaded.normals.is_some()) {
             (NormalSource::Buffer, true) => format!(
                 "from file, uploaded as {}",
@@ -91,13 +176,105 @@ pub fn run(args: &AoArgs) -> Result<()> {
         },
         settings.method.name(),
         settings.radius,
+        match &recorded {
+            Some(recorded) => format!(", settings recorded in {}", recorded.path.display()),
+            None => String::new(),
+        },
+        if args.sequence.is_some() {
+            "frames/ao-NNN.exr and .png, the last frame as "
+        } else {
+            ""
+        },
         args.out.display()
     );
-    let depth_for_summary: Vec<f32> = loaded
+    outln!("{}", summary(&loaded, &ao));
+    Ok(())
+}
+
+/// The settings flags over the recorded settings when there are some.
+fn resolve_settings(args: &AoArgs, recorded: Option<&Recorded>) -> Result<AoSettings> {
+    // `--normal-space` is a setting like `--radius`: applied before `--set`, so that a
+    // `--set normals.space=...` (documented as applied last) wins over it, and a settings file's
+    // value stands when neither is given. A default on the flag would override both.
+    let mut settings_args = args.settings.clone();
+    if let Some(space) = args.normal_space {
+        let set = &mut settings_args.overrides.set;
+        set.insert(0, format!("normals.space={}", space.name()));
+    }
+    match recorded {
+        Some(recorded) => settings_args.resolve_recorded(recorded),
+        None => settings_args.resolve(None),
+    }
+}
+
+/// [`ao_summary`] over the pixels the depth shows a surface at.
+fn summary(loaded: &LoadedPasses, ao: &[f32]) -> String {
+    let depth: Vec<f32> = loaded
         .linear_depth
         .iter()
         .map(|&d| if d > 0.0 && d.is_finite() { d } else { 0.0 })
         .collect();
-    outln!("{}", ao_summary(&ao, &depth_for_summary));
-    Ok(())
+    ao_summary(ao, &depth)
+}
+
+/// The frames of `dir`, in the order of their numbers: each camera-NNN.json with its
+/// depth-NNN.exr, and normal-NNN.exr and back_depth-NNN.exr where every frame has one.
+fn sequence_files(dir: &Path) -> Result<Vec<FrameFiles>> {
+    let entries =
+        std::fs::read_dir(dir).map_err(|e| anyhow::anyhow!("--sequence {}: {e}", dir.display()))?;
+    let mut numbers = Vec::new();
+    for entry in entries {
+        let name = entry?.file_name();
+        let name = name.to_string_lossy();
+        if let Some(number) = name
+            .strip_prefix("camera-")
+            .and_then(|rest| rest.strip_suffix(".json"))
+        {
+            numbers.push(number.to_string());
+        }
+    }
+    if numbers.is_empty() {
+        bail!(
+            "--sequence {}: no camera-NNN.json in it (`render --frames N --gbuffer` writes a \
+             sequence into its frames/)",
+            dir.display()
+        );
+    }
+    numbers.sort_by_key(|n| (n.len(), n.clone()));
+    // A pass every frame has, else none; some frames with one is a broken sequence.
+    let optional = |prefix: &str| -> Result<Option<Vec<PathBuf>>> {
+        let paths: Vec<PathBuf> = numbers
+            .iter()
+            .map(|n| dir.join(format!("{prefix}-{n}.exr")))
+            .collect();
+        match paths.iter().filter(|p| p.is_file()).count() {
+            0 => Ok(None),
+            count if count == paths.len() => Ok(Some(paths)),
+            count => bail!(
+                "--sequence {}: {count} of the {} frames have a {prefix}-NNN.exr; give one for \
+                 every frame or none",
+                dir.display(),
+                paths.len()
+            ),
+        }
+    };
+    let normals = optional("normal")?;
+    let back_depth = optional("back_depth")?;
+    let mut frames = Vec::with_capacity(numbers.len());
+    for (i, n) in numbers.iter().enumerate() {
+        let depth = dir.join(format!("depth-{n}.exr"));
+        if !depth.is_file() {
+            bail!(
+                "--sequence {}: camera-{n}.json has no depth-{n}.exr beside it",
+                dir.display()
+            );
+        }
+        frames.push(FrameFiles {
+            depth,
+            normals: normals.as_ref().map(|paths| paths[i].clone()),
+            back_depth: back_depth.as_ref().map(|paths| paths[i].clone()),
+            camera: dir.join(format!("camera-{n}.json")),
+        });
+    }
+    Ok(frames)
 }

@@ -130,6 +130,7 @@ pub fn reference(
     let projection = camera.projection(size[0] as f32 / size[1] as f32, &scene.bounds);
     write_gbuffer(
         &dir,
+        "",
         size,
         &image.linear_depth,
         &image.normals,

@@ -10,42 +10,48 @@ use aokit_eval::write_exr;
 use aokit_scene::CameraFile;
 use glam::{Mat4, Vec3};
 
-/// Writes the three files into `out` and returns their names.
+/// Writes the three files into `out` and returns their names: depth.exr, normal.exr and
+/// camera.json, each name with `suffix` before its extension (`-007` for a sequence's frame).
 pub fn write_gbuffer(
     out: &Path,
+    suffix: &str,
     size: [u32; 2],
     linear_depth: &[f32],
     normals: &[Vec3],
     projection: &Projection,
     view_from_world: Mat4,
-) -> Result<[&'static str; 3]> {
-    write_exr(
-        &out.join("depth.exr"),
-        size,
-        &[("Z", linear_depth.to_vec())],
-    )?;
+) -> Result<[String; 3]> {
+    let names = [
+        format!("depth{suffix}.exr"),
+        format!("normal{suffix}.exr"),
+        format!("camera{suffix}.json"),
+    ];
+    write_exr(&out.join(&names[0]), size, &[("Z", linear_depth.to_vec())])?;
     let channel = |i: usize| normals.iter().map(|n| n[i]).collect::<Vec<f32>>();
     write_exr(
-        &out.join("normal.exr"),
+        &out.join(&names[1]),
         size,
         &[("R", channel(0)), ("G", channel(1)), ("B", channel(2))],
     )?;
     write_json(
-        &out.join("camera.json"),
+        &out.join(&names[2]),
         &CameraFile::new(projection, view_from_world, size),
     )?;
-    Ok(["depth.exr", "normal.exr", "camera.json"])
+    Ok(names)
 }
 
 /// Writes the back faces' linear depth into `out` as back_depth.exr (one channel `Z`, as
-/// depth.exr), which `aokit ao --back-depth` reads; returns its name.
-pub fn write_back_depth(out: &Path, size: [u32; 2], back_depth: &[f32]) -> Result<&'static str> {
-    write_exr(
-        &out.join("back_depth.exr"),
-        size,
-        &[("Z", back_depth.to_vec())],
-    )?;
-    Ok("back_depth.exr")
+/// depth.exr; `suffix` as for [`write_gbuffer`]), which `aokit ao --back-depth` reads; returns
+/// its name.
+pub fn write_back_depth(
+    out: &Path,
+    suffix: &str,
+    size: [u32; 2],
+    back_depth: &[f32],
+) -> Result<String> {
+    let name = format!("back_depth{suffix}.exr");
+    write_exr(&out.join(&name), size, &[("Z", back_depth.to_vec())])?;
+    Ok(name)
 }
 
 /// Pretty JSON with a trailing newline.

@@ -23,11 +23,13 @@ mod compare;
 mod export;
 mod passes;
 mod peer;
+mod recorded;
 mod reference;
 mod render;
 mod sequence;
 mod settings_args;
 mod settings_list;
+mod suspicious;
 mod tune;
 mod view;
 
@@ -72,13 +74,50 @@ enum Command {
 }
 
 /// Flags renamed so that one name means one thing in every subcommand: (subcommand, old
-/// spelling, new one). The old spellings still parse (clap aliases) and draw a warning.
-const RENAMED_FLAGS: &[(&str, &str, &str)] = &[
-    ("compare", "--methods", "--method"),
-    ("compare", "--presets", "--preset"),
-    ("tune", "--methods", "--method"),
-    ("tune", "--presets", "--preset"),
-    ("bench", "--frames", "--timing-frames"),
+/// spelling, new one, why). The old spellings still parse (clap aliases) and draw a warning.
+const RENAMED_FLAGS: &[(&str, &str, &str, &str)] = &[
+    (
+        "compare",
+        "--methods",
+        "--method",
+        "as in the other subcommands",
+    ),
+    (
+        "compare",
+        "--presets",
+        "--preset",
+        "as in the other subcommands",
+    ),
+    (
+        "tune",
+        "--methods",
+        "--method",
+        "as in the other subcommands",
+    ),
+    (
+        "tune",
+        "--presets",
+        "--preset",
+        "as in the other subcommands",
+    ),
+    (
+        "bench",
+        "--frames",
+        "--timing-frames",
+        "as in the other subcommands",
+    ),
+    (
+        "ao",
+        "--camera",
+        "--camera-json",
+        "since --camera names one of a scene's cameras in the other subcommands",
+    ),
+    (
+        "reference",
+        "--falloff",
+        "--falloff-curve",
+        "since `falloff` is also the methods' numeric setting",
+    ),
 ];
 
 /// Warns about each renamed flag `args` (the command line, program name first) spells the old
@@ -87,7 +126,7 @@ fn warn_renamed_flags(args: &[String]) {
     let Some(subcommand) = args.get(1) else {
         return;
     };
-    for (command, old, new) in RENAMED_FLAGS {
+    for (command, old, new, why) in RENAMED_FLAGS {
         let used = args[2..].iter().any(|a| {
             a == old
                 || a.strip_prefix(old)
@@ -95,8 +134,8 @@ fn warn_renamed_flags(args: &[String]) {
         });
         if subcommand == command && used {
             eprintln!(
-                "warning: `aokit {command} {old}` is now `{new}`, as in the other subcommands; \
-                 the old name still works for now"
+                "warning: `aokit {command} {old}` is now `{new}`, {why}; the old name still \
+                 works for now"
             );
         }
     }

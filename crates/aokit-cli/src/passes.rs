@@ -9,7 +9,9 @@ use aokit_eval::{read_depth, read_normals};
 use aokit_scene::CameraFile;
 pub use aokit_scene::external::DepthKind;
 use aokit_scene::external::{linear_depth, view_normals};
-use glam::Vec3;
+use glam::{Mat4, Vec3};
+
+use crate::suspicious;
 
 /// `--depth-kind`: the names [`DepthKind`] takes, listed in `--help`.
 pub fn depth_kind_parser() -> impl clap::builder::TypedValueParser<Value = DepthKind> {
@@ -19,9 +21,12 @@ pub fn depth_kind_parser() -> impl clap::builder::TypedValueParser<Value = Depth
 }
 
 /// Passes ready for the AO pipeline.
+#[derive(Clone)]
 pub struct LoadedPasses {
     pub size: [u32; 2],
     pub projection: Projection,
+    /// The camera's world-to-view transform.
+    pub view_from_world: Mat4,
     /// Linear view depth; non-positive or non-finite where there is no surface.
     pub linear_depth: Vec<f32>,
     /// View-space normals, when a normal file was given.
@@ -54,6 +59,13 @@ pub struct PassFiles<'a> {
     pub normals: Option<&'a Path>,
     pub back_depth: Option<&'a Path>,
     pub camera: &'a Path,
+}
+
+/// Prints a warning about the inputs, when there is one.
+fn warn(warning: Option<String>) {
+    if let Some(warning) = warning {
+        eprintln!("warning: {warning}");
+    }
 }
 
 pub fn load(
@@ -91,6 +103,12 @@ pub fn load(
                 size[1]
             );
         }
+        // A colour image's values look like anything: say the likelier mistake only.
+        let colour = suspicious::depth_is_a_colour_image(path, &depth.data);
+        let ndc = (colour.is_none() && depth_kind == DepthKind::Linear)
+            .then(|| suspicious::linear_depth_looks_like_ndc(path, &depth.data, &projection))
+            .flatten();
+        warn(colour.or(ndc));
         linear_depth(depth.data, depth_kind, &projection, size[0])
             .map_err(|e| anyhow!("{}: {e}", path.display()))
     };
@@ -114,13 +132,23 @@ pub fn load(
                 .chunks_exact(3)
                 .map(|n| Vec3::new(n[0], n[1], n[2]))
                 .collect();
-            view_normals(normals, normal_space, view_from_world)
-                .map_err(|e| anyhow!("{}: {e}", camera_path.display()))
+            let normals = view_normals(normals, normal_space, view_from_world)
+                .map_err(|e| anyhow!("{}: {e}", camera_path.display()))?;
+            warn(suspicious::normals_face_away(
+                path,
+                &normals,
+                &linear_depth,
+                &projection,
+                size,
+                normal_space,
+            ));
+            Ok(normals)
         })
         .transpose()?;
     Ok(LoadedPasses {
         size,
         projection,
+        view_from_world,
         linear_depth,
         normals,
         back_depth,

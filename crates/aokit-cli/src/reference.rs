@@ -34,8 +34,9 @@ pub struct ReferenceArgs {
     #[arg(long, default_value_t = 0, allow_negative_numbers = true)]
     pub seed: u64,
     /// How a hit at distance t counts: none (1), linear (1 - t/R), quadratic (1 - (t/R)^2).
-    #[arg(long, default_value = "none")]
-    pub falloff: Falloff,
+    /// (Formerly `--falloff`, which the methods' numeric `falloff` setting is also called.)
+    #[arg(long, value_name = "CURVE", default_value = "none", alias = "falloff")]
+    pub falloff_curve: Falloff,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-out")]
     pub out: PathBuf,
@@ -147,7 +148,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         radius: args.radius.or(scene.suggested_radius).unwrap_or(1.0),
         spp: args.spp,
         seed: args.seed,
-        falloff: args.falloff,
+        falloff: args.falloff_curve,
     };
     let started = std::time::Instant::now();
     let tracer = scene_tracer(&scene)?;
@@ -169,13 +170,14 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
     let projection = camera.projection(image.size[0] as f32 / image.size[1] as f32, &scene.bounds);
     let gbuffer = write_gbuffer(
         out,
+        "",
         image.size,
         &image.linear_depth,
         &image.normals,
         &projection,
         camera.view_from_world(),
     )?;
-    let back = write_back_depth(out, image.size, &back_depth)?;
+    let back = write_back_depth(out, "", image.size, &back_depth)?;
     write_json(&out.join("reference.json"), &ReferenceInfo::new(&options))?;
     let rays = f64::from(image.size[0]) * f64::from(image.size[1]) * f64::from(options.spp);
     outln!(

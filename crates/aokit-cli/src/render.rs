@@ -1,12 +1,12 @@
 //! `aokit render`.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Result, bail};
 use aokit::debug::DebugView;
 use aokit::{AdapterKind, GpuContext};
 use aokit_scene::composite::{MultiBounce, SpecularOcclusion};
-use aokit_scene::{CameraPath, Renderer, Scene};
+use aokit_scene::{CameraPath, Frame, Renderer, Scene};
 use clap::Args;
 
 use aokit_eval::{grey_to_rgba, write_exr, write_gif, write_grey_png, write_rgba_png};
@@ -30,8 +30,10 @@ pub struct RenderArgs {
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-out")]
     pub out: PathBuf,
-    /// Also write depth.exr, normal.exr and camera.json, and back_depth.exr when the settings
-    /// measure back faces (`--set vbao.back_faces=true`).
+    /// Also write depth.exr, normal.exr, camera.json and ao-settings.json (the settings this
+    /// ran, which `aokit ao` reads back), and back_depth.exr when the settings measure back
+    /// faces (`--set vbao.back_faces=true`); with --frames N, each frame's as
+    /// frames/depth-NNN.exr and so on, for `aokit ao --sequence`.
     #[arg(long)]
     pub gbuffer: bool,
     /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
@@ -242,6 +244,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                     rejected,
                 )?;
             }
+            if args.gbuffer {
+                write_frame_gbuffer(&frames, &format!("-{i:03}"), &frame)?;
+            }
             previews.0.push(grey_to_rgba(&frame.ao));
             previews.1.push(frame.lit.clone());
         }
@@ -268,19 +273,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         written.extend(["frames/", "ao.gif", "lit.gif"].map(String::from));
     }
     if args.gbuffer {
-        written.extend(
-            write_gbuffer(
-                out,
-                frame.size,
-                &frame.linear_depth,
-                &frame.normals,
-                &frame.projection,
-                frame.view_from_world,
-            )?
-            .map(String::from),
-        );
-        if let Some(back_depth) = &frame.back_depth {
-            written.push(write_back_depth(out, frame.size, back_depth)?.into());
+        written.extend(write_frame_gbuffer(out, "", &frame)?);
+        let preset = args.settings.preset()?;
+        written.push(crate::recorded::write(out, preset, &settings)?.into());
+        if args.frames > 1 {
+            crate::recorded::write(&out.join("frames"), preset, &settings)?;
+            written.push("frames/ depth, normals and cameras".into());
         }
     }
     outln!(
@@ -296,6 +294,24 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     );
     outln!("{}", ao_summary(&frame.ao, &frame.linear_depth));
     Ok(())
+}
+
+/// Writes `frame`'s G-buffer into `dir` (see [`write_gbuffer`]); returns the files' names.
+fn write_frame_gbuffer(dir: &Path, suffix: &str, frame: &Frame) -> Result<Vec<String>> {
+    let mut written: Vec<String> = write_gbuffer(
+        dir,
+        suffix,
+        frame.size,
+        &frame.linear_depth,
+        &frame.normals,
+        &frame.projection,
+        frame.view_from_world,
+    )?
+    .into();
+    if let Some(back_depth) = &frame.back_depth {
+        written.push(write_back_depth(dir, suffix, frame.size, back_depth)?);
+    }
+    Ok(written)
 }
 
 /// Mean and minimum AO over the pixels that show a surface.

@@ -22,13 +22,17 @@ pub fn single_frame_notes(frames: u32, path: CameraPath, temporal: bool) -> Vec<
         ));
     }
     if temporal {
-        notes.push(
-            "the temporal filter accumulates over a sequence (--frames N); one frame is its \
-             own history and comes out as the kernel made it"
-                .to_string(),
-        );
+        notes.push(temporal_single_frame_note("--frames N"));
     }
     notes
+}
+
+/// The temporal filter on a single frame, where `sequence` is the flag that gives a sequence.
+pub fn temporal_single_frame_note(sequence: &str) -> String {
+    format!(
+        "the temporal filter accumulates over a sequence ({sequence}); one frame is its own \
+         history and comes out as the kernel made it"
+    )
 }
 
 /// Relative depth difference above which a pixel's surface was not what the previous frame

@@ -7,6 +7,8 @@ use aokit::{AoSettings, Method, Preset, settings};
 use clap::Args;
 use serde::Deserialize;
 
+use crate::recorded::Recorded;
+
 #[derive(Args, Debug, Clone)]
 pub struct SettingsArgs {
     /// AO method.
@@ -41,6 +43,44 @@ impl SettingsArgs {
         let preset: Preset = parse_or_default(self.preset.as_deref())?;
         self.overrides
             .apply_to_preset(method, preset, suggested_radius, self.radius)
+    }
+
+    /// The preset `--preset` names, else the default one.
+    pub fn preset(&self) -> Result<Preset> {
+        parse_or_default(self.preset.as_deref())
+    }
+
+    /// [`SettingsArgs::resolve`] over settings recorded with the passes (`aokit ao`): without
+    /// `--method` and `--preset` the recorded settings are the base, as they ran; with either,
+    /// that method at that preset (the other one as recorded), the recorded radius standing in
+    /// for the scene's. Then the file, `--radius` and each `--set`, as always.
+    pub fn resolve_recorded(&self, recorded: &Recorded) -> Result<AoSettings> {
+        let in_file = || format!("in {}", recorded.path.display());
+        // Laid over the defaults to learn the method, then over the method's recorded preset,
+        // which fills any setting the file lacks (one written by another version).
+        let over = |base: &AoSettings| -> Result<AoSettings> {
+            let mut table = to_table(base)?;
+            merge(&mut table, recorded.settings.clone(), "")?;
+            let settings =
+                AoSettings::deserialize(toml::Value::Table(table)).map_err(invalid_setting)?;
+            settings.validate()?;
+            Ok(settings)
+        };
+        let method = over(&AoSettings::default()).with_context(in_file)?.method;
+        let base = over(&AoSettings::preset(method, recorded.preset)).with_context(in_file)?;
+        if self.method.is_none() && self.preset.is_none() {
+            return self.overrides.apply(&base, self.radius);
+        }
+        let method = match &self.method {
+            Some(name) => name.parse().map_err(|e: String| anyhow!(e))?,
+            None => base.method,
+        };
+        let preset = match &self.preset {
+            Some(name) => name.parse().map_err(|e: String| anyhow!(e))?,
+            None => recorded.preset,
+        };
+        self.overrides
+            .apply_to_preset(method, preset, Some(base.radius), self.radius)
     }
 }
 

@@ -153,12 +153,12 @@ def main():
     run(cmd)
     aodir = os.path.join(work, "ao")
     run([aokit, "ao", "--depth", os.path.join(export, "depth.exr"), "--normals", os.path.join(export, "normal.exr"),
-         "--camera", os.path.join(export, "camera.json"), "--radius", repr(radius), "--out", aodir])
+         "--camera-json", os.path.join(export, "camera.json"), "--radius", repr(radius), "--out", aodir])
 
     # The baseline: `aokit ao` on the reference's own G-buffer (the larger frame), cropped alike.
     basedir = os.path.join(work, "ao-on-reference-passes")
     run([aokit, "ao", "--depth", os.path.join(ref, "depth.exr"), "--normals", os.path.join(ref, "normal.exr"),
-         "--camera", os.path.join(ref, "camera.json"), "--radius", repr(radius), "--out", basedir])
+         "--camera-json", os.path.join(ref, "camera.json"), "--radius", repr(radius), "--out", basedir])
 
     def crop(img):
         return [img[(y + cy) * wb + x + cx] for y in range(h) for x in range(w)]

@@ -11,6 +11,8 @@ mod composite;
 mod ground_truth;
 mod peer;
 mod robustness;
+mod roundtrip;
 mod settings;
+mod suspicious;
 mod tune;
 mod view;

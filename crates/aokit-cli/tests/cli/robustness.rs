@@ -134,7 +134,7 @@ fn unusable_normals_and_a_zero_view_from_world_are_refused() {
             "g/depth.exr",
             "--normals",
             "zero.exr",
-            "--camera",
+            "--camera-json",
             "g/camera.json",
             "--method",
             "sao",
@@ -157,7 +157,7 @@ fn unusable_normals_and_a_zero_view_from_world_are_refused() {
             "g/depth.exr",
             "--normals",
             "g/normal.exr",
-            "--camera",
+            "--camera-json",
             "zero-view.json",
             "--normal-space",
             "world",
@@ -181,7 +181,7 @@ fn ndc_depth_outside_zero_to_one_is_refused_with_the_count() {
             "ao",
             "--depth",
             "g/depth.exr",
-            "--camera",
+            "--camera-json",
             "g/camera.json",
             "--depth-kind",
             "ndc",
@@ -226,7 +226,7 @@ fn set_normals_space_world_is_applied_over_the_normal_space_flag() {
             "g/depth.exr",
             "--normals",
             normals,
-            "--camera",
+            "--camera-json",
             "g/camera.json",
             "--preset",
             "low",
@@ -432,7 +432,13 @@ fn unclear_messages_now_name_the_problem() {
     std::fs::write(d.join("three.json"), camera.to_string()).unwrap();
     let err = refused(
         d,
-        &["ao", "--depth", "g/depth.exr", "--camera", "three.json"],
+        &[
+            "ao",
+            "--depth",
+            "g/depth.exr",
+            "--camera-json",
+            "three.json",
+        ],
     );
     assert!(
         err.contains("three.json") && err.contains("ndc_offset must have 2 entries (x, y), got 3"),

@@ -9,7 +9,7 @@ use aokit::normals::encode_texels;
 use aokit::{
     AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, NormalEncoding, PassTime, Projection,
 };
-use glam::Vec3;
+use glam::{Mat4, Vec3};
 
 use crate::renderer::RenderError;
 
@@ -71,6 +71,8 @@ pub struct ExternalAo {
     source_normals: Option<Vec<Vec3>>,
     normals: Option<wgpu::Texture>,
     projection: Projection,
+    /// The camera's world-to-view transform, for the temporal filter's reprojection.
+    view_from_world: Mat4,
     pipeline: AoPipeline,
     /// Start the temporal history over at the next run.
     reset_history: bool,
@@ -103,6 +105,7 @@ impl ExternalAo {
             source_normals: uploaded.source_normals,
             normals: None,
             projection: passes.projection,
+            view_from_world: Mat4::IDENTITY,
             pipeline: AoPipeline::new(&gpu.device, &gpu.queue, settings)?,
             reset_history: false,
         };
@@ -134,6 +137,31 @@ impl ExternalAo {
         self.projection = passes.projection;
         self.upload_normals(gpu, self.pipeline.settings().normals.encoding)?;
         Ok(())
+    }
+
+    /// Sets where the camera of the passes stands: its world-to-view transform
+    /// ([`AoInputs::view_from_world`]; the identity until set). The temporal filter reprojects
+    /// each run's history through the change from the last run's camera, so a sequence from a
+    /// moving camera sets each frame's before running it; a still camera needs none.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext,
+    /// #      frames: &[(aokit_scene::external::Passes<'_>, glam::Mat4)])
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::AoSettings;
+    /// use aokit_scene::external::ExternalAo;
+    /// let mut settings = AoSettings::default();
+    /// settings.temporal.enabled = true;
+    /// let mut external = ExternalAo::new(gpu, &settings, &frames[0].0)?;
+    /// for (index, (passes, view_from_world)) in frames.iter().enumerate() {
+    ///     external.set_passes(gpu, passes)?;
+    ///     external.set_view_from_world(*view_from_world);
+    ///     let ao = external.run(gpu, index as u32)?;
+    /// }
+    /// # Ok(()) }
+    /// ```
+    pub fn set_view_from_world(&mut self, view_from_world: Mat4) {
+        self.view_from_world = view_from_world;
     }
 
     /// Starts the temporal history over at the next run, as for the first frame of another
@@ -304,6 +332,7 @@ impl ExternalAo {
             &mut encoder,
             &AoInputs {
                 normals: self.normals.as_ref(),
+                view_from_world: self.view_from_world,
                 frame_index,
                 reset_history: std::mem::take(&mut self.reset_history),
                 back_depth: self.back_depth.as_ref(),
