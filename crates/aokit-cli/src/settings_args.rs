@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
+use aokit::settings::SettingValue;
 use aokit::{AoSettings, Method, Preset, settings};
 use clap::Args;
 use serde::Deserialize;
@@ -231,19 +232,17 @@ fn merge(base: &mut toml::Table, patch: toml::Table, prefix: &str) -> Result<()>
     Ok(())
 }
 
-/// Applies one `KEY=VALUE`. VALUE is read as TOML (number, boolean, quoted string); anything
-/// else is taken as a bare string, so `--set method=gtao` works without quotes.
+/// Applies one `KEY=VALUE`. VALUE is read by the setting's declaration
+/// ([`SettingSpec::parse`](settings::SettingSpec::parse), as the viewer's fields and Python's
+/// `settings` read it, with the same errors); a TOML string's quotes are dropped first, so
+/// `--set noise.kind=blue` and `--set 'noise.kind="blue"'` are one.
 fn set_path(table: &mut toml::Table, assignment: &str) -> Result<()> {
     let (path, raw) = assignment
         .split_once('=')
         .ok_or_else(|| anyhow!("--set `{assignment}` is not KEY=VALUE"))?;
     let path = path.trim();
     let raw = raw.trim();
-    let value = toml::from_str::<toml::Table>(&format!("v = {raw}"))
-        .ok()
-        .and_then(|mut t| t.remove("v"))
-        .unwrap_or_else(|| toml::Value::String(raw.to_string()));
-    if settings::find_setting(path).is_none() {
+    let Some(spec) = settings::find_setting(path) else {
         if is_group(path) {
             let fields: Vec<&str> = settings::SETTINGS
                 .iter()
@@ -256,7 +255,20 @@ fn set_path(table: &mut toml::Table, assignment: &str) -> Result<()> {
             );
         }
         return Err(unknown_setting(path));
-    }
+    };
+    let text = match toml::from_str::<toml::Table>(&format!("v = {raw}")) {
+        Ok(mut table) => match table.remove("v") {
+            Some(toml::Value::String(text)) => text,
+            _ => raw.to_string(),
+        },
+        Err(_) => raw.to_string(),
+    };
+    let value = match spec.parse(&text)? {
+        SettingValue::Bool(flag) => toml::Value::Boolean(flag),
+        SettingValue::Integer(integer) => toml::Value::Integer(integer.into()),
+        SettingValue::Float(number) => toml::Value::Float(number.into()),
+        SettingValue::Choice(name) => toml::Value::String(name.to_string()),
+    };
     let mut keys = path.split('.').peekable();
     let mut current = table;
     while let Some(key) = keys.next() {
@@ -383,7 +395,7 @@ mod tests {
             .resolve(None)
             .unwrap_err()
             .to_string();
-        assert!(err.contains("(takes integer 1..=64)"), "{err}");
+        assert!(err.contains("an integer in 1..=64"), "{err}");
         let dir = tempfile::tempdir().unwrap();
         let file = dir.path().join("s.toml");
         std::fs::write(&file, "[gtoa]\nslice_count = 7\n").unwrap();

@@ -277,7 +277,7 @@ impl SettingKind {
             SettingKind::Bool => "true or false".into(),
             SettingKind::Integer(range) => range.expected(),
             SettingKind::Float(range) => range.expected(),
-            SettingKind::Choice(names) => format!("one of {}", names.join(", ")),
+            SettingKind::Choice(_) => format!("one of {}", self.range_text()),
         }
     }
 }
@@ -481,28 +481,22 @@ impl SettingSpec {
     /// ```
     pub fn parse(&self, text: &str) -> Result<SettingValue, SetError> {
         let text = text.trim();
-        let invalid = |what: &str| SetError::Invalid {
+        let invalid = || SetError::Invalid {
             key: self.name,
-            reason: format!("expected {what}, not `{text}`"),
+            reason: format!("expected {}, not `{text}`", self.kind.expected()),
         };
         match self.kind {
-            SettingKind::Bool => text
-                .parse()
-                .map(SettingValue::Bool)
-                .map_err(|_| invalid("true or false")),
+            SettingKind::Bool => text.parse().map(SettingValue::Bool).map_err(|_| invalid()),
             SettingKind::Integer(_) => text
                 .parse()
                 .map(SettingValue::Integer)
-                .map_err(|_| invalid("an integer")),
-            SettingKind::Float(_) => text
-                .parse()
-                .map(SettingValue::Float)
-                .map_err(|_| invalid("a number")),
+                .map_err(|_| invalid()),
+            SettingKind::Float(_) => text.parse().map(SettingValue::Float).map_err(|_| invalid()),
             SettingKind::Choice(names) => names
                 .iter()
                 .find(|&&name| name == text)
                 .map(|&name| SettingValue::Choice(name))
-                .ok_or_else(|| invalid(&format!("one of {}", names.join(", ")))),
+                .ok_or_else(invalid),
         }
     }
 
