@@ -7,7 +7,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::{Context, Result, anyhow};
-use aokit::{AdapterKind, AoSettings, Preset};
+use aokit::{AdapterKind, AoPipeline};
 use aokit_scene::{Camera, Renderer, Scene};
 use glam::Vec3;
 use winit::application::ApplicationHandler;
@@ -19,7 +19,7 @@ use winit::window::{Window, WindowId};
 use super::camera::{CameraMode, ViewCamera};
 use super::frame::{self, DisplayMode, Timings};
 use super::gpu::WindowGpu;
-use super::ui::{self, Action, ViewState};
+use super::ui::{self, Action, Config, Split, ViewState};
 
 /// What the viewer starts with, from the flags.
 pub struct Start {
@@ -27,10 +27,11 @@ pub struct Start {
     pub scene: Scene,
     /// The camera the flags picked.
     pub camera: Camera,
-    /// The settings the flags give.
-    pub settings: AoSettings,
-    /// The preset the flags name (the panel's "copy as flags" compares with it).
-    pub preset: Preset,
+    /// The settings the flags give, and the preset they name (the panel's "copy as flags"
+    /// compares with it).
+    pub config: Config,
+    /// The A/B split `--split` opens with.
+    pub split: Option<Split>,
     /// What to show.
     pub mode: DisplayMode,
     /// Window size in pixels.
@@ -146,7 +147,10 @@ struct Running {
     renderer: Renderer,
     egui_state: egui_winit::State,
     egui_renderer: egui_wgpu::Renderer,
-    texture: Option<egui::TextureHandle>,
+    /// The images the central area draws: A's, and B's in the split.
+    textures: [Option<egui::TextureHandle>; 2],
+    /// B's AO pipeline, made when the split first shows.
+    b_pipeline: Option<AoPipeline>,
     view: ViewState,
     input: Input,
     last: Instant,
@@ -167,12 +171,19 @@ struct Running {
 /// renderer's composite pass (docs/viewer.md).
 pub const SETTLE_FRAMES: u32 = 32;
 
-/// Everything the rendered image depends on, as text: camera, settings, mode, scale and size.
+/// Everything the rendered images depend on, as text: camera, settings (B's too in the split),
+/// mode, scale and size.
 fn scene_key(view: &ViewState) -> String {
     let camera = &view.camera;
     format!(
-        "{:?} {:?} {:?} {:?} {} {:?}",
-        camera.eye, camera.forward, view.settings, view.mode, view.scale, view.area
+        "{:?} {:?} {:?} {:?} {:?} {} {:?}",
+        camera.eye,
+        camera.forward,
+        view.a.settings,
+        view.split.as_ref().map(|split| split.b.settings),
+        view.mode,
+        view.scale,
+        view.area
     )
 }
 
@@ -208,7 +219,7 @@ impl Running {
         if let Some(note) = &software_note {
             eprintln!("note: {note}");
         }
-        let mut renderer = Renderer::new(gpu, &start.scene, &start.settings)?;
+        let mut renderer = Renderer::new(gpu, &start.scene, &start.config.settings)?;
         let timestamps = renderer.enable_timing(gpu);
         let egui_ctx = egui::Context::default();
         let egui_state = egui_winit::State::new(
@@ -228,9 +239,8 @@ impl Running {
             bookmarks: start.scene.cameras.clone(),
             scene_name: start.scene.name.clone(),
             suggested_radius: start.scene.suggested_radius,
-            method: start.settings.method,
-            preset: start.preset,
-            settings: start.settings,
+            a: start.config,
+            split: start.split,
             mode: start.mode,
             scale,
             panel: start.panel,
@@ -251,7 +261,8 @@ impl Running {
             renderer,
             egui_state,
             egui_renderer,
-            texture: None,
+            textures: [None, None],
+            b_pipeline: None,
             view,
             input: Input::default(),
             last: Instant::now(),
@@ -309,6 +320,15 @@ impl Running {
             KeyCode::KeyF => self.view.camera.mode = CameraMode::Fly,
             KeyCode::KeyO => self.view.camera.mode = CameraMode::Orbit,
             KeyCode::KeyR => self.act(Action::Reset),
+            KeyCode::KeyB => {
+                self.view.split = match self.view.split {
+                    Some(_) => None,
+                    None => Some(Split {
+                        b: self.view.a.clone(),
+                        divider: 0.5,
+                    }),
+                }
+            }
             _ => {}
         }
         true
@@ -359,11 +379,9 @@ impl Running {
             self.last_key = Some(key);
             self.repeats = 0;
         }
-        let settle = if self.view.settings.temporal.enabled {
-            SETTLE_FRAMES
-        } else {
-            1
-        };
+        let temporal = self.view.a.settings.temporal.enabled
+            || (self.view.split.as_ref()).is_some_and(|split| split.b.settings.temporal.enabled);
+        let settle = if temporal { SETTLE_FRAMES } else { 1 };
         self.view.idle = !self.view.continuous && self.repeats >= settle;
         if !self.view.idle {
             self.render_scene();
@@ -374,7 +392,8 @@ impl Running {
         let ctx = self.egui_state.egui_ctx().clone();
         let mut actions = Vec::new();
         let mut output = ctx.run_ui(raw_input, |ui| {
-            actions = ui::draw(ui, &mut self.view, self.texture.as_ref());
+            let [a, b] = &self.textures;
+            actions = ui::draw(ui, &mut self.view, [a.as_ref(), b.as_ref()]);
         });
         for action in actions {
             self.act(action);
@@ -467,26 +486,40 @@ impl Running {
         Ok(!last_frame)
     }
 
-    /// Applies changed settings, renders one frame of the scene at the view's size and scale,
-    /// and puts the image the display mode shows into the texture the central area draws.
+    /// Applies changed settings, renders one frame of the scene at the view's size and scale
+    /// (A and, in the split, B on the same G-buffer), and puts the images the display mode shows
+    /// into the textures the central area draws.
     fn render_scene(&mut self) {
         let gpu = &self.wgpu.gpu;
-        if self.view.settings != *self.renderer.settings()
-            && let Err(e) = self.renderer.set_settings(gpu, &self.view.settings)
+        if self.view.a.settings != *self.renderer.settings()
+            && let Err(e) = self.renderer.set_settings(gpu, &self.view.a.settings)
         {
             self.view.error = Some(format!("settings refused: {e}"));
-            self.view.settings = *self.renderer.settings();
+            self.view.a.settings = *self.renderer.settings();
         }
         let size = frame::internal_size(self.view.area, self.view.scale);
         self.view.render_size = size;
         self.renderer.debug_views = self.view.mode.debug_view().into_iter().collect();
+        let camera = self.view.camera.camera();
         let started = Instant::now();
-        let result =
-            self.renderer
-                .render_at(gpu, &self.view.camera.camera(), size, self.frame_index, 0.0);
+        let result = match &mut self.view.split {
+            None => self
+                .renderer
+                .render_at(gpu, &camera, size, self.frame_index, 0.0)
+                .map(|frame| (frame, None))
+                .map_err(|e| e.to_string()),
+            Some(split) => match b_pipeline(&mut self.b_pipeline, gpu, &mut split.b) {
+                Ok(pipeline) => self
+                    .renderer
+                    .render_pair_at(gpu, &camera, size, self.frame_index, 0.0, pipeline)
+                    .map(|(a, b)| (a, Some(b)))
+                    .map_err(|e| e.to_string()),
+                Err(e) => Err(e),
+            },
+        };
         self.frame_index += 1;
-        let frame = match result {
-            Ok(frame) => frame,
+        let (frame, b_frame) = match result {
+            Ok(frames) => frames,
             Err(e) => {
                 self.view.error = Some(format!("{} view: {e}", self.view.mode.name()));
                 return;
@@ -498,24 +531,51 @@ impl Running {
             None
         };
         self.view.timings.add(started.elapsed(), passes.as_deref());
-        let Some(rgba) = frame::image_of(&frame, self.view.mode) else {
-            self.view.error = Some(format!("no {} image this frame", self.view.mode.name()));
-            return;
-        };
         self.view.error = None;
-        let image = egui::ColorImage::from_rgba_unmultiplied(
-            [frame.size[0] as usize, frame.size[1] as usize],
-            &rgba,
-        );
-        match &mut self.texture {
-            Some(texture) => texture.set(image, egui::TextureOptions::LINEAR),
-            None => {
-                self.texture = Some(self.egui_state.egui_ctx().load_texture(
-                    "aokit scene",
-                    image,
-                    egui::TextureOptions::LINEAR,
-                ))
+        let names = ["aokit scene", "aokit scene B"];
+        for (i, frame) in [Some(&frame), b_frame.as_ref()].into_iter().enumerate() {
+            let Some(frame) = frame else { continue };
+            let Some(rgba) = frame::image_of(frame, self.view.mode) else {
+                self.view.error = Some(format!("no {} image this frame", self.view.mode.name()));
+                return;
+            };
+            let image = egui::ColorImage::from_rgba_unmultiplied(
+                [frame.size[0] as usize, frame.size[1] as usize],
+                &rgba,
+            );
+            match &mut self.textures[i] {
+                Some(texture) => texture.set(image, egui::TextureOptions::LINEAR),
+                None => {
+                    self.textures[i] = Some(self.egui_state.egui_ctx().load_texture(
+                        names[i],
+                        image,
+                        egui::TextureOptions::LINEAR,
+                    ))
+                }
             }
         }
     }
+}
+
+/// B's pipeline, made on first use and given B's settings when they changed; a refused change
+/// puts B's settings back to the ones it runs.
+fn b_pipeline<'a>(
+    pipeline: &'a mut Option<AoPipeline>,
+    gpu: &aokit::GpuContext,
+    b: &mut Config,
+) -> Result<&'a mut AoPipeline, String> {
+    let pipeline = match pipeline {
+        Some(pipeline) => pipeline,
+        None => pipeline.insert(
+            AoPipeline::new(&gpu.device, &gpu.queue, &b.settings)
+                .map_err(|e| format!("B's settings refused: {e}"))?,
+        ),
+    };
+    if b.settings != *pipeline.settings()
+        && let Err(e) = pipeline.set_settings(&gpu.device, &gpu.queue, &b.settings)
+    {
+        b.settings = *pipeline.settings();
+        return Err(format!("B's settings refused: {e}"));
+    }
+    Ok(pipeline)
 }

@@ -18,15 +18,16 @@ mod ui;
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use aokit_scene::Scene;
 use clap::Args;
 
 use crate::camera_args::CameraArgs;
 use crate::render::parse_size;
-use crate::settings_args::SettingsArgs;
+use crate::settings_args::{OverrideArgs, SettingsArgs};
 
 use frame::DisplayMode;
+use ui::{Config, Split};
 
 /// The flags of `aokit view`.
 #[derive(Args, Debug)]
@@ -58,10 +59,44 @@ pub struct ViewArgs {
     /// After the last frame, write the window's content to this PNG file and exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
+    #[command(flatten)]
+    pub split: SplitArgs,
     /// Print the settings panel's widgets (group, key, widget and bounds, one setting a line)
     /// for the settings the flags give, and exit without opening a window.
     #[arg(long)]
     pub panel_layout: bool,
+}
+
+/// The A/B split's flags: B's settings start from A's method and preset unless these say.
+#[derive(Args, Debug)]
+pub struct SplitArgs {
+    /// Open in the A/B split: the flags' settings on the left (A), B's on the right, on the
+    /// same G-buffer.
+    #[arg(long)]
+    pub split: bool,
+    /// B's AO method (default: A's).
+    #[arg(long, requires = "split", value_parser = clap::builder::PossibleValuesParser::new(aokit::Method::ALL.map(aokit::Method::name)))]
+    pub b_method: Option<String>,
+    /// B's quality preset (default: A's).
+    #[arg(long, requires = "split", value_parser = clap::builder::PossibleValuesParser::new(aokit::Preset::ALL.map(aokit::Preset::name)))]
+    pub b_preset: Option<String>,
+    /// Set one of B's settings by its dotted path, as `--set` does for A; applied last.
+    #[arg(long = "b-set", value_name = "KEY=VALUE", requires = "split")]
+    pub b_set: Vec<String>,
+    /// Where the halves meet, as a fraction of the view's width from the left.
+    #[arg(long, value_name = "F", default_value = "0.5", requires = "split", value_parser = parse_divider)]
+    pub divider: f32,
+}
+
+fn parse_divider(s: &str) -> Result<f32, String> {
+    let divider: f32 = s
+        .trim()
+        .parse()
+        .map_err(|e| format!("`{s}` is not a number: {e}"))?;
+    if !(0.0..=1.0).contains(&divider) {
+        return Err(format!("`{s}` is outside [0, 1]"));
+    }
+    Ok(divider)
 }
 
 fn parse_mode(s: &str) -> Result<DisplayMode, String> {
@@ -102,6 +137,18 @@ pub fn run(args: &ViewArgs) -> Result<()> {
     }
     let camera = args.camera.resolve(&scene)?;
     let settings = args.settings.resolve(scene.suggested_radius)?;
+    let preset = parse_preset(args.settings.preset.as_deref())?;
+    let config = Config {
+        method: settings.method,
+        preset,
+        settings,
+    };
+    let split = args
+        .split
+        .split
+        .then(|| split_start(&args.split, &args.settings, &config, scene.suggested_radius))
+        .transpose()
+        .context("B's settings (--b-method, --b-preset, --b-set)")?;
     if args.panel_layout {
         out!("{}", panel::layout(&settings));
         return Ok(());
@@ -112,18 +159,57 @@ pub fn run(args: &ViewArgs) -> Result<()> {
     app::run(app::Start {
         scene,
         camera,
-        settings,
-        preset: args
-            .settings
-            .preset
-            .as_deref()
-            .map_or(Ok(aokit::Preset::default()), str::parse)
-            .map_err(anyhow::Error::msg)?,
+        config,
+        split,
         mode: args.mode,
         window_size: args.window_size,
         scale: args.scale,
         panel: !args.no_panel,
         frames,
         screenshot: args.screenshot.clone(),
+    })
+}
+
+fn parse_preset(name: Option<&str>) -> Result<aokit::Preset> {
+    name.map_or(Ok(aokit::Preset::default()), str::parse)
+        .map_err(anyhow::Error::msg)
+}
+
+/// B's configuration from the split's flags: its method and preset (A's unless given) with the
+/// scene's radius, then `--radius` as A has it, then each `--b-set`.
+fn split_start(
+    split: &SplitArgs,
+    settings: &SettingsArgs,
+    a: &Config,
+    suggested_radius: Option<f32>,
+) -> Result<Split> {
+    let method = match &split.b_method {
+        Some(name) => name.parse().map_err(anyhow::Error::msg)?,
+        None => a.method,
+    };
+    let preset = match &split.b_preset {
+        Some(name) => parse_preset(Some(name))?,
+        None => a.preset,
+    };
+    let overrides = OverrideArgs {
+        settings: None,
+        set: split.b_set.clone(),
+    };
+    let b = overrides.apply_to_preset(method, preset, suggested_radius, settings.radius)?;
+    if b.normals.encoding != a.settings.normals.encoding {
+        bail!(
+            "normals.encoding `{}` differs from A's `{}`: both halves run on one G-buffer, whose \
+             normals are in A's encoding",
+            b.normals.encoding.name(),
+            a.settings.normals.encoding.name()
+        );
+    }
+    Ok(Split {
+        b: Config {
+            method: b.method,
+            preset,
+            settings: b,
+        },
+        divider: split.divider,
     })
 }

@@ -140,6 +140,26 @@ fn bad_flags_are_refused_before_any_window_opens() {
     assert!(err.contains("unknown display mode"), "{err}");
     let err = failure(&crate::common::aokit(dir.path(), &["view", "--scale", "7"]));
     assert!(err.contains("outside"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--b-method", "hbao"],
+    ));
+    assert!(err.contains("--split"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--split", "--divider", "1.5"],
+    ));
+    assert!(err.contains("outside"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--split", "--b-set", "gtao.slice_count=0"],
+    ));
+    assert!(err.contains("B's settings"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--split", "--b-set", "normals.encoding=rgba16f"],
+    ));
+    assert!(err.contains("differs from A's `oct32`"), "{err}");
     // Without a display, the error says how to get one.
     let out = output(
         command(dir.path(), &["view", "--frames", "1"])
@@ -300,4 +320,84 @@ fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
     // A drag to the right turns right: the target moves to +X, the eye stays.
     assert_eq!(poses[2][..3], poses[1][..3], "{printed}");
     assert!(poses[2][3] > 0.5, "{printed}");
+}
+
+/// The mean absolute difference of the RGB channels of `a` and `b` over the box with corners
+/// (`x0`, `y0`) and (`x1`, `y1`), as fractions of the images' size.
+fn mean_difference(a: &image::RgbaImage, b: &image::RgbaImage, [x0, y0, x1, y1]: [f32; 4]) -> f32 {
+    let (w, h) = a.dimensions();
+    assert_eq!(b.dimensions(), (w, h));
+    let (mut sum, mut count) = (0.0, 0.0);
+    for y in (y0 * h as f32) as u32..(y1 * h as f32) as u32 {
+        for x in (x0 * w as f32) as u32..(x1 * w as f32) as u32 {
+            let (p, q) = (a.get_pixel(x, y), b.get_pixel(x, y));
+            for c in 0..3 {
+                sum += (f32::from(p[c]) - f32::from(q[c])).abs();
+                count += 1.0;
+            }
+        }
+    }
+    sum / count
+}
+
+/// `--split`: GTAO left of a divider at 30% of the view, HBAO right of it. Each half is that
+/// method's image as the viewer shows it alone, the two methods differ there, and the divider's
+/// line is where asked.
+#[test]
+fn the_split_shows_a_left_of_the_divider_and_b_right_of_it() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let view = [
+        "view",
+        "--mode",
+        "ao",
+        "--no-panel",
+        "--window-size",
+        "320x180",
+    ];
+    let shoot = |file: &str, args: &[&str]| {
+        let mut all = view.to_vec();
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--screenshot", file]);
+        ok(&aokit_in_xvfb(dir.path(), &all));
+        image::open(dir.path().join(file)).unwrap().to_rgba8()
+    };
+    let split = shoot(
+        "split.png",
+        &[
+            "--method",
+            "gtao",
+            "--split",
+            "--b-method",
+            "hbao",
+            "--divider",
+            "0.3",
+        ],
+    );
+    let gtao = shoot("gtao.png", &["--method", "gtao"]);
+    let hbao = shoot("hbao.png", &["--method", "hbao"]);
+    // Below the labels, above the software-adapter note.
+    let (left, right) = ([0.02, 0.25, 0.27, 0.8], [0.35, 0.25, 0.98, 0.8]);
+    assert!(mean_difference(&split, &gtao, left) < 1.0);
+    assert!(mean_difference(&split, &hbao, right) < 1.0);
+    let methods_left = mean_difference(&gtao, &hbao, left);
+    let methods_right = mean_difference(&gtao, &hbao, right);
+    assert!(
+        methods_left > 1.0 && methods_right > 1.0,
+        "{methods_left} {methods_right}"
+    );
+    // The divider's yellow line, across the middle row.
+    let row = split.height() / 2;
+    let line: Vec<u32> = (0..split.width())
+        .filter(|&x| {
+            let p = split.get_pixel(x, row);
+            p[0] > 200 && p[1] > 150 && p[2] < 80
+        })
+        .collect();
+    assert!(!line.is_empty(), "no divider line");
+    for x in line {
+        assert!((94..=97).contains(&x), "divider at x = {x}, not 96");
+    }
 }
