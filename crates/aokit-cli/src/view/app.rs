@@ -19,7 +19,8 @@ use winit::window::{Window, WindowId};
 use super::camera::{CameraMode, ViewCamera};
 use super::frame::{self, DisplayMode, Timings};
 use super::gpu::WindowGpu;
-use super::ui::{self, Action, Config, Split, ViewState};
+use super::truth::{self, Truth};
+use super::ui::{self, Action, Config, Split, TruthView, ViewState};
 
 /// What the viewer starts with, from the flags.
 pub struct Start {
@@ -32,6 +33,10 @@ pub struct Start {
     pub config: Config,
     /// The A/B split `--split` opens with.
     pub split: Option<Split>,
+    /// Trace the reference of the starting view (and, with a screenshot, wait for it).
+    pub reference: bool,
+    /// Rays per pixel of the reference; `None`: [`truth::default_spp`].
+    pub reference_spp: Option<u32>,
     /// What to show.
     pub mode: DisplayMode,
     /// Window size in pixels.
@@ -152,6 +157,16 @@ struct Running {
     /// B's AO pipeline, made when the split first shows.
     b_pipeline: Option<AoPipeline>,
     view: ViewState,
+    /// The scene, for the reference's tracer.
+    scene: Arc<Scene>,
+    /// The reference of the view, traced or being traced.
+    truth: Option<Truth>,
+    /// Rays per pixel of the reference.
+    reference_spp: u32,
+    /// Trace the reference once the layout has measured the view (`--reference`).
+    trace_at_start: bool,
+    /// Count `--frames` only once the reference is traced (`--reference --screenshot`).
+    wait_for_reference: bool,
     input: Input,
     last: Instant,
     frame_index: u32,
@@ -172,18 +187,19 @@ struct Running {
 pub const SETTLE_FRAMES: u32 = 32;
 
 /// Everything the rendered images depend on, as text: camera, settings (B's too in the split),
-/// mode, scale and size.
+/// mode, scale, size, and whether the reference is there.
 fn scene_key(view: &ViewState) -> String {
     let camera = &view.camera;
     format!(
-        "{:?} {:?} {:?} {:?} {:?} {} {:?}",
+        "{:?} {:?} {:?} {:?} {:?} {} {:?} {}",
         camera.eye,
         camera.forward,
         view.a.settings,
         view.split.as_ref().map(|split| split.b.settings),
         view.mode,
         view.scale,
-        view.area
+        view.area,
+        view.truth.ready
     )
 }
 
@@ -252,6 +268,7 @@ impl Running {
             continuous: false,
             idle: false,
             render_size: [0, 0],
+            truth: TruthView::default(),
             message: None,
             error: None,
         };
@@ -264,6 +281,11 @@ impl Running {
             textures: [None, None],
             b_pipeline: None,
             view,
+            scene: Arc::new(start.scene),
+            truth: None,
+            reference_spp: start.reference_spp.unwrap_or(truth::default_spp(software)),
+            trace_at_start: start.reference,
+            wait_for_reference: start.reference && start.screenshot.is_some(),
             input: Input::default(),
             last: Instant::now(),
             frame_index: 0,
@@ -320,6 +342,7 @@ impl Running {
             KeyCode::KeyF => self.view.camera.mode = CameraMode::Fly,
             KeyCode::KeyO => self.view.camera.mode = CameraMode::Orbit,
             KeyCode::KeyR => self.act(Action::Reset),
+            KeyCode::KeyT => self.act(Action::TraceReference),
             KeyCode::KeyB => {
                 self.view.split = match self.view.split {
                     Some(_) => None,
@@ -360,7 +383,58 @@ impl Running {
                 self.view.camera.jump_to(&camera);
                 self.renderer.reset_history();
             }
+            Action::TraceReference => {
+                let size = frame::internal_size(self.view.area, self.view.scale);
+                let truth = Truth::start(
+                    self.scene.clone(),
+                    self.view.camera.camera(),
+                    size,
+                    self.reference_spp,
+                    self.view.a.settings.radius,
+                );
+                self.view.truth = TruthView {
+                    note: Some(format!(
+                        "{}x{}, {} rays per pixel, radius {}",
+                        size[0], size[1], truth.options.spp, truth.options.radius
+                    )),
+                    ..TruthView::default()
+                };
+                self.truth = Some(truth);
+            }
         }
+    }
+
+    /// Follows the reference's trace: takes its result, drops it when the camera or the size
+    /// rendered changed, and starts the one `--reference` asks for once the layout has measured
+    /// the view. A failed trace is an error with `--reference --screenshot`, and a note in the
+    /// panel otherwise.
+    fn update_truth(&mut self) -> Result<()> {
+        if std::mem::take(&mut self.trace_at_start) {
+            self.act(Action::TraceReference);
+        }
+        let Some(truth) = &mut self.truth else {
+            return Ok(());
+        };
+        truth.poll();
+        let size = frame::internal_size(self.view.area, self.view.scale);
+        if !truth.is_of(&self.view.camera.camera(), size) {
+            self.truth = None;
+            self.view.truth = TruthView::default();
+            self.view.message = Some("reference dropped: the view changed".into());
+            return Ok(());
+        }
+        if let Some(error) = truth.error() {
+            if self.wait_for_reference {
+                return Err(error);
+            }
+            self.view.error = Some(format!("{error:#}"));
+            self.truth = None;
+            self.view.truth = TruthView::default();
+            return Ok(());
+        }
+        self.view.truth.progress = truth.progress();
+        self.view.truth.ready = truth.image().is_some();
+        Ok(())
     }
 
     /// Renders the scene at the view's size, then draws the panel over it and presents.
@@ -371,6 +445,10 @@ impl Running {
         let direction = self.input.direction();
         if direction != Vec3::ZERO {
             self.view.camera.fly(direction, seconds, self.input.fast());
+        }
+        // After the first frame: its layout measured the view the reference is traced for.
+        if self.drawn > 0 || !self.trace_at_start {
+            self.update_truth()?;
         }
         let key = scene_key(&self.view);
         if self.last_key.as_ref() == Some(&key) {
@@ -386,7 +464,10 @@ impl Running {
         if !self.view.idle {
             self.render_scene();
         }
-        self.drawn += 1;
+        let waiting = self.wait_for_reference && !self.view.truth.ready;
+        if !waiting || self.drawn == 0 {
+            self.drawn += 1;
+        }
 
         let raw_input = self.egui_state.take_egui_input(&self.window);
         let ctx = self.egui_state.egui_ctx().clone();
@@ -482,6 +563,22 @@ impl Running {
                 self.view.render_size[0],
                 self.view.render_size[1]
             );
+            if let Some(truth) = &self.truth {
+                let mut labels = vec![("A", self.view.a.label(self.view.suggested_radius))];
+                if let Some(split) = &self.view.split {
+                    labels.push(("B", split.b.label(self.view.suggested_radius)));
+                }
+                for ((side, label), rmse) in labels.into_iter().zip(self.view.truth.rmse) {
+                    if let Some(rmse) = rmse {
+                        outln!(
+                            "rmse {side} {rmse:.6} ({label}, {}x{}, {} rays per pixel)",
+                            truth.size[0],
+                            truth.size[1],
+                            truth.options.spp
+                        );
+                    }
+                }
+            }
         }
         Ok(!last_frame)
     }
@@ -533,10 +630,22 @@ impl Running {
         self.view.timings.add(started.elapsed(), passes.as_deref());
         self.view.error = None;
         let names = ["aokit scene", "aokit scene B"];
+        let reference = self.truth.as_ref().and_then(Truth::image);
         for (i, frame) in [Some(&frame), b_frame.as_ref()].into_iter().enumerate() {
+            self.view.truth.rmse[i] = frame
+                .zip(reference)
+                .filter(|(frame, reference)| frame.size == reference.size)
+                .map(|(frame, reference)| crate::compare::surface_error(reference, &frame.ao).rmse);
             let Some(frame) = frame else { continue };
-            let Some(rgba) = frame::image_of(frame, self.view.mode) else {
-                self.view.error = Some(format!("no {} image this frame", self.view.mode.name()));
+            let Some(rgba) = frame::image_of(frame, self.view.mode, reference) else {
+                self.view.error = Some(if self.view.mode.needs_reference() {
+                    format!(
+                        "no reference of this view yet for the {} mode: trace it (T)",
+                        self.view.mode.name()
+                    )
+                } else {
+                    format!("no {} image this frame", self.view.mode.name())
+                });
                 return;
             };
             let image = egui::ColorImage::from_rgba_unmultiplied(

@@ -7,6 +7,7 @@
 //! - [`frame`]: display modes, internal render size, timings.
 //! - [`gpu`]: the window's device and surface, reading back a screenshot.
 //! - [`app`]: the event loop: input, one frame, the screenshot mode.
+//! - [`truth`]: the CPU reference of the view, traced in the background.
 //! - [`ui`]: the layout of the panel and the central view.
 
 mod app;
@@ -14,6 +15,7 @@ pub mod camera;
 pub mod frame;
 mod gpu;
 pub mod panel;
+mod truth;
 mod ui;
 
 use std::path::PathBuf;
@@ -39,8 +41,8 @@ pub struct ViewArgs {
     pub camera: CameraArgs,
     #[command(flatten)]
     pub settings: SettingsArgs,
-    /// What to show: lit, ao, or a debug view (depth, working-depth, normals, edges,
-    /// bent-normals, raw-ao, rejected).
+    /// What to show: lit, ao, reference, error (the last two once the reference is traced), or
+    /// a debug view (depth, working-depth, normals, edges, bent-normals, raw-ao, rejected).
     #[arg(long, default_value = "lit", value_parser = parse_mode)]
     pub mode: DisplayMode,
     /// Window size in pixels.
@@ -61,6 +63,13 @@ pub struct ViewArgs {
     pub screenshot: Option<PathBuf>,
     #[command(flatten)]
     pub split: SplitArgs,
+    /// Trace the CPU reference of the starting view as soon as the window shows; with
+    /// --screenshot, the frames are counted once it is traced, and the RMSE is printed.
+    #[arg(long)]
+    pub reference: bool,
+    /// Rays per pixel of the reference (default: 128, or 32 on a software adapter).
+    #[arg(long, value_name = "N", value_parser = crate::reference::parse_spp)]
+    pub reference_spp: Option<u32>,
     /// Print the settings panel's widgets (group, key, widget and bounds, one setting a line)
     /// for the settings the flags give, and exit without opening a window.
     #[arg(long)]
@@ -161,6 +170,8 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         camera,
         config,
         split,
+        reference: args.reference,
+        reference_spp: args.reference_spp,
         mode: args.mode,
         window_size: args.window_size,
         scale: args.scale,

@@ -47,6 +47,8 @@ pub struct ViewState {
     /// Whether the last frame showed the image before it rather than rendering the unchanged
     /// view again.
     pub idle: bool,
+    /// The reference of the view, as the panel shows it.
+    pub truth: TruthView,
     /// A passing message ("copied").
     pub message: Option<String>,
     /// What went wrong with the last frame or change.
@@ -78,6 +80,19 @@ impl Config {
     }
 }
 
+/// What the panel shows of the reference.
+#[derive(Default)]
+pub struct TruthView {
+    /// The fraction traced, while the trace runs.
+    pub progress: Option<f32>,
+    /// Whether a reference of the view is ready.
+    pub ready: bool,
+    /// What was traced: size, rays per pixel, radius.
+    pub note: Option<String>,
+    /// The RMSE of A's AO (and B's, in the split) against the reference, over its surfaces.
+    pub rmse: [Option<f64>; 2],
+}
+
 /// Two configurations side by side over the same G-buffer.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Split {
@@ -101,6 +116,8 @@ pub enum Action {
     Bookmark(usize),
     /// Jump back to the starting camera.
     Reset,
+    /// Trace the reference of the view.
+    TraceReference,
 }
 
 /// Draws the window: the side panel (when shown) and the scene in the rest. Returns what the
@@ -334,6 +351,7 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
     }
 
     timings(ui, view);
+    truth_ui(ui, view, actions);
 
     ui.separator();
     let radius = view.suggested_radius;
@@ -443,6 +461,46 @@ fn config_ui(
             Some(name) => format!("{name}: {refused}"),
             None => refused,
         });
+    }
+}
+
+/// The reference: the button that traces it, the trace's progress, and the RMSE of each
+/// configuration against it.
+fn truth_ui(ui: &mut egui::Ui, view: &ViewState, actions: &mut Vec<Action>) {
+    ui.separator();
+    ui.strong("Against the reference");
+    let truth = &view.truth;
+    if ui
+        .button("trace reference (T)")
+        .on_hover_text(
+            "ray-trace the view on the CPU; the modes `reference` and `error` show it, and it \
+             stays until the camera moves",
+        )
+        .clicked()
+    {
+        actions.push(Action::TraceReference);
+    }
+    if let Some(progress) = truth.progress {
+        ui.add(
+            egui::ProgressBar::new(progress)
+                .show_percentage()
+                .text("tracing"),
+        );
+    }
+    if let Some(note) = &truth.note {
+        ui.label(note);
+    }
+    let labels = match &view.split {
+        None => vec![String::new()],
+        Some(split) => vec![
+            format!(" A ({})", view.a.label(view.suggested_radius)),
+            format!(" B ({})", split.b.label(view.suggested_radius)),
+        ],
+    };
+    for (label, rmse) in labels.iter().zip(truth.rmse) {
+        if let Some(rmse) = rmse {
+            ui.monospace(format!("RMSE{label}: {rmse:.5}"));
+        }
     }
 }
 

@@ -401,3 +401,75 @@ fn the_split_shows_a_left_of_the_divider_and_b_right_of_it() {
         assert!((94..=97).contains(&x), "divider at x = {x}, not 96");
     }
 }
+
+/// `--reference` in the split, in the `error` mode: the viewer traces the view's reference
+/// (small, few rays), waits for it, and its error image and printed RMSE for each half are what
+/// `aokit compare` draws and computes for the same view, methods and rays per pixel.
+#[test]
+fn the_reference_error_and_rmse_match_aokit_compare() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    #[rustfmt::skip]
+    let out = aokit_in_xvfb(dir.path(), &[
+        "view", "--scene", "room", "--mode", "error", "--no-panel", "--window-size", "320x180",
+        "--scale", "0.5", "--method", "gtao", "--split", "--b-method", "hbao", "--reference",
+        "--reference-spp", "16", "--screenshot", "error.png",
+    ]);
+    let stdout = ok(&out);
+    let rmse = |side: &str| -> f64 {
+        let line = stdout
+            .lines()
+            .find(|line| line.starts_with(&format!("rmse {side} ")))
+            .unwrap_or_else(|| panic!("no RMSE of {side}: {stdout}"));
+        assert!(line.ends_with("160x90, 16 rays per pixel)"), "{line}");
+        line.split(' ').nth(2).unwrap().parse().unwrap()
+    };
+    #[rustfmt::skip]
+    ok(&crate::common::aokit(dir.path(), &[
+        "compare", "--scene", "room", "--size", "160x90", "--method", "gtao,hbao", "--preset",
+        "high", "--spp", "16", "--timing-frames", "0", "--cache", "cache", "--out", "compare",
+    ]));
+    let metrics: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.path().join("compare/metrics.json")).unwrap(),
+    )
+    .unwrap();
+    let shot = image::open(dir.path().join("error.png"))
+        .unwrap()
+        .to_rgba8();
+    for (i, (side, method)) in [("A", "gtao"), ("B", "hbao")].into_iter().enumerate() {
+        let result = &metrics["results"][i];
+        assert_eq!(result["method"], method);
+        let expected = result["all"]["rmse"].as_f64().unwrap();
+        // The viewer's AO is of a later frame (frame index 5, not 0): close, not equal.
+        let got = rmse(side);
+        assert!((got - expected).abs() < 2e-3, "{side}: {got} vs {expected}");
+        let map = image::open(
+            dir.path()
+                .join(format!("compare/images/room-front-{method}-high-error.png")),
+        )
+        .unwrap()
+        .to_rgba8();
+        // The screenshot shows the 160x90 map stretched to 320x180: its 2x2 means against the
+        // map, in the half that shows this side, below the labels and above the note.
+        let columns = if i == 0 { 4..76 } else { 84..156 };
+        let (mut sum, mut count) = (0.0, 0.0);
+        for y in 14..70 {
+            for x in columns.clone() {
+                for c in 0..3 {
+                    let shown: f32 = [(0, 0), (1, 0), (0, 1), (1, 1)]
+                        .iter()
+                        .map(|(dx, dy)| f32::from(shot.get_pixel(2 * x + dx, 2 * y + dy)[c]))
+                        .sum::<f32>()
+                        / 4.0;
+                    sum += (shown - f32::from(map.get_pixel(x, y)[c])).abs();
+                    count += 1.0;
+                }
+            }
+        }
+        // Bilinear stretching blurs the noisy map: about 9 here; another image gives 50.
+        let difference = sum / count;
+        assert!(difference < 15.0, "{side}: {difference}");
+    }
+}
