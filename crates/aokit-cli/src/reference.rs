@@ -110,7 +110,12 @@ pub fn trace(
 }
 
 pub fn scene_tracer(scene: &Scene) -> Result<Tracer> {
-    aokit_scene::reference::tracer(scene).map_err(|e| anyhow!("{}: {e}", scene.name))
+    scene_tracer_at(scene, 0.0)
+}
+
+/// The tracer of `scene` with its moving parts where they are at `time` of a sequence.
+pub fn scene_tracer_at(scene: &Scene, time: f32) -> Result<Tracer> {
+    aokit_scene::reference::tracer_at(scene, time).map_err(|e| anyhow!("{}: {e}", scene.name))
 }
 
 /// [`trace`] with the scene's tracer built.

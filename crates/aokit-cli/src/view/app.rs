@@ -19,6 +19,7 @@ use winit::window::{Window, WindowId};
 use super::camera::{CameraMode, ViewCamera};
 use super::frame::{self, DisplayMode, Timings};
 use super::gpu::WindowGpu;
+use super::motion::Motion;
 use super::truth::{self, Truth};
 use super::ui::{self, Action, Config, Split, TruthView, ViewState};
 
@@ -33,6 +34,8 @@ pub struct Start {
     pub config: Config,
     /// The A/B split `--split` opens with.
     pub split: Option<Split>,
+    /// The moving parts and the camera path.
+    pub motion: Motion,
     /// Trace the reference of the starting view (and, with a screenshot, wait for it).
     pub reference: bool,
     /// Rays per pixel of the reference; `None`: [`truth::default_spp`].
@@ -191,7 +194,7 @@ pub const SETTLE_FRAMES: u32 = 32;
 fn scene_key(view: &ViewState) -> String {
     let camera = &view.camera;
     format!(
-        "{:?} {:?} {:?} {:?} {:?} {} {:?} {}",
+        "{:?} {:?} {:?} {:?} {:?} {} {:?} {} {:?}",
         camera.eye,
         camera.forward,
         view.a.settings,
@@ -199,7 +202,8 @@ fn scene_key(view: &ViewState) -> String {
         view.mode,
         view.scale,
         view.area,
-        view.truth.ready
+        view.truth.ready,
+        view.motion
     )
 }
 
@@ -269,6 +273,7 @@ impl Running {
             idle: false,
             render_size: [0, 0],
             truth: TruthView::default(),
+            motion: start.motion,
             message: None,
             error: None,
         };
@@ -343,6 +348,9 @@ impl Running {
             KeyCode::KeyO => self.view.camera.mode = CameraMode::Orbit,
             KeyCode::KeyR => self.act(Action::Reset),
             KeyCode::KeyT => self.act(Action::TraceReference),
+            KeyCode::Space => self.view.motion.playing = !self.view.motion.playing,
+            KeyCode::Period => self.act(Action::Step(1)),
+            KeyCode::Comma => self.act(Action::Step(-1)),
             KeyCode::KeyB => {
                 self.view.split = match self.view.split {
                     Some(_) => None,
@@ -383,11 +391,17 @@ impl Running {
                 self.view.camera.jump_to(&camera);
                 self.renderer.reset_history();
             }
+            Action::Step(by) => {
+                self.view.motion.playing = false;
+                if self.view.motion.step(by) {
+                    self.renderer.reset_history();
+                }
+            }
             Action::TraceReference => {
                 let size = frame::internal_size(self.view.area, self.view.scale);
                 let truth = Truth::start(
                     self.scene.clone(),
-                    self.view.camera.camera(),
+                    self.view.shown(),
                     size,
                     self.reference_spp,
                     self.view.a.settings.radius,
@@ -417,10 +431,13 @@ impl Running {
         };
         truth.poll();
         let size = frame::internal_size(self.view.area, self.view.scale);
-        if !truth.is_of(&self.view.camera.camera(), size) {
+        let (camera, time) = self.view.shown();
+        if !truth.is_of((&camera, time), size) {
             self.truth = None;
             self.view.truth = TruthView::default();
             self.view.message = Some("reference dropped: the view changed".into());
+            // A screenshot waits for a reference of the view it shows: trace that one.
+            self.trace_at_start = self.wait_for_reference;
             return Ok(());
         }
         if let Some(error) = truth.error() {
@@ -460,7 +477,8 @@ impl Running {
         let temporal = self.view.a.settings.temporal.enabled
             || (self.view.split.as_ref()).is_some_and(|split| split.b.settings.temporal.enabled);
         let settle = if temporal { SETTLE_FRAMES } else { 1 };
-        self.view.idle = !self.view.continuous && self.repeats >= settle;
+        let moving = self.view.motion.playing && self.view.motion.active();
+        self.view.idle = !self.view.continuous && !moving && self.repeats >= settle;
         if !self.view.idle {
             self.render_scene();
         }
@@ -597,18 +615,24 @@ impl Running {
         let size = frame::internal_size(self.view.area, self.view.scale);
         self.view.render_size = size;
         self.renderer.debug_views = self.view.mode.debug_view().into_iter().collect();
-        let camera = self.view.camera.camera();
+        // The frame after the last one rendered, while the motion plays (the panel names the
+        // frame on screen).
+        if self.frame_index > 0 && self.view.motion.advance() {
+            // From the loop's end back to its start: a cut.
+            self.renderer.reset_history();
+        }
+        let (camera, time) = self.view.shown();
         let started = Instant::now();
         let result = match &mut self.view.split {
             None => self
                 .renderer
-                .render_at(gpu, &camera, size, self.frame_index, 0.0)
+                .render_at(gpu, &camera, size, self.frame_index, time)
                 .map(|frame| (frame, None))
                 .map_err(|e| e.to_string()),
             Some(split) => match b_pipeline(&mut self.b_pipeline, gpu, &mut split.b) {
                 Ok(pipeline) => self
                     .renderer
-                    .render_pair_at(gpu, &camera, size, self.frame_index, 0.0, pipeline)
+                    .render_pair_at(gpu, &camera, size, self.frame_index, time, pipeline)
                     .map(|(a, b)| (a, Some(b)))
                     .map_err(|e| e.to_string()),
                 Err(e) => Err(e),

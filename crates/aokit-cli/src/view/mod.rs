@@ -7,6 +7,7 @@
 //! - [`frame`]: display modes, internal render size, timings.
 //! - [`gpu`]: the window's device and surface, reading back a screenshot.
 //! - [`app`]: the event loop: input, one frame, the screenshot mode.
+//! - [`motion`]: the moving parts and the camera path over a loop, pause and step.
 //! - [`truth`]: the CPU reference of the view, traced in the background.
 //! - [`ui`]: the layout of the panel and the central view.
 
@@ -14,6 +15,7 @@ mod app;
 pub mod camera;
 pub mod frame;
 mod gpu;
+pub mod motion;
 pub mod panel;
 mod truth;
 mod ui;
@@ -63,6 +65,8 @@ pub struct ViewArgs {
     pub screenshot: Option<PathBuf>,
     #[command(flatten)]
     pub split: SplitArgs,
+    #[command(flatten)]
+    pub motion: MotionArgs,
     /// Trace the CPU reference of the starting view as soon as the window shows; with
     /// --screenshot, the frames are counted once it is traced, and the RMSE is printed.
     #[arg(long)]
@@ -74,6 +78,26 @@ pub struct ViewArgs {
     /// for the settings the flags give, and exit without opening a window.
     #[arg(long)]
     pub panel_layout: bool,
+}
+
+/// The motion's flags, as `aokit render`'s sequences take them.
+#[derive(Args, Debug)]
+pub struct MotionArgs {
+    /// Move the scene's moving parts over the loop (room: the sphere rolls; stairs: a block
+    /// slides; thin: a panel swings).
+    #[arg(long)]
+    pub animate: bool,
+    /// Move the camera over the loop, about the camera you steer: still, orbit, dolly or
+    /// strafe (as `aokit render --path`).
+    #[arg(long, value_name = "PATH", default_value = "still")]
+    pub path: aokit_scene::CameraPath,
+    /// Frames in one loop of the motion, time 0 at the first and 1 at the last; one step per
+    /// rendered frame.
+    #[arg(long, value_name = "N", default_value_t = 120, value_parser = clap::value_parser!(u32).range(2..=100_000))]
+    pub loop_frames: u32,
+    /// Start with the motion paused (Space plays).
+    #[arg(long)]
+    pub paused: bool,
 }
 
 /// The A/B split's flags: B's settings start from A's method and preset unless these say.
@@ -140,11 +164,24 @@ pub fn run(args: &ViewArgs) -> Result<()> {
     {
         bail!("--screenshot {} must name a .png file", path.display());
     }
+    let moving = args.motion.animate || args.motion.path != aokit_scene::CameraPath::Still;
+    if args.reference && moving && !args.motion.paused {
+        bail!(
+            "--reference traces one view, which the motion would leave at once: with --animate \
+             or --path, add --paused"
+        );
+    }
     let scene = Scene::open(&args.scene)?;
     for note in &scene.notes {
         eprintln!("note: {}: {note}", scene.name);
     }
     let camera = args.camera.resolve(&scene)?;
+    if args.motion.animate && scene.moving_parts.is_empty() {
+        eprintln!(
+            "note: `{}` has no moving parts: --animate changes nothing",
+            scene.name
+        );
+    }
     let settings = args.settings.resolve(scene.suggested_radius)?;
     let preset = parse_preset(args.settings.preset.as_deref())?;
     let config = Config {
@@ -170,6 +207,13 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         camera,
         config,
         split,
+        motion: motion::Motion {
+            animate: args.motion.animate,
+            path: args.motion.path,
+            loop_frames: args.motion.loop_frames,
+            frame: 0,
+            playing: !args.motion.paused,
+        },
         reference: args.reference,
         reference_spp: args.reference_spp,
         mode: args.mode,

@@ -22,6 +22,8 @@ pub struct Truth {
     pub camera: Camera,
     /// The size traced: the size the view renders at.
     pub size: [u32; 2],
+    /// The moving parts' time traced.
+    pub time: f32,
     /// The options traced with (the AO radius as A had it when the trace started).
     pub options: AoOptions,
     state: State,
@@ -37,9 +39,16 @@ enum State {
 }
 
 impl Truth {
-    /// Starts tracing `camera`'s view of `scene` at `size` with `spp` rays per pixel and AO
-    /// `radius`, with the options `aokit compare` traces with (seed 0, no falloff).
-    pub fn start(scene: Arc<Scene>, camera: Camera, size: [u32; 2], spp: u32, radius: f32) -> Self {
+    /// Starts tracing `camera`'s view of `scene` (its moving parts at `time`) at `size` with
+    /// `spp` rays per pixel and AO `radius`, with the options `aokit compare` traces with (seed
+    /// 0, no falloff).
+    pub fn start(
+        scene: Arc<Scene>,
+        (camera, time): (Camera, f32),
+        size: [u32; 2],
+        spp: u32,
+        radius: f32,
+    ) -> Self {
         let options = AoOptions {
             radius,
             spp,
@@ -50,7 +59,7 @@ impl Truth {
         let thread = {
             let (camera, rows_done) = (camera.clone(), rows_done.clone());
             std::thread::spawn(move || {
-                let tracer = crate::reference::scene_tracer(&scene)?;
+                let tracer = crate::reference::scene_tracer_at(&scene, time)?;
                 crate::reference::trace_reporting(
                     &tracer,
                     &scene,
@@ -64,6 +73,7 @@ impl Truth {
         Self {
             camera,
             size,
+            time,
             options,
             state: State::Tracing { rows_done, thread },
         }
@@ -114,8 +124,8 @@ impl Truth {
         }
     }
 
-    /// Whether this reference is of `camera`'s view at `size`.
-    pub fn is_of(&self, camera: &Camera, size: [u32; 2]) -> bool {
-        self.camera == *camera && self.size == size
+    /// Whether this reference is of `camera`'s view at `size`, the moving parts at `time`.
+    pub fn is_of(&self, (camera, time): (&Camera, f32), size: [u32; 2]) -> bool {
+        self.camera == *camera && self.size == size && self.time == time
     }
 }

@@ -6,6 +6,7 @@ use aokit_scene::Camera;
 
 use super::camera::{CameraMode, ViewCamera};
 use super::frame::{DisplayMode, Timings};
+use super::motion::Motion;
 use super::panel::{self, PanelChange};
 
 /// Everything the panel shows and changes.
@@ -47,6 +48,8 @@ pub struct ViewState {
     /// Whether the last frame showed the image before it rather than rendering the unchanged
     /// view again.
     pub idle: bool,
+    /// The moving parts and the camera path.
+    pub motion: Motion,
     /// The reference of the view, as the panel shows it.
     pub truth: TruthView,
     /// A passing message ("copied").
@@ -105,6 +108,17 @@ pub struct Split {
 /// Colour of the line between the split's halves (the tests look for it in screenshots).
 pub const DIVIDER_COLOR: egui::Color32 = egui::Color32::from_rgb(255, 200, 0);
 
+impl ViewState {
+    /// The camera the frame shows (the user's, moved along the path) and the moving parts'
+    /// time.
+    pub fn shown(&self) -> (Camera, f32) {
+        (
+            self.motion.camera(&self.camera.camera()),
+            self.motion.time(),
+        )
+    }
+}
+
 /// What the panel asks the viewer to do beyond changing [`ViewState`].
 #[derive(Debug, PartialEq)]
 pub enum Action {
@@ -118,6 +132,8 @@ pub enum Action {
     Reset,
     /// Trace the reference of the view.
     TraceReference,
+    /// Step the motion by this many frames (paused).
+    Step(i64),
 }
 
 /// Draws the window: the side panel (when shown) and the scene in the rest. Returns what the
@@ -351,6 +367,7 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
     }
 
     timings(ui, view);
+    motion_ui(ui, &mut view.motion, actions);
     truth_ui(ui, view, actions);
 
     ui.separator();
@@ -462,6 +479,41 @@ fn config_ui(
             None => refused,
         });
     }
+}
+
+/// The motion: moving parts, camera path, play and pause, step, the frame of the loop.
+fn motion_ui(ui: &mut egui::Ui, motion: &mut Motion, actions: &mut Vec<Action>) {
+    ui.separator();
+    ui.strong("Motion");
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut motion.animate, "moving parts")
+            .on_hover_text("the scene's moving parts over the loop (--animate)");
+        egui::ComboBox::new("camera path", "camera path")
+            .selected_text(motion.path.name())
+            .show_ui(ui, |ui| {
+                for path in aokit_scene::CameraPath::ALL {
+                    ui.selectable_value(&mut motion.path, path, path.name());
+                }
+            });
+    });
+    ui.horizontal(|ui| {
+        let play = if motion.playing { "pause" } else { "play" };
+        if ui.button(play).on_hover_text("Space").clicked() {
+            motion.playing = !motion.playing;
+        }
+        if ui.button("<").on_hover_text("a frame back (,)").clicked() {
+            actions.push(Action::Step(-1));
+        }
+        if ui.button(">").on_hover_text("a frame on (.)").clicked() {
+            actions.push(Action::Step(1));
+        }
+        ui.label(format!(
+            "frame {}/{} (t = {:.3})",
+            motion.frame,
+            motion.loop_frames - 1,
+            motion.t()
+        ));
+    });
 }
 
 /// The reference: the button that traces it, the trace's progress, and the RMSE of each

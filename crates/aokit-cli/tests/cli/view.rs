@@ -160,6 +160,16 @@ fn bad_flags_are_refused_before_any_window_opens() {
         &["view", "--split", "--b-set", "normals.encoding=rgba16f"],
     ));
     assert!(err.contains("differs from A's `oct32`"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--animate", "--reference"],
+    ));
+    assert!(err.contains("add --paused"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--loop-frames", "1"],
+    ));
+    assert!(err.contains("--loop-frames"), "{err}");
     // Without a display, the error says how to get one.
     let out = output(
         command(dir.path(), &["view", "--frames", "1"])
@@ -471,5 +481,47 @@ fn the_reference_error_and_rmse_match_aokit_compare() {
         // Bilinear stretching blurs the noisy map: about 9 here; another image gives 50.
         let difference = sum / count;
         assert!(difference < 15.0, "{side}: {difference}");
+    }
+}
+
+/// `--animate --path orbit`: the fourth frame of an eight-frame loop is the fourth frame of
+/// `aokit render --frames 8 --path orbit --animate` (the sphere rolled, the camera turned), not
+/// its neighbours.
+#[test]
+fn the_motion_plays_the_frames_aokit_render_renders() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    #[rustfmt::skip]
+    let out = aokit_in_xvfb(dir.path(), &[
+        "view", "--scene", "room", "--mode", "ao", "--no-panel", "--window-size", "192x108",
+        "--scale", "1", "--animate", "--path", "orbit", "--loop-frames", "8", "--frames", "4",
+        "--screenshot", "motion.png",
+    ]);
+    ok(&out);
+    #[rustfmt::skip]
+    ok(&crate::common::aokit(dir.path(), &[
+        "render", "--scene", "room", "--size", "192x108", "--frames", "8", "--path", "orbit",
+        "--animate", "--out", "render",
+    ]));
+    let shot = image::open(dir.path().join("motion.png"))
+        .unwrap()
+        .to_rgba8();
+    let frame = |i: u32| {
+        image::open(dir.path().join(format!("render/frames/ao-{i:03}.png")))
+            .unwrap()
+            .to_rgba8()
+    };
+    // Above the software-adapter note.
+    let region = [0.0, 0.1, 1.0, 0.78];
+    let same = mean_difference(&shot, &frame(3), region);
+    assert!(same < 4.0, "frame 3: {same}");
+    for other in [2, 4] {
+        let differs = mean_difference(&shot, &frame(other), region);
+        assert!(
+            differs > 2.0 * same + 4.0,
+            "frame {other}: {differs} vs {same}"
+        );
     }
 }
