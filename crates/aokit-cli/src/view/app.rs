@@ -654,7 +654,10 @@ impl Running {
         self.view.timings.add(started.elapsed(), passes.as_deref());
         self.view.error = None;
         let names = ["aokit scene", "aokit scene B"];
-        let reference = self.truth.as_ref().and_then(Truth::image);
+        // Of this frame's view only: the motion may have stepped since the trace.
+        let reference = (self.truth.as_ref())
+            .filter(|truth| truth.is_of((&camera, time), size))
+            .and_then(Truth::image);
         for (i, frame) in [Some(&frame), b_frame.as_ref()].into_iter().enumerate() {
             self.view.truth.rmse[i] = frame
                 .zip(reference)
