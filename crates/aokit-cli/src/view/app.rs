@@ -624,11 +624,14 @@ impl Running {
         let (camera, time) = self.view.shown();
         let started = Instant::now();
         let result = match &mut self.view.split {
-            None => self
-                .renderer
-                .render_at(gpu, &camera, size, self.frame_index, time)
-                .map(|frame| (frame, None))
-                .map_err(|e| e.to_string()),
+            None => {
+                // The split off: B starts afresh when it comes back, without a stale history.
+                self.b_pipeline = None;
+                self.renderer
+                    .render_at(gpu, &camera, size, self.frame_index, time)
+                    .map(|frame| (frame, None))
+                    .map_err(|e| e.to_string())
+            }
             Some(split) => match b_pipeline(&mut self.b_pipeline, gpu, &mut split.b) {
                 Ok(pipeline) => self
                     .renderer
