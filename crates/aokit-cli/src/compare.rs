@@ -99,7 +99,7 @@ pub struct CompareArgs {
 }
 
 /// The error maps' colour scale: errors beyond a quarter of the AO range read as saturated.
-const ERROR_RANGE: f32 = 0.25;
+pub const ERROR_RANGE: f32 = 0.25;
 /// Depth edges: a neighbour 5% nearer or farther, or a surface next to the sky...
 const EDGE_RELATIVE_DEPTH: f32 = 0.05;
 /// ...and pixels within 2 of one, where halos and missing contact shadows show.
@@ -212,7 +212,6 @@ fn score_method(
     preset: Preset,
     gpu_ms: Option<f64>,
 ) -> Result<MethodResult> {
-    let surface = surface_mask(&reference.linear_depth);
     let edges = depth_edge_mask(
         reference.size,
         &reference.linear_depth,
@@ -225,18 +224,29 @@ fn score_method(
     Ok(MethodResult {
         method: scoring.method.to_string(),
         preset: preset.name().to_string(),
-        all: score(reference.size, ao, &reference.ao, &surface),
+        all: surface_error(reference, ao),
         edges: score(reference.size, ao, &reference.ao, &edges),
         grazing: score(reference.size, ao, &reference.ao, grazing),
         sequence: None,
         gpu_ms,
         samples_per_pixel: scoring.samples_per_pixel,
         ao_png: encode_png_grey(reference.size, ao)?,
-        error_png: encode_png_rgb(
-            reference.size,
-            &error_map_rgb(ao, &reference.ao, &surface, ERROR_RANGE),
-        )?,
+        error_png: encode_png_rgb(reference.size, &error_map(reference, ao))?,
     })
+}
+
+/// `ao`'s error against `reference` over every surface pixel: the report's `all` column (and
+/// the RMSE `aokit view` shows).
+pub fn surface_error(reference: &ReferenceImage, ao: &[f32]) -> Metrics {
+    let surface = surface_mask(&reference.linear_depth);
+    score(reference.size, ao, &reference.ao, &surface)
+}
+
+/// The signed error map of `ao` against `reference` as RGB (blue too dark, red too bright,
+/// saturated at [`ERROR_RANGE`]; the sky grey), as the report draws it.
+pub fn error_map(reference: &ReferenceImage, ao: &[f32]) -> Vec<u8> {
+    let surface = surface_mask(&reference.linear_depth);
+    error_map_rgb(ao, &reference.ao, &surface, ERROR_RANGE)
 }
 
 /// Sums each frame's pass times; `None` without timestamps.

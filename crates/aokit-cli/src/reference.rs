@@ -110,8 +110,13 @@ pub fn trace(
     trace_on(&scene_tracer(scene)?, scene, camera, size, options)
 }
 
-fn scene_tracer(scene: &Scene) -> Result<Tracer> {
-    aokit_scene::reference::tracer(scene).map_err(|e| anyhow!("{}: {e}", scene.name))
+pub fn scene_tracer(scene: &Scene) -> Result<Tracer> {
+    scene_tracer_at(scene, 0.0)
+}
+
+/// The tracer of `scene` with its moving parts where they are at `time` of a sequence.
+pub fn scene_tracer_at(scene: &Scene, time: f32) -> Result<Tracer> {
+    aokit_scene::reference::tracer_at(scene, time).map_err(|e| anyhow!("{}: {e}", scene.name))
 }
 
 /// [`trace`] with the scene's tracer built.
@@ -122,6 +127,26 @@ fn trace_on(
     size: [u32; 2],
     options: &AoOptions,
 ) -> Result<ReferenceImage> {
+    let bar = progress_bar(u64::from(size[1]), "tracing", " rows");
+    bar.set_message(format!("{} ({} rays per pixel)", scene.name, options.spp));
+    let image = trace_reporting(tracer, scene, camera, size, options, &|rows| {
+        bar.set_position(rows as u64)
+    });
+    bar.finish_and_clear();
+    image
+}
+
+/// Traces `camera`'s view of `scene` with its tracer, calling `rows_done` with the number of
+/// rows finished as they finish (`aokit view` shows it in its panel); the options, camera and
+/// projection are checked first.
+pub fn trace_reporting(
+    tracer: &Tracer,
+    scene: &Scene,
+    camera: &Camera,
+    size: [u32; 2],
+    options: &AoOptions,
+    rows_done: &(dyn Fn(usize) + Sync),
+) -> Result<ReferenceImage> {
     options.validate()?;
     camera.validate().map_err(|e| anyhow!(e))?;
     // The projection written to camera.json afterwards, checked before the trace (planes
@@ -131,13 +156,7 @@ fn trace_on(
         .validate()
         .map_err(|e| anyhow!("camera `{}`: {e}", camera.name))?;
     let pixel_camera = aokit_scene::reference::pixel_camera(scene, camera, size);
-    let bar = progress_bar(u64::from(size[1]), "tracing", " rows");
-    bar.set_message(format!("{} ({} rays per pixel)", scene.name, options.spp));
-    let image = tracer.render(&pixel_camera, options, &|rows| {
-        bar.set_position(rows as u64)
-    });
-    bar.finish_and_clear();
-    Ok(image?)
+    Ok(tracer.render(&pixel_camera, options, rows_done)?)
 }
 
 pub fn run(args: &ReferenceArgs) -> Result<()> {

@@ -486,6 +486,58 @@ impl Renderer {
         frame_index: u32,
         time: f32,
     ) -> Result<Frame, RenderError> {
+        Ok(self
+            .render_sides(gpu, camera, size, frame_index, time, None)?
+            .0)
+    }
+
+    /// [`Renderer::render_at`], and `second`, a pipeline of the caller's with other settings,
+    /// run on the same G-buffer: the second frame holds its AO, lit image, debug views and
+    /// history, the G-buffer's images (depth, normals, motion) as the first. For showing two
+    /// configurations side by side (`aokit view --split`). `second` runs its settings as given
+    /// (its bent normals are not turned on for [`SpecularOcclusion::Gtso`]); the G-buffer's
+    /// normals are in this renderer's [`aokit::NormalsSettings::encoding`], which `second`'s
+    /// settings must name too.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), Box<dyn std::error::Error>> {
+    /// use aokit::{AoPipeline, AoSettings, Method, Preset};
+    /// let hbao = AoSettings::preset(Method::Hbao, Preset::Medium);
+    /// let mut second = AoPipeline::new(&gpu.device, &gpu.queue, &hbao)?;
+    /// let (first, hbao_frame) = renderer.render_pair_at(gpu, camera, [640, 360], 0, 0.0,
+    ///                                                   &mut second)?;
+    /// assert_eq!(first.linear_depth, hbao_frame.linear_depth);
+    /// # Ok(()) }
+    /// ```
+    pub fn render_pair_at(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        size: [u32; 2],
+        frame_index: u32,
+        time: f32,
+        second: &mut AoPipeline,
+    ) -> Result<(Frame, Frame), RenderError> {
+        let (first, second) =
+            self.render_sides(gpu, camera, size, frame_index, time, Some(second))?;
+        Ok((
+            first,
+            second.expect("a second pipeline renders a second frame"),
+        ))
+    }
+
+    /// Renders the frame of [`Renderer::render_at`], and with `second`, that pipeline's frame
+    /// of the same G-buffer.
+    fn render_sides(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        size: [u32; 2],
+        frame_index: u32,
+        time: f32,
+        second: Option<&mut AoPipeline>,
+    ) -> Result<(Frame, Option<Frame>), RenderError> {
         let projection = self.checked_projection(gpu, camera, size)?;
         let view_from_world = camera.view_from_world();
         let (device, queue) = (&gpu.device, &gpu.queue);
@@ -503,6 +555,37 @@ impl Renderer {
             .unwrap_or((clip_from_world, time));
         self.mesh.place(queue, time, previous_time);
 
+        let back_faces = |s: &AoSettings| s.method == aokit::Method::Vbao && s.vbao.back_faces;
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let gbuffer = self.draw_gbuffer(
+            gpu,
+            &mut encoder,
+            size,
+            self.settings.normals.encoding,
+            back_faces(&wanted) || second.as_ref().is_some_and(|p| back_faces(p.settings())),
+            &GBufferCamera {
+                view_from_world,
+                projection: &projection,
+                previous_clip_from_world,
+            },
+        );
+        let sun = SunView::new(self.lighting.sun_direction, &self.bounds);
+        self.shadow_pass
+            .encode(queue, &mut encoder, &self.mesh, &sun);
+        let inputs = AoInputs {
+            normals: Some(&gbuffer.normals),
+            view_from_world,
+            frame_index,
+            motion_vectors: self.use_motion_vectors.then_some(&gbuffer.motion),
+            reset_history,
+            back_depth: gbuffer.back_depth.as_ref(),
+            ..AoInputs::new(&gbuffer.depth, projection)
+        };
+        let composite_view = CompositeView {
+            projection: &projection,
+            view_from_world,
+            sun: &sun,
+        };
         let lit = create_texture_2d(
             device,
             "lit",
@@ -510,46 +593,13 @@ impl Renderer {
             LIT_FORMAT,
             wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
         );
-        let mut encoder = device.create_command_encoder(&Default::default());
-        let gbuffer = self.draw_gbuffer(
-            gpu,
-            &mut encoder,
-            size,
-            self.settings.normals.encoding,
-            wanted.method == aokit::Method::Vbao && wanted.vbao.back_faces,
-            &GBufferCamera {
-                view_from_world,
-                projection: &projection,
-                previous_clip_from_world,
-            },
-        );
-        let outputs = self.ao.encode(
-            device,
-            queue,
-            &mut encoder,
-            &AoInputs {
-                normals: Some(&gbuffer.normals),
-                view_from_world,
-                frame_index,
-                motion_vectors: self.use_motion_vectors.then_some(&gbuffer.motion),
-                reset_history,
-                back_depth: gbuffer.back_depth.as_ref(),
-                ..AoInputs::new(&gbuffer.depth, projection)
-            },
-        )?;
-        let sun = SunView::new(self.lighting.sun_direction, &self.bounds);
-        self.shadow_pass
-            .encode(queue, &mut encoder, &self.mesh, &sun);
+        let outputs = self.ao.encode(device, queue, &mut encoder, &inputs)?;
         self.composite.encode(
             device,
             queue,
             &mut encoder,
             &self.lighting,
-            &CompositeView {
-                projection: &projection,
-                view_from_world,
-                sun: &sun,
-            },
+            &composite_view,
             &gbuffer,
             &outputs,
             &self.shadow_pass.map,
@@ -558,40 +608,19 @@ impl Renderer {
         queue.submit([encoder.finish()]);
         self.previous = Some((clip_from_world, time));
 
-        let ao = read_texture_f32(device, queue, outputs.ao)?;
-        let history_rejected = outputs
-            .history_rejected
-            .map(|texture| {
-                let extent = texture.size();
-                read_texture_f32(device, queue, texture)
-                    .map(|texels| (texels, [extent.width, extent.height]))
-            })
-            .transpose()?;
-        let bent_normals = outputs
-            .bent_normals
-            .filter(|_| self.settings.bent_normals)
-            .map(|texture| read_texture_rgba16f(device, queue, texture))
-            .transpose()?
-            .map(|texels| texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect());
         let linear_depth = read_texture_f32(device, queue, outputs.linear_depth)?;
-        let mut debug = Vec::with_capacity(self.debug_views.len());
-        if !self.debug_views.is_empty() {
-            let style = DebugStyle {
-                depth_range: depth_range(&linear_depth),
-                orthographic: projection.is_orthographic(),
-                ..DebugStyle::default()
-            };
-            let pass = self
-                .debug
-                .get_or_insert_with(|| AoDebug::new(device, queue));
-            for &view in &self.debug_views {
-                let mut encoder = device.create_command_encoder(&Default::default());
-                let image = pass.encode(device, queue, &mut encoder, &outputs, view, &style)?;
-                queue.submit([encoder.finish()]);
-                debug.push((view, read_texture(device, queue, image)?));
-            }
-        }
-        let lit = read_texture(device, queue, &lit)?;
+        let style = DebugStyle {
+            depth_range: depth_range(&linear_depth),
+            orthographic: projection.is_orthographic(),
+            ..DebugStyle::default()
+        };
+        let mut sides = SideReader {
+            gpu,
+            style: &style,
+            debug_views: &self.debug_views,
+            debug: &mut self.debug,
+        };
+        let first = sides.read(&outputs, &lit, self.settings.bent_normals)?;
         let back_depth = gbuffer
             .back_depth
             .as_ref()
@@ -615,18 +644,127 @@ impl Renderer {
                 }
             })
             .collect();
-        Ok(Frame {
+        let frame = first.into_frame(Frame {
             size,
             projection,
             view_from_world,
-            ao,
-            lit,
+            ao: Vec::new(),
+            lit: Vec::new(),
             linear_depth,
             normals,
-            history_rejected,
-            bent_normals,
+            history_rejected: None,
+            bent_normals: None,
             back_depth,
             motion_vectors,
+            debug: Vec::new(),
+        });
+        let Some(second) = second else {
+            return Ok((frame, None));
+        };
+        // A submission of its own: the composite's uniforms (whether there are bent normals)
+        // may differ from the first side's.
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let second_lit = create_texture_2d(
+            device,
+            "lit (second)",
+            size,
+            LIT_FORMAT,
+            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+        );
+        let second_bent_normals = second.settings().bent_normals;
+        let outputs = second.encode(device, queue, &mut encoder, &inputs)?;
+        self.composite.encode(
+            device,
+            queue,
+            &mut encoder,
+            &self.lighting,
+            &composite_view,
+            &gbuffer,
+            &outputs,
+            &self.shadow_pass.map,
+            &second_lit,
+        );
+        queue.submit([encoder.finish()]);
+        let side = sides.read(&outputs, &second_lit, second_bent_normals)?;
+        let second_frame = side.into_frame(frame.clone());
+        Ok((frame, Some(second_frame)))
+    }
+}
+
+/// What differs between two AO pipelines' frames of the same G-buffer.
+struct Side {
+    ao: Vec<f32>,
+    lit: Vec<u8>,
+    history_rejected: Option<(Vec<f32>, [u32; 2])>,
+    bent_normals: Option<Vec<Vec3>>,
+    debug: Vec<(DebugView, Vec<u8>)>,
+}
+
+impl Side {
+    /// `frame` with this side's images.
+    fn into_frame(self, frame: Frame) -> Frame {
+        Frame {
+            ao: self.ao,
+            lit: self.lit,
+            history_rejected: self.history_rejected,
+            bent_normals: self.bent_normals,
+            debug: self.debug,
+            ..frame
+        }
+    }
+}
+
+/// Reads one AO pipeline's side of a frame back, with the debug views asked for.
+struct SideReader<'a> {
+    gpu: &'a GpuContext,
+    style: &'a DebugStyle,
+    debug_views: &'a [DebugView],
+    debug: &'a mut Option<AoDebug>,
+}
+
+impl SideReader<'_> {
+    /// The AO, `lit`, the history and, where `bent_normals` asks, the bent normals of
+    /// `outputs`, and the debug views drawn from them.
+    fn read(
+        &mut self,
+        outputs: &aokit::AoOutputs<'_>,
+        lit: &wgpu::Texture,
+        bent_normals: bool,
+    ) -> Result<Side, RenderError> {
+        let (device, queue) = (&self.gpu.device, &self.gpu.queue);
+        let ao = read_texture_f32(device, queue, outputs.ao)?;
+        let history_rejected = outputs
+            .history_rejected
+            .map(|texture| {
+                let extent = texture.size();
+                read_texture_f32(device, queue, texture)
+                    .map(|texels| (texels, [extent.width, extent.height]))
+            })
+            .transpose()?;
+        let bent_normals = outputs
+            .bent_normals
+            .filter(|_| bent_normals)
+            .map(|texture| read_texture_rgba16f(device, queue, texture))
+            .transpose()?
+            .map(|texels| texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect());
+        let mut debug = Vec::with_capacity(self.debug_views.len());
+        if !self.debug_views.is_empty() {
+            let pass = self
+                .debug
+                .get_or_insert_with(|| AoDebug::new(device, queue));
+            for &view in self.debug_views {
+                let mut encoder = device.create_command_encoder(&Default::default());
+                let image = pass.encode(device, queue, &mut encoder, outputs, view, self.style)?;
+                queue.submit([encoder.finish()]);
+                debug.push((view, read_texture(device, queue, image)?));
+            }
+        }
+        let lit = read_texture(device, queue, lit)?;
+        Ok(Side {
+            ao,
+            lit,
+            history_rejected,
+            bent_normals,
             debug,
         })
     }

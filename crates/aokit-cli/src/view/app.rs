@@ -7,7 +7,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::{Context, Result, anyhow};
-use aokit::{AdapterKind, AoSettings, Preset};
+use aokit::{AdapterKind, AoPipeline};
 use aokit_scene::{Camera, Renderer, Scene};
 use glam::Vec3;
 use winit::application::ApplicationHandler;
@@ -19,7 +19,9 @@ use winit::window::{Window, WindowId};
 use super::camera::{CameraMode, ViewCamera};
 use super::frame::{self, DisplayMode, Timings};
 use super::gpu::WindowGpu;
-use super::ui::{self, Action, ViewState};
+use super::motion::Motion;
+use super::truth::{self, Truth};
+use super::ui::{self, Action, Config, Split, TruthView, ViewState};
 
 /// What the viewer starts with, from the flags.
 pub struct Start {
@@ -27,10 +29,17 @@ pub struct Start {
     pub scene: Scene,
     /// The camera the flags picked.
     pub camera: Camera,
-    /// The settings the flags give.
-    pub settings: AoSettings,
-    /// The preset the flags name (the panel's "copy as flags" compares with it).
-    pub preset: Preset,
+    /// The settings the flags give, and the preset they name (the panel's "copy as flags"
+    /// compares with it).
+    pub config: Config,
+    /// The A/B split `--split` opens with.
+    pub split: Option<Split>,
+    /// The moving parts and the camera path.
+    pub motion: Motion,
+    /// Trace the reference of the starting view (and, with a screenshot, wait for it).
+    pub reference: bool,
+    /// Rays per pixel of the reference; `None`: [`truth::default_spp`].
+    pub reference_spp: Option<u32>,
     /// What to show.
     pub mode: DisplayMode,
     /// Window size in pixels.
@@ -146,8 +155,21 @@ struct Running {
     renderer: Renderer,
     egui_state: egui_winit::State,
     egui_renderer: egui_wgpu::Renderer,
-    texture: Option<egui::TextureHandle>,
+    /// The images the central area draws: A's, and B's in the split.
+    textures: [Option<egui::TextureHandle>; 2],
+    /// B's AO pipeline, made when the split first shows.
+    b_pipeline: Option<AoPipeline>,
     view: ViewState,
+    /// The scene, for the reference's tracer.
+    scene: Arc<Scene>,
+    /// The reference of the view, traced or being traced.
+    truth: Option<Truth>,
+    /// Rays per pixel of the reference.
+    reference_spp: u32,
+    /// Trace the reference once the layout has measured the view (`--reference`).
+    trace_at_start: bool,
+    /// Count `--frames` only once the reference is traced (`--reference --screenshot`).
+    wait_for_reference: bool,
     input: Input,
     last: Instant,
     frame_index: u32,
@@ -167,12 +189,21 @@ struct Running {
 /// renderer's composite pass (docs/viewer.md).
 pub const SETTLE_FRAMES: u32 = 32;
 
-/// Everything the rendered image depends on, as text: camera, settings, mode, scale and size.
+/// Everything the rendered images depend on, as text: camera, settings (B's too in the split),
+/// mode, scale, size, and whether the reference is there.
 fn scene_key(view: &ViewState) -> String {
     let camera = &view.camera;
     format!(
-        "{:?} {:?} {:?} {:?} {} {:?}",
-        camera.eye, camera.forward, view.settings, view.mode, view.scale, view.area
+        "{:?} {:?} {:?} {:?} {:?} {} {:?} {} {:?}",
+        camera.eye,
+        camera.forward,
+        view.a.settings,
+        view.split.as_ref().map(|split| split.b.settings),
+        view.mode,
+        view.scale,
+        view.area,
+        view.truth.ready,
+        view.motion
     )
 }
 
@@ -208,7 +239,7 @@ impl Running {
         if let Some(note) = &software_note {
             eprintln!("note: {note}");
         }
-        let mut renderer = Renderer::new(gpu, &start.scene, &start.settings)?;
+        let mut renderer = Renderer::new(gpu, &start.scene, &start.config.settings)?;
         let timestamps = renderer.enable_timing(gpu);
         let egui_ctx = egui::Context::default();
         let egui_state = egui_winit::State::new(
@@ -228,9 +259,8 @@ impl Running {
             bookmarks: start.scene.cameras.clone(),
             scene_name: start.scene.name.clone(),
             suggested_radius: start.scene.suggested_radius,
-            method: start.settings.method,
-            preset: start.preset,
-            settings: start.settings,
+            a: start.config,
+            split: start.split,
             mode: start.mode,
             scale,
             panel: start.panel,
@@ -242,6 +272,8 @@ impl Running {
             continuous: false,
             idle: false,
             render_size: [0, 0],
+            truth: TruthView::default(),
+            motion: start.motion,
             message: None,
             error: None,
         };
@@ -251,8 +283,14 @@ impl Running {
             renderer,
             egui_state,
             egui_renderer,
-            texture: None,
+            textures: [None, None],
+            b_pipeline: None,
             view,
+            scene: Arc::new(start.scene),
+            truth: None,
+            reference_spp: start.reference_spp.unwrap_or(truth::default_spp(software)),
+            trace_at_start: start.reference,
+            wait_for_reference: start.reference && start.screenshot.is_some(),
             input: Input::default(),
             last: Instant::now(),
             frame_index: 0,
@@ -309,6 +347,19 @@ impl Running {
             KeyCode::KeyF => self.view.camera.mode = CameraMode::Fly,
             KeyCode::KeyO => self.view.camera.mode = CameraMode::Orbit,
             KeyCode::KeyR => self.act(Action::Reset),
+            KeyCode::KeyT => self.act(Action::TraceReference),
+            KeyCode::Space => self.view.motion.playing = !self.view.motion.playing,
+            KeyCode::Period => self.act(Action::Step(1)),
+            KeyCode::Comma => self.act(Action::Step(-1)),
+            KeyCode::KeyB => {
+                self.view.split = match self.view.split {
+                    Some(_) => None,
+                    None => Some(Split {
+                        b: self.view.a.clone(),
+                        divider: 0.5,
+                    }),
+                }
+            }
             _ => {}
         }
         true
@@ -340,7 +391,67 @@ impl Running {
                 self.view.camera.jump_to(&camera);
                 self.renderer.reset_history();
             }
+            Action::Step(by) => {
+                self.view.motion.playing = false;
+                if self.view.motion.step(by) {
+                    self.renderer.reset_history();
+                }
+            }
+            Action::TraceReference => {
+                let size = frame::internal_size(self.view.area, self.view.scale);
+                let truth = Truth::start(
+                    self.scene.clone(),
+                    self.view.shown(),
+                    size,
+                    self.reference_spp,
+                    self.view.a.settings.radius,
+                );
+                self.view.truth = TruthView {
+                    note: Some(format!(
+                        "{}x{}, {} rays per pixel, radius {}",
+                        size[0], size[1], truth.options.spp, truth.options.radius
+                    )),
+                    ..TruthView::default()
+                };
+                self.truth = Some(truth);
+            }
         }
+    }
+
+    /// Follows the reference's trace: takes its result, drops it when the camera or the size
+    /// rendered changed, and starts the one `--reference` asks for once the layout has measured
+    /// the view. A failed trace is an error with `--reference --screenshot`, and a note in the
+    /// panel otherwise.
+    fn update_truth(&mut self) -> Result<()> {
+        if std::mem::take(&mut self.trace_at_start) {
+            self.act(Action::TraceReference);
+        }
+        let Some(truth) = &mut self.truth else {
+            return Ok(());
+        };
+        truth.poll();
+        let size = frame::internal_size(self.view.area, self.view.scale);
+        let (camera, time) = self.view.shown();
+        if !truth.is_of((&camera, time), size) {
+            self.truth = None;
+            self.view.truth = TruthView::default();
+            self.view.message = Some("reference dropped: the view changed".into());
+            // A screenshot waits for a reference of the view it shows: trace that one.
+            self.trace_at_start = self.wait_for_reference;
+            return Ok(());
+        }
+        if let Some(error) = truth.error() {
+            if self.wait_for_reference {
+                return Err(error);
+            }
+            self.view.error = Some(format!("{error:#}"));
+            self.truth = None;
+            self.view.truth = TruthView::default();
+            return Ok(());
+        }
+        self.view.truth.progress = truth.progress();
+        self.view.truth.ready = truth.image().is_some();
+        Ok(())
     }
 
     /// Renders the scene at the view's size, then draws the panel over it and presents.
@@ -352,6 +463,10 @@ impl Running {
         if direction != Vec3::ZERO {
             self.view.camera.fly(direction, seconds, self.input.fast());
         }
+        // After the first frame: its layout measured the view the reference is traced for.
+        if self.drawn > 0 || !self.trace_at_start {
+            self.update_truth()?;
+        }
         let key = scene_key(&self.view);
         if self.last_key.as_ref() == Some(&key) {
             self.repeats += 1;
@@ -359,22 +474,25 @@ impl Running {
             self.last_key = Some(key);
             self.repeats = 0;
         }
-        let settle = if self.view.settings.temporal.enabled {
-            SETTLE_FRAMES
-        } else {
-            1
-        };
-        self.view.idle = !self.view.continuous && self.repeats >= settle;
+        let temporal = self.view.a.settings.temporal.enabled
+            || (self.view.split.as_ref()).is_some_and(|split| split.b.settings.temporal.enabled);
+        let settle = if temporal { SETTLE_FRAMES } else { 1 };
+        let moving = self.view.motion.playing && self.view.motion.active();
+        self.view.idle = !self.view.continuous && !moving && self.repeats >= settle;
         if !self.view.idle {
             self.render_scene();
         }
-        self.drawn += 1;
+        let waiting = self.wait_for_reference && !self.view.truth.ready;
+        if !waiting || self.drawn == 0 {
+            self.drawn += 1;
+        }
 
         let raw_input = self.egui_state.take_egui_input(&self.window);
         let ctx = self.egui_state.egui_ctx().clone();
         let mut actions = Vec::new();
         let mut output = ctx.run_ui(raw_input, |ui| {
-            actions = ui::draw(ui, &mut self.view, self.texture.as_ref());
+            let [a, b] = &self.textures;
+            actions = ui::draw(ui, &mut self.view, [a.as_ref(), b.as_ref()]);
         });
         for action in actions {
             self.act(action);
@@ -463,30 +581,69 @@ impl Running {
                 self.view.render_size[0],
                 self.view.render_size[1]
             );
+            if let Some(truth) = &self.truth {
+                let mut labels = vec![("A", self.view.a.label(self.view.suggested_radius))];
+                if let Some(split) = &self.view.split {
+                    labels.push(("B", split.b.label(self.view.suggested_radius)));
+                }
+                for ((side, label), rmse) in labels.into_iter().zip(self.view.truth.rmse) {
+                    if let Some(rmse) = rmse {
+                        outln!(
+                            "rmse {side} {rmse:.6} ({label}, {}x{}, {} rays per pixel)",
+                            truth.size[0],
+                            truth.size[1],
+                            truth.options.spp
+                        );
+                    }
+                }
+            }
         }
         Ok(!last_frame)
     }
 
-    /// Applies changed settings, renders one frame of the scene at the view's size and scale,
-    /// and puts the image the display mode shows into the texture the central area draws.
+    /// Applies changed settings, renders one frame of the scene at the view's size and scale
+    /// (A and, in the split, B on the same G-buffer), and puts the images the display mode shows
+    /// into the textures the central area draws.
     fn render_scene(&mut self) {
         let gpu = &self.wgpu.gpu;
-        if self.view.settings != *self.renderer.settings()
-            && let Err(e) = self.renderer.set_settings(gpu, &self.view.settings)
+        if self.view.a.settings != *self.renderer.settings()
+            && let Err(e) = self.renderer.set_settings(gpu, &self.view.a.settings)
         {
             self.view.error = Some(format!("settings refused: {e}"));
-            self.view.settings = *self.renderer.settings();
+            self.view.a.settings = *self.renderer.settings();
         }
         let size = frame::internal_size(self.view.area, self.view.scale);
         self.view.render_size = size;
         self.renderer.debug_views = self.view.mode.debug_view().into_iter().collect();
+        // The frame after the last one rendered, while the motion plays (the panel names the
+        // frame on screen).
+        if self.frame_index > 0 && self.view.motion.advance() {
+            // From the loop's end back to its start: a cut.
+            self.renderer.reset_history();
+        }
+        let (camera, time) = self.view.shown();
         let started = Instant::now();
-        let result =
-            self.renderer
-                .render_at(gpu, &self.view.camera.camera(), size, self.frame_index, 0.0);
+        let result = match &mut self.view.split {
+            None => {
+                // The split off: B starts afresh when it comes back, without a stale history.
+                self.b_pipeline = None;
+                self.renderer
+                    .render_at(gpu, &camera, size, self.frame_index, time)
+                    .map(|frame| (frame, None))
+                    .map_err(|e| e.to_string())
+            }
+            Some(split) => match b_pipeline(&mut self.b_pipeline, gpu, &mut split.b) {
+                Ok(pipeline) => self
+                    .renderer
+                    .render_pair_at(gpu, &camera, size, self.frame_index, time, pipeline)
+                    .map(|(a, b)| (a, Some(b)))
+                    .map_err(|e| e.to_string()),
+                Err(e) => Err(e),
+            },
+        };
         self.frame_index += 1;
-        let frame = match result {
-            Ok(frame) => frame,
+        let (frame, b_frame) = match result {
+            Ok(frames) => frames,
             Err(e) => {
                 self.view.error = Some(format!("{} view: {e}", self.view.mode.name()));
                 return;
@@ -498,24 +655,66 @@ impl Running {
             None
         };
         self.view.timings.add(started.elapsed(), passes.as_deref());
-        let Some(rgba) = frame::image_of(&frame, self.view.mode) else {
-            self.view.error = Some(format!("no {} image this frame", self.view.mode.name()));
-            return;
-        };
         self.view.error = None;
-        let image = egui::ColorImage::from_rgba_unmultiplied(
-            [frame.size[0] as usize, frame.size[1] as usize],
-            &rgba,
-        );
-        match &mut self.texture {
-            Some(texture) => texture.set(image, egui::TextureOptions::LINEAR),
-            None => {
-                self.texture = Some(self.egui_state.egui_ctx().load_texture(
-                    "aokit scene",
-                    image,
-                    egui::TextureOptions::LINEAR,
-                ))
+        let names = ["aokit scene", "aokit scene B"];
+        // Of this frame's view only: the motion may have stepped since the trace.
+        let reference = (self.truth.as_ref())
+            .filter(|truth| truth.is_of((&camera, time), size))
+            .and_then(Truth::image);
+        for (i, frame) in [Some(&frame), b_frame.as_ref()].into_iter().enumerate() {
+            self.view.truth.rmse[i] = frame
+                .zip(reference)
+                .filter(|(frame, reference)| frame.size == reference.size)
+                .map(|(frame, reference)| crate::compare::surface_error(reference, &frame.ao).rmse);
+            let Some(frame) = frame else { continue };
+            let Some(rgba) = frame::image_of(frame, self.view.mode, reference) else {
+                self.view.error = Some(if self.view.mode.needs_reference() {
+                    format!(
+                        "no reference of this view yet for the {} mode: trace it (T)",
+                        self.view.mode.name()
+                    )
+                } else {
+                    format!("no {} image this frame", self.view.mode.name())
+                });
+                return;
+            };
+            let image = egui::ColorImage::from_rgba_unmultiplied(
+                [frame.size[0] as usize, frame.size[1] as usize],
+                &rgba,
+            );
+            match &mut self.textures[i] {
+                Some(texture) => texture.set(image, egui::TextureOptions::LINEAR),
+                None => {
+                    self.textures[i] = Some(self.egui_state.egui_ctx().load_texture(
+                        names[i],
+                        image,
+                        egui::TextureOptions::LINEAR,
+                    ))
+                }
             }
         }
     }
+}
+
+/// B's pipeline, made on first use and given B's settings when they changed; a refused change
+/// puts B's settings back to the ones it runs.
+fn b_pipeline<'a>(
+    pipeline: &'a mut Option<AoPipeline>,
+    gpu: &aokit::GpuContext,
+    b: &mut Config,
+) -> Result<&'a mut AoPipeline, String> {
+    let pipeline = match pipeline {
+        Some(pipeline) => pipeline,
+        None => pipeline.insert(
+            AoPipeline::new(&gpu.device, &gpu.queue, &b.settings)
+                .map_err(|e| format!("B's settings refused: {e}"))?,
+        ),
+    };
+    if b.settings != *pipeline.settings()
+        && let Err(e) = pipeline.set_settings(&gpu.device, &gpu.queue, &b.settings)
+    {
+        b.settings = *pipeline.settings();
+        return Err(format!("B's settings refused: {e}"));
+    }
+    Ok(pipeline)
 }

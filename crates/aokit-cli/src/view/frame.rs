@@ -5,6 +5,7 @@ use std::time::Duration;
 
 use aokit::PassTime;
 use aokit::debug::DebugView;
+use aokit_reference::ReferenceImage;
 use aokit_scene::Frame;
 
 /// What the central area shows.
@@ -16,13 +17,23 @@ pub enum DisplayMode {
     Ao,
     /// One of the pipeline's debug views.
     Debug(DebugView),
+    /// The CPU reference of the view, in grey as the AO.
+    Reference,
+    /// The signed error AO - reference, blue too dark to red too bright, as `aokit compare`
+    /// draws it.
+    Error,
 }
 
 impl DisplayMode {
     /// Every mode, in the order the panel and the `M` key step through them. The debug view
     /// `ao` is the `ao` mode (the pipeline's AO in grey), listed once.
     pub fn all() -> Vec<DisplayMode> {
-        let mut all = vec![DisplayMode::Lit, DisplayMode::Ao];
+        let mut all = vec![
+            DisplayMode::Lit,
+            DisplayMode::Ao,
+            DisplayMode::Reference,
+            DisplayMode::Error,
+        ];
         all.extend(
             DebugView::ALL
                 .iter()
@@ -38,6 +49,8 @@ impl DisplayMode {
         match self {
             DisplayMode::Lit => "lit",
             DisplayMode::Ao => "ao",
+            DisplayMode::Reference => "reference",
+            DisplayMode::Error => "error",
             DisplayMode::Debug(view) => view.name(),
         }
     }
@@ -56,6 +69,11 @@ impl DisplayMode {
             _ => None,
         }
     }
+
+    /// Whether the mode shows the reference, which must be traced first.
+    pub fn needs_reference(self) -> bool {
+        matches!(self, DisplayMode::Reference | DisplayMode::Error)
+    }
 }
 
 impl std::str::FromStr for DisplayMode {
@@ -72,11 +90,25 @@ impl std::str::FromStr for DisplayMode {
     }
 }
 
-/// The RGBA8 (sRGB) image `mode` shows of `frame`; `None` where the frame lacks that debug view.
-pub fn image_of(frame: &Frame, mode: DisplayMode) -> Option<Vec<u8>> {
+/// The RGBA8 (sRGB) image `mode` shows of `frame` with the view's `reference`; `None` where the
+/// frame lacks that debug view, or the mode needs a reference of the frame's size and there is
+/// none.
+pub fn image_of(
+    frame: &Frame,
+    mode: DisplayMode,
+    reference: Option<&ReferenceImage>,
+) -> Option<Vec<u8>> {
+    let reference = reference.filter(|r| r.size == frame.size);
     match mode {
         DisplayMode::Lit => Some(frame.lit.clone()),
         DisplayMode::Ao => Some(aokit_eval::grey_to_rgba(&frame.ao)),
+        DisplayMode::Reference => reference.map(|r| aokit_eval::grey_to_rgba(&r.ao)),
+        DisplayMode::Error => reference.map(|r| {
+            crate::compare::error_map(r, &frame.ao)
+                .chunks_exact(3)
+                .flat_map(|rgb| [rgb[0], rgb[1], rgb[2], 255])
+                .collect()
+        }),
         DisplayMode::Debug(view) => frame
             .debug
             .iter()
@@ -157,7 +189,7 @@ mod tests {
         }
         assert_eq!(mode, DisplayMode::Lit);
         // `ao` once: the mode, not also the debug view of the same name.
-        assert_eq!(DisplayMode::all().len(), 1 + DebugView::ALL.len());
+        assert_eq!(DisplayMode::all().len(), 3 + DebugView::ALL.len());
         let names: Vec<&str> = DisplayMode::all().iter().map(|m| m.name()).collect();
         assert_eq!(names.iter().filter(|&&n| n == "ao").count(), 1);
     }

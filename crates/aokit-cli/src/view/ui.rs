@@ -6,6 +6,7 @@ use aokit_scene::Camera;
 
 use super::camera::{CameraMode, ViewCamera};
 use super::frame::{DisplayMode, Timings};
+use super::motion::Motion;
 use super::panel::{self, PanelChange};
 
 /// Everything the panel shows and changes.
@@ -20,12 +21,10 @@ pub struct ViewState {
     pub scene_name: String,
     /// The scene's suggested AO radius: the presets' radius in the viewer.
     pub suggested_radius: Option<f32>,
-    /// The method of the preset "copy as flags" compares with.
-    pub method: Method,
-    /// The preset "copy as flags" compares with.
-    pub preset: Preset,
-    /// The settings the next frame renders with.
-    pub settings: AoSettings,
+    /// The configuration the next frame renders with (the left half in a split).
+    pub a: Config,
+    /// The A/B split, when on: the second configuration and where the halves meet.
+    pub split: Option<Split>,
     /// What the central area shows.
     pub mode: DisplayMode,
     /// Internal render scale.
@@ -49,10 +48,75 @@ pub struct ViewState {
     /// Whether the last frame showed the image before it rather than rendering the unchanged
     /// view again.
     pub idle: bool,
+    /// The moving parts and the camera path.
+    pub motion: Motion,
+    /// The reference of the view, as the panel shows it.
+    pub truth: TruthView,
     /// A passing message ("copied").
     pub message: Option<String>,
     /// What went wrong with the last frame or change.
     pub error: Option<String>,
+}
+
+/// One configuration of the AO: its settings and the preset they started from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Config {
+    /// The method of the preset "copy as flags" compares with.
+    pub method: Method,
+    /// The preset "copy as flags" compares with.
+    pub preset: Preset,
+    /// The settings the next frame renders with.
+    pub settings: AoSettings,
+}
+
+impl Config {
+    /// The method and preset, as the split's halves are labelled: `gtao / high`, with `*` once
+    /// a setting differs from the preset's.
+    pub fn label(&self, suggested_radius: Option<f32>) -> String {
+        let base = panel::base_settings(self.method, self.preset, suggested_radius);
+        let changed = if self.settings == base { "" } else { " *" };
+        format!(
+            "{} / {}{changed}",
+            self.settings.method.name(),
+            self.preset.name()
+        )
+    }
+}
+
+/// What the panel shows of the reference.
+#[derive(Default)]
+pub struct TruthView {
+    /// The fraction traced, while the trace runs.
+    pub progress: Option<f32>,
+    /// Whether a reference of the view is ready.
+    pub ready: bool,
+    /// What was traced: size, rays per pixel, radius.
+    pub note: Option<String>,
+    /// The RMSE of A's AO (and B's, in the split) against the reference, over its surfaces.
+    pub rmse: [Option<f64>; 2],
+}
+
+/// Two configurations side by side over the same G-buffer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Split {
+    /// The right half's configuration.
+    pub b: Config,
+    /// Where the halves meet, as a fraction of the view's width from its left edge.
+    pub divider: f32,
+}
+
+/// Colour of the line between the split's halves (the tests look for it in screenshots).
+pub const DIVIDER_COLOR: egui::Color32 = egui::Color32::from_rgb(255, 200, 0);
+
+impl ViewState {
+    /// The camera the frame shows (the user's, moved along the path) and the moving parts'
+    /// time.
+    pub fn shown(&self) -> (Camera, f32) {
+        (
+            self.motion.camera(&self.camera.camera()),
+            self.motion.time(),
+        )
+    }
 }
 
 /// What the panel asks the viewer to do beyond changing [`ViewState`].
@@ -66,6 +130,10 @@ pub enum Action {
     Bookmark(usize),
     /// Jump back to the starting camera.
     Reset,
+    /// Trace the reference of the view.
+    TraceReference,
+    /// Step the motion by this many frames (paused).
+    Step(i64),
 }
 
 /// Draws the window: the side panel (when shown) and the scene in the rest. Returns what the
@@ -73,13 +141,15 @@ pub enum Action {
 pub fn draw(
     ui: &mut egui::Ui,
     view: &mut ViewState,
-    texture: Option<&egui::TextureHandle>,
+    textures: [Option<&egui::TextureHandle>; 2],
 ) -> Vec<Action> {
     let mut actions = Vec::new();
     if view.panel {
+        // Wider with the split: a column of settings for each half.
+        let width = if view.split.is_some() { 620.0 } else { 330.0 };
         egui::Panel::left("aokit settings")
             .resizable(true)
-            .default_size(330.0)
+            .default_size(width)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| side_panel(ui, view, &mut actions));
             });
@@ -92,34 +162,96 @@ pub fn draw(
             (rect.height() * ppp).round().max(1.0) as u32,
         ];
         scene_input(ui, rect, view);
-        if let Some(texture) = texture {
-            ui.painter().image(
-                texture.id(),
-                rect,
-                egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
-                egui::Color32::WHITE,
-            );
+        match &mut view.split {
+            None => {
+                if let Some(texture) = textures[0] {
+                    draw_part(ui, texture, rect, 0.0..=1.0);
+                }
+            }
+            Some(split) => {
+                split_view(ui, rect, split, textures);
+                let labels = [
+                    view.a.label(view.suggested_radius),
+                    split.b.label(view.suggested_radius),
+                ];
+                for (label, align) in labels
+                    .into_iter()
+                    .zip([egui::Align2::LEFT_TOP, egui::Align2::RIGHT_TOP])
+                {
+                    let pos = align.pos_in_rect(&rect.shrink(6.0));
+                    badge(ui, label, pos, align);
+                }
+            }
         }
         if let Some(note) = &view.software_note {
             let pos = rect.left_bottom() + egui::vec2(6.0, -6.0);
-            let font = egui::FontId::proportional(13.0);
-            let galley = ui
-                .painter()
-                .layout_no_wrap(note.clone(), font, egui::Color32::WHITE);
-            let background = egui::Rect::from_min_size(
-                pos - egui::vec2(3.0, galley.size().y + 3.0),
-                galley.size() + egui::vec2(6.0, 6.0),
-            );
-            ui.painter()
-                .rect_filled(background, 3.0, egui::Color32::from_black_alpha(160));
-            ui.painter().galley(
-                pos - egui::vec2(0.0, galley.size().y),
-                galley,
-                egui::Color32::WHITE,
-            );
+            badge(ui, note.clone(), pos, egui::Align2::LEFT_BOTTOM);
         }
     });
     actions
+}
+
+/// The part `u` (a range of fractions of the width) of `texture`, drawn over the same part of
+/// `rect`.
+fn draw_part(
+    ui: &egui::Ui,
+    texture: &egui::TextureHandle,
+    rect: egui::Rect,
+    u: std::ops::RangeInclusive<f32>,
+) {
+    let x = |f: f32| rect.left() + f * rect.width();
+    ui.painter().image(
+        texture.id(),
+        egui::Rect::from_x_y_ranges(x(*u.start())..=x(*u.end()), rect.y_range()),
+        egui::Rect::from_min_max(egui::pos2(*u.start(), 0.0), egui::pos2(*u.end(), 1.0)),
+        egui::Color32::WHITE,
+    );
+}
+
+/// The split: A's image left of the divider, B's right of it, the divider's line, and the
+/// divider dragged with the primary button (the drag does not reach the camera).
+fn split_view(
+    ui: &mut egui::Ui,
+    rect: egui::Rect,
+    split: &mut Split,
+    textures: [Option<&egui::TextureHandle>; 2],
+) {
+    let x = rect.left() + split.divider * rect.width();
+    let handle = egui::Rect::from_x_y_ranges(x - 4.0..=x + 4.0, rect.y_range());
+    let response = ui
+        .interact(
+            handle,
+            egui::Id::unique("aokit split divider"),
+            egui::Sense::DRAG,
+        )
+        .on_hover_cursor(egui::CursorIcon::ResizeHorizontal);
+    if response.dragged()
+        && let Some(pointer) = response.interact_pointer_pos()
+    {
+        split.divider = ((pointer.x - rect.left()) / rect.width()).clamp(0.0, 1.0);
+    }
+    let [a, b] = textures;
+    if let Some(a) = a {
+        draw_part(ui, a, rect, 0.0..=split.divider);
+    }
+    if let Some(b) = b {
+        draw_part(ui, b, rect, split.divider..=1.0);
+    }
+    let x = rect.left() + split.divider * rect.width();
+    ui.painter()
+        .vline(x, rect.y_range(), egui::Stroke::new(2.0, DIVIDER_COLOR));
+}
+
+/// `text` in white on a dark box, placed by `align` at `pos`.
+fn badge(ui: &egui::Ui, text: String, pos: egui::Pos2, align: egui::Align2) {
+    let font = egui::FontId::proportional(13.0);
+    let galley = ui
+        .painter()
+        .layout_no_wrap(text, font, egui::Color32::WHITE);
+    let rect = align.anchor_size(pos, galley.size());
+    ui.painter()
+        .rect_filled(rect.expand(3.0), 3.0, egui::Color32::from_black_alpha(160));
+    ui.painter().galley(rect.min, galley, egui::Color32::WHITE);
 }
 
 /// Mouse input over the scene: a drag turns the camera (the right button in fly mode, either in
@@ -224,11 +356,58 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
             "off: the scene is rendered while the view changes and for a few frames after \
              (the temporal filter settles), then the last image stays",
         );
+    let mut split = view.split.is_some();
+    ui.checkbox(&mut split, "A/B split (B)")
+        .on_hover_text("two configurations side by side on the same G-buffer, each with its own settings below; drag the divider");
+    if split != view.split.is_some() {
+        view.split = split.then(|| Split {
+            b: view.a.clone(),
+            divider: 0.5,
+        });
+    }
+
     timings(ui, view);
+    motion_ui(ui, &mut view.motion, actions);
+    truth_ui(ui, view, actions);
 
     ui.separator();
+    let radius = view.suggested_radius;
+    match &mut view.split {
+        None => config_ui(ui, None, &mut view.a, radius, actions, &mut view.error),
+        Some(split) => {
+            ui.columns(2, |columns| {
+                columns[0].push_id("A", |ui| {
+                    ui.heading("A (left)");
+                    config_ui(ui, Some("A"), &mut view.a, radius, actions, &mut view.error);
+                });
+                columns[1].push_id("B", |ui| {
+                    ui.heading("B (right)");
+                    config_ui(
+                        ui,
+                        Some("B"),
+                        &mut split.b,
+                        radius,
+                        actions,
+                        &mut view.error,
+                    );
+                });
+            });
+        }
+    }
+}
+
+/// The method, preset and settings of one configuration; `name` ("A", "B" in the split)
+/// prefixes its errors.
+fn config_ui(
+    ui: &mut egui::Ui,
+    name: Option<&str>,
+    config: &mut Config,
+    suggested_radius: Option<f32>,
+    actions: &mut Vec<Action>,
+    error: &mut Option<String>,
+) {
     ui.strong("Method and preset");
-    let (mut method, mut preset) = (view.method, view.preset);
+    let (mut method, mut preset) = (config.method, config.preset);
     egui::ComboBox::new("method", "method")
         .selected_text(method.name())
         .show_ui(ui, |ui| {
@@ -243,22 +422,22 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
                 ui.selectable_value(&mut preset, p, p.name());
             }
         });
-    if (method, preset) != (view.method, view.preset) {
+    if (method, preset) != (config.method, config.preset) {
         // A new starting point: the preset's settings, as the flags would give them.
-        view.method = method;
-        view.preset = preset;
-        view.settings = panel::base_settings(method, preset, view.suggested_radius);
+        config.method = method;
+        config.preset = preset;
+        config.settings = panel::base_settings(method, preset, suggested_radius);
     }
-    let base = panel::base_settings(view.method, view.preset, view.suggested_radius);
-    ui.horizontal(|ui| {
+    let base = panel::base_settings(config.method, config.preset, suggested_radius);
+    ui.horizontal_wrapped(|ui| {
         if ui
             .button("copy as flags")
             .on_hover_text("--method, --preset and --set for each value the preset lacks")
             .clicked()
         {
             actions.push(Action::Copy(panel::flags(
-                &view.settings,
-                view.preset,
+                &config.settings,
+                config.preset,
                 &base,
             )));
         }
@@ -267,14 +446,14 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
             .on_hover_text("every setting, as a --settings file")
             .clicked()
         {
-            actions.push(Action::Copy(panel::toml_text(&view.settings)));
+            actions.push(Action::Copy(panel::toml_text(&config.settings)));
         }
         if ui
             .button("revert")
             .on_hover_text("the preset's values")
             .clicked()
         {
-            view.settings = base;
+            config.settings = base;
         }
     });
 
@@ -286,16 +465,94 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
             .default_open(group == "general")
             .show(ui, |ui| {
                 for spec in specs {
-                    panel::setting_ui(ui, spec, &mut view.settings, &mut change);
+                    panel::setting_ui(ui, spec, &mut config.settings, &mut change);
                 }
             });
     }
     if change.settings {
-        view.method = view.settings.method;
-        view.error = None;
+        config.method = config.settings.method;
+        *error = None;
     }
     if let Some(refused) = change.refused {
-        view.error = Some(refused);
+        *error = Some(match name {
+            Some(name) => format!("{name}: {refused}"),
+            None => refused,
+        });
+    }
+}
+
+/// The motion: moving parts, camera path, play and pause, step, the frame of the loop.
+fn motion_ui(ui: &mut egui::Ui, motion: &mut Motion, actions: &mut Vec<Action>) {
+    ui.separator();
+    ui.strong("Motion");
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut motion.animate, "moving parts")
+            .on_hover_text("the scene's moving parts over the loop (--animate)");
+        egui::ComboBox::new("camera path", "camera path")
+            .selected_text(motion.path.name())
+            .show_ui(ui, |ui| {
+                for path in aokit_scene::CameraPath::ALL {
+                    ui.selectable_value(&mut motion.path, path, path.name());
+                }
+            });
+    });
+    ui.horizontal(|ui| {
+        let play = if motion.playing { "pause" } else { "play" };
+        if ui.button(play).on_hover_text("Space").clicked() {
+            motion.playing = !motion.playing;
+        }
+        if ui.button("<").on_hover_text("a frame back (,)").clicked() {
+            actions.push(Action::Step(-1));
+        }
+        if ui.button(">").on_hover_text("a frame on (.)").clicked() {
+            actions.push(Action::Step(1));
+        }
+        ui.label(format!(
+            "frame {}/{} (t = {:.3})",
+            motion.frame,
+            motion.loop_frames - 1,
+            motion.t()
+        ));
+    });
+}
+
+/// The reference: the button that traces it, the trace's progress, and the RMSE of each
+/// configuration against it.
+fn truth_ui(ui: &mut egui::Ui, view: &ViewState, actions: &mut Vec<Action>) {
+    ui.separator();
+    ui.strong("Against the reference");
+    let truth = &view.truth;
+    if ui
+        .button("trace reference (T)")
+        .on_hover_text(
+            "ray-trace the view on the CPU; the modes `reference` and `error` show it, and it \
+             stays until the camera moves",
+        )
+        .clicked()
+    {
+        actions.push(Action::TraceReference);
+    }
+    if let Some(progress) = truth.progress {
+        ui.add(
+            egui::ProgressBar::new(progress)
+                .show_percentage()
+                .text("tracing"),
+        );
+    }
+    if let Some(note) = &truth.note {
+        ui.label(note);
+    }
+    let labels = match &view.split {
+        None => vec![String::new()],
+        Some(split) => vec![
+            format!(" A ({})", view.a.label(view.suggested_radius)),
+            format!(" B ({})", split.b.label(view.suggested_radius)),
+        ],
+    };
+    for (label, rmse) in labels.iter().zip(truth.rmse) {
+        if let Some(rmse) = rmse {
+            ui.monospace(format!("RMSE{label}: {rmse:.5}"));
+        }
     }
 }
 

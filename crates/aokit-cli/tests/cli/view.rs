@@ -140,6 +140,36 @@ fn bad_flags_are_refused_before_any_window_opens() {
     assert!(err.contains("unknown display mode"), "{err}");
     let err = failure(&crate::common::aokit(dir.path(), &["view", "--scale", "7"]));
     assert!(err.contains("outside"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--b-method", "hbao"],
+    ));
+    assert!(err.contains("--split"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--split", "--divider", "1.5"],
+    ));
+    assert!(err.contains("outside"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--split", "--b-set", "gtao.slice_count=0"],
+    ));
+    assert!(err.contains("B's settings"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--split", "--b-set", "normals.encoding=rgba16f"],
+    ));
+    assert!(err.contains("differs from A's `oct32`"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--animate", "--reference"],
+    ));
+    assert!(err.contains("add --paused"), "{err}");
+    let err = failure(&crate::common::aokit(
+        dir.path(),
+        &["view", "--loop-frames", "1"],
+    ));
+    assert!(err.contains("--loop-frames"), "{err}");
     // Without a display, the error says how to get one.
     let out = output(
         command(dir.path(), &["view", "--frames", "1"])
@@ -300,4 +330,198 @@ fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
     // A drag to the right turns right: the target moves to +X, the eye stays.
     assert_eq!(poses[2][..3], poses[1][..3], "{printed}");
     assert!(poses[2][3] > 0.5, "{printed}");
+}
+
+/// The mean absolute difference of the RGB channels of `a` and `b` over the box with corners
+/// (`x0`, `y0`) and (`x1`, `y1`), as fractions of the images' size.
+fn mean_difference(a: &image::RgbaImage, b: &image::RgbaImage, [x0, y0, x1, y1]: [f32; 4]) -> f32 {
+    let (w, h) = a.dimensions();
+    assert_eq!(b.dimensions(), (w, h));
+    let (mut sum, mut count) = (0.0, 0.0);
+    for y in (y0 * h as f32) as u32..(y1 * h as f32) as u32 {
+        for x in (x0 * w as f32) as u32..(x1 * w as f32) as u32 {
+            let (p, q) = (a.get_pixel(x, y), b.get_pixel(x, y));
+            for c in 0..3 {
+                sum += (f32::from(p[c]) - f32::from(q[c])).abs();
+                count += 1.0;
+            }
+        }
+    }
+    sum / count
+}
+
+/// `--split`: GTAO left of a divider at 30% of the view, HBAO right of it. Each half is that
+/// method's image as the viewer shows it alone, the two methods differ there, and the divider's
+/// line is where asked.
+#[test]
+fn the_split_shows_a_left_of_the_divider_and_b_right_of_it() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let view = [
+        "view",
+        "--mode",
+        "ao",
+        "--no-panel",
+        "--window-size",
+        "320x180",
+    ];
+    let shoot = |file: &str, args: &[&str]| {
+        let mut all = view.to_vec();
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--screenshot", file]);
+        ok(&aokit_in_xvfb(dir.path(), &all));
+        image::open(dir.path().join(file)).unwrap().to_rgba8()
+    };
+    let split = shoot(
+        "split.png",
+        &[
+            "--method",
+            "gtao",
+            "--split",
+            "--b-method",
+            "hbao",
+            "--divider",
+            "0.3",
+        ],
+    );
+    let gtao = shoot("gtao.png", &["--method", "gtao"]);
+    let hbao = shoot("hbao.png", &["--method", "hbao"]);
+    // Below the labels, above the software-adapter note.
+    let (left, right) = ([0.02, 0.25, 0.27, 0.8], [0.35, 0.25, 0.98, 0.8]);
+    assert!(mean_difference(&split, &gtao, left) < 1.0);
+    assert!(mean_difference(&split, &hbao, right) < 1.0);
+    let methods_left = mean_difference(&gtao, &hbao, left);
+    let methods_right = mean_difference(&gtao, &hbao, right);
+    assert!(
+        methods_left > 1.0 && methods_right > 1.0,
+        "{methods_left} {methods_right}"
+    );
+    // The divider's yellow line, across the middle row.
+    let row = split.height() / 2;
+    let line: Vec<u32> = (0..split.width())
+        .filter(|&x| {
+            let p = split.get_pixel(x, row);
+            p[0] > 200 && p[1] > 150 && p[2] < 80
+        })
+        .collect();
+    assert!(!line.is_empty(), "no divider line");
+    for x in line {
+        assert!((94..=97).contains(&x), "divider at x = {x}, not 96");
+    }
+}
+
+/// `--reference` in the split, in the `error` mode: the viewer traces the view's reference
+/// (small, few rays), waits for it, and its error image and printed RMSE for each half are what
+/// `aokit compare` draws and computes for the same view, methods and rays per pixel.
+#[test]
+fn the_reference_error_and_rmse_match_aokit_compare() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    #[rustfmt::skip]
+    let out = aokit_in_xvfb(dir.path(), &[
+        "view", "--scene", "room", "--mode", "error", "--no-panel", "--window-size", "320x180",
+        "--scale", "0.5", "--method", "gtao", "--split", "--b-method", "hbao", "--reference",
+        "--reference-spp", "16", "--screenshot", "error.png",
+    ]);
+    let stdout = ok(&out);
+    let rmse = |side: &str| -> f64 {
+        let line = stdout
+            .lines()
+            .find(|line| line.starts_with(&format!("rmse {side} ")))
+            .unwrap_or_else(|| panic!("no RMSE of {side}: {stdout}"));
+        assert!(line.ends_with("160x90, 16 rays per pixel)"), "{line}");
+        line.split(' ').nth(2).unwrap().parse().unwrap()
+    };
+    #[rustfmt::skip]
+    ok(&crate::common::aokit(dir.path(), &[
+        "compare", "--scene", "room", "--size", "160x90", "--method", "gtao,hbao", "--preset",
+        "high", "--spp", "16", "--timing-frames", "0", "--cache", "cache", "--out", "compare",
+    ]));
+    let metrics: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.path().join("compare/metrics.json")).unwrap(),
+    )
+    .unwrap();
+    let shot = image::open(dir.path().join("error.png"))
+        .unwrap()
+        .to_rgba8();
+    for (i, (side, method)) in [("A", "gtao"), ("B", "hbao")].into_iter().enumerate() {
+        let result = &metrics["results"][i];
+        assert_eq!(result["method"], method);
+        let expected = result["all"]["rmse"].as_f64().unwrap();
+        // The viewer's AO is of a later frame (frame index 5, not 0): close, not equal.
+        let got = rmse(side);
+        assert!((got - expected).abs() < 2e-3, "{side}: {got} vs {expected}");
+        let map = image::open(
+            dir.path()
+                .join(format!("compare/images/room-front-{method}-high-error.png")),
+        )
+        .unwrap()
+        .to_rgba8();
+        // The screenshot shows the 160x90 map stretched to 320x180: its 2x2 means against the
+        // map, in the half that shows this side, below the labels and above the note.
+        let columns = if i == 0 { 4..76 } else { 84..156 };
+        let (mut sum, mut count) = (0.0, 0.0);
+        for y in 14..70 {
+            for x in columns.clone() {
+                for c in 0..3 {
+                    let shown: f32 = [(0, 0), (1, 0), (0, 1), (1, 1)]
+                        .iter()
+                        .map(|(dx, dy)| f32::from(shot.get_pixel(2 * x + dx, 2 * y + dy)[c]))
+                        .sum::<f32>()
+                        / 4.0;
+                    sum += (shown - f32::from(map.get_pixel(x, y)[c])).abs();
+                    count += 1.0;
+                }
+            }
+        }
+        // Bilinear stretching blurs the noisy map: about 9 here; another image gives 50.
+        let difference = sum / count;
+        assert!(difference < 15.0, "{side}: {difference}");
+    }
+}
+
+/// `--animate --path orbit`: the fourth frame of an eight-frame loop is the fourth frame of
+/// `aokit render --frames 8 --path orbit --animate` (the sphere rolled, the camera turned), not
+/// its neighbours.
+#[test]
+fn the_motion_plays_the_frames_aokit_render_renders() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    #[rustfmt::skip]
+    let out = aokit_in_xvfb(dir.path(), &[
+        "view", "--scene", "room", "--mode", "ao", "--no-panel", "--window-size", "192x108",
+        "--scale", "1", "--animate", "--path", "orbit", "--loop-frames", "8", "--frames", "4",
+        "--screenshot", "motion.png",
+    ]);
+    ok(&out);
+    #[rustfmt::skip]
+    ok(&crate::common::aokit(dir.path(), &[
+        "render", "--scene", "room", "--size", "192x108", "--frames", "8", "--path", "orbit",
+        "--animate", "--out", "render",
+    ]));
+    let shot = image::open(dir.path().join("motion.png"))
+        .unwrap()
+        .to_rgba8();
+    let frame = |i: u32| {
+        image::open(dir.path().join(format!("render/frames/ao-{i:03}.png")))
+            .unwrap()
+            .to_rgba8()
+    };
+    // Above the software-adapter note.
+    let region = [0.0, 0.1, 1.0, 0.78];
+    let same = mean_difference(&shot, &frame(3), region);
+    assert!(same < 4.0, "frame 3: {same}");
+    for other in [2, 4] {
+        let differs = mean_difference(&shot, &frame(other), region);
+        assert!(
+            differs > 2.0 * same + 4.0,
+            "frame {other}: {differs} vs {same}"
+        );
+    }
 }

@@ -475,3 +475,30 @@ fn pass_times_are_reported_when_the_adapter_has_timestamps() {
         }
     }
 }
+
+/// `render_pair_at`: the first frame is the renderer's own, the second what a renderer with the
+/// second pipeline's settings renders of the same view, from the same G-buffer.
+#[test]
+fn a_pair_renders_each_pipeline_on_one_gbuffer() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let camera = &scene.cameras[0];
+    let gtao = settings_for(&scene);
+    let hbao = common::scene_settings(&scene, aokit::Method::Hbao, Preset::Medium);
+    let alone = |settings: &AoSettings| {
+        let mut renderer = Renderer::new(&gpu, &scene, settings).unwrap();
+        renderer.render(&gpu, camera, SIZE, 0).unwrap()
+    };
+    let mut renderer = Renderer::new(&gpu, &scene, &gtao).unwrap();
+    let mut second = aokit::AoPipeline::new(&gpu.device, &gpu.queue, &hbao).unwrap();
+    let (first, other) = renderer
+        .render_pair_at(&gpu, camera, SIZE, 0, 0.0, &mut second)
+        .unwrap();
+    let (gtao_alone, hbao_alone) = (alone(&gtao), alone(&hbao));
+    assert_eq!(first.ao, gtao_alone.ao);
+    assert_eq!(first.lit, gtao_alone.lit);
+    assert_eq!(other.ao, hbao_alone.ao);
+    assert_eq!(other.lit, hbao_alone.lit);
+    assert_eq!(other.linear_depth, first.linear_depth);
+    assert!(mean_abs_difference(&first.ao, &other.ao) > 1e-3);
+}
