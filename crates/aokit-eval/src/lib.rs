@@ -40,6 +40,7 @@ mod npy;
 mod pfm;
 mod png_io;
 pub mod report;
+pub mod spectrum;
 mod ssim;
 
 pub use colormap::{error_map_rgb, legend_rgb};

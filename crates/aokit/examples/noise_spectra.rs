@@ -7,8 +7,9 @@
 
 use std::path::{Path, PathBuf};
 
-use aokit::noise::{self, pixel_noise, power_spectrum, radial_average};
+use aokit::noise::{self, pixel_noise};
 use aokit::{NoiseKind, NoiseSettings};
+use aokit_eval::spectrum::{power_spectrum, radial_average};
 
 /// Side of the tiles analysed: the default blue-noise tile, and a multiple of every other
 /// kind's period.
