@@ -7,15 +7,25 @@
 // docs/composite.md has the details.
 // Mirrors `CompositeUniforms`.
 
-// Values of `CompositeUniforms.multi_bounce`, as `MultiBounce::code` writes them.
+// Values of `MULTI_BOUNCE`, as `MultiBounce::code` writes them.
 const MB_NONE: u32 = 0u;
 const MB_GTAO: u32 = 1u;
 const MB_CLOSED_FORM: u32 = 2u;
 
-// Values of `CompositeUniforms.specular_occlusion`, as `SpecularOcclusion::code` writes them.
+// Values of `SPECULAR_OCCLUSION`, as `SpecularOcclusion::code` writes them.
 const SO_NONE: u32 = 0u;
 const SO_GTSO: u32 = 1u;
 const SO_FROSTBITE: u32 = 2u;
+
+// The lighting modes are pipeline constants, one pipeline per combination, not uniforms:
+// Mesa's lavapipe (22.3) inlines uniform values that alone decide a branch and recompiles the
+// shader at every dispatch, keeping each compile (0.5 MB a frame, `CompositePass`).
+// One of the MB_* constants.
+override MULTI_BOUNCE: u32 = MB_GTAO;
+// One of the SO_* constants.
+override SPECULAR_OCCLUSION: u32 = SO_FROSTBITE;
+// 1 when `bent_normals` holds the AO pipeline's bent normals; 0 when it only fills the slot.
+override HAS_BENT_NORMALS: u32 = 0u;
 
 struct CompositeUniforms {
     // NDC (x, y, depth, 1) to homogeneous view position: the inverse projection.
@@ -37,12 +47,6 @@ struct CompositeUniforms {
     orthographic: f32,
     // Perceptual roughness of every surface.
     roughness: f32,
-    // One of the MB_* constants.
-    multi_bounce: u32,
-    // One of the SO_* constants.
-    specular_occlusion: u32,
-    // 1 when `bent_normals` holds the AO pipeline's bent normals; 0 when it only fills the slot.
-    has_bent_normals: u32,
 }
 
 @group(0) @binding(0) var<uniform> light: CompositeUniforms;
@@ -115,7 +119,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         let fresnel = ambient_fresnel(n_dot_v);
 
         var diffuse_occlusion: vec3<f32>;
-        switch light.multi_bounce {
+        switch MULTI_BOUNCE {
             case MB_GTAO: {
                 diffuse_occlusion = multi_bounce_gtao(occlusion, base);
             }
@@ -127,12 +131,12 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
             }
         }
         var specular_occlusion: f32;
-        switch light.specular_occlusion {
+        switch SPECULAR_OCCLUSION {
             case SO_GTSO: {
                 // Without the pipeline's bent normals the G-buffer normal stands in: the cone
                 // sizes still follow the AO, the direction of the openings is lost.
                 var bent = n;
-                if light.has_bent_normals != 0u {
+                if HAS_BENT_NORMALS != 0u {
                     bent = textureLoad(bent_normals, id.xy, 0).xyz;
                 }
                 let r = reflect(-v, n);

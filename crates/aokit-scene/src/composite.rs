@@ -1,6 +1,8 @@
 //! The lit composite: ambient diffuse and specular light occluded by the AO pipeline's outputs,
 //! plus shadowed sunlight. docs/composite.md has the formula.
 
+use std::collections::HashMap;
+
 use aokit::gpu::create_uniform_buffer;
 use aokit::passes::{ComputeKernel, bind};
 use aokit::{AoOutputs, Projection};
@@ -109,7 +111,7 @@ impl MultiBounce {
         }
     }
 
-    /// The form's code in `CompositeUniforms.multi_bounce` (the `MB_*` constants of
+    /// The form's code in the `MULTI_BOUNCE` pipeline constant (the `MB_*` constants of
     /// `shaders/composite.wgsl`).
     fn code(self) -> u32 {
         match self {
@@ -185,7 +187,7 @@ impl SpecularOcclusion {
         }
     }
 
-    /// The mode's code in `CompositeUniforms.specular_occlusion` (the `SO_*` constants of
+    /// The mode's code in the `SPECULAR_OCCLUSION` pipeline constant (the `SO_*` constants of
     /// `shaders/composite.wgsl`).
     fn code(self) -> u32 {
         match self {
@@ -247,10 +249,6 @@ struct CompositeUniforms {
     shadow_normal_offset: f32,
     orthographic: f32,
     roughness: f32,
-    multi_bounce: u32,
-    specular_occlusion: u32,
-    has_bent_normals: u32,
-    _pad: u32,
 }
 
 /// Where and how the frame was seen, for the composite. See [`CompositePass::encode`] for a
@@ -291,23 +289,28 @@ pub struct CompositeView<'a> {
 /// # }
 /// ```
 pub struct CompositePass {
-    kernel: ComputeKernel,
+    /// One pipeline per combination of lighting modes used so far, compiled on first use (see
+    /// [`KernelKey`]).
+    kernels: HashMap<KernelKey, ComputeKernel>,
     uniforms: wgpu::Buffer,
     shadow_sampler: wgpu::Sampler,
 }
 
-impl CompositePass {
-    /// Compiles the pass.
-    ///
-    /// ```no_run
-    /// let gpu = aokit::GpuContext::headless()?;
-    /// // Compiled once; each frame only records it.
-    /// let composite = aokit_scene::composite::CompositePass::new(&gpu.device);
-    /// # Ok::<(), aokit::GpuError>(())
-    /// ```
-    pub fn new(device: &wgpu::Device) -> Self {
+/// The composite's pipeline constants: multi-bounce form, specular occlusion mode and whether
+/// bent normals are bound. Constants rather than uniforms because Mesa's lavapipe (22.3)
+/// recompiles, at every dispatch, a shader whose branches depend on uniform values alone, and
+/// keeps every compile: `aokit render --frames 400` grew by 0.5 MB a frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct KernelKey {
+    multi_bounce: MultiBounce,
+    specular_occlusion: SpecularOcclusion,
+    has_bent_normals: bool,
+}
+
+impl KernelKey {
+    fn compile(self, device: &wgpu::Device) -> ComputeKernel {
         let float = wgpu::TextureSampleType::Float { filterable: false };
-        let kernel = ComputeKernel::new(
+        ComputeKernel::with_constants(
             device,
             &shaders::COMPOSITE,
             &[
@@ -321,7 +324,40 @@ impl CompositePass {
                 bind::storage_texture(7, LIT_FORMAT),
                 bind::texture(8, float),
             ],
-        );
+            &[
+                ("MULTI_BOUNCE", f64::from(self.multi_bounce.code())),
+                (
+                    "SPECULAR_OCCLUSION",
+                    f64::from(self.specular_occlusion.code()),
+                ),
+                (
+                    "HAS_BENT_NORMALS",
+                    f64::from(u32::from(self.has_bent_normals)),
+                ),
+            ],
+        )
+    }
+}
+
+impl CompositePass {
+    /// Compiles the pass.
+    ///
+    /// ```no_run
+    /// let gpu = aokit::GpuContext::headless()?;
+    /// // Compiled once (other lighting modes at their first frame); each frame records it.
+    /// let composite = aokit_scene::composite::CompositePass::new(&gpu.device);
+    /// # Ok::<(), aokit::GpuError>(())
+    /// ```
+    pub fn new(device: &wgpu::Device) -> Self {
+        // The default lighting's pipeline is compiled now; another combination of modes
+        // compiles at the first frame that asks for it.
+        let lighting = Lighting::default();
+        let key = KernelKey {
+            multi_bounce: lighting.multi_bounce,
+            specular_occlusion: lighting.specular_occlusion,
+            has_bent_normals: false,
+        };
+        let kernels = HashMap::from([(key, key.compile(device))]);
         let shadow_sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("shadow comparison"),
             mag_filter: wgpu::FilterMode::Linear,
@@ -331,7 +367,7 @@ impl CompositePass {
         });
         let uniforms = create_uniform_buffer::<CompositeUniforms>(device, "composite uniforms");
         Self {
-            kernel,
+            kernels,
             uniforms,
             shadow_sampler,
         }
@@ -357,7 +393,7 @@ impl CompositePass {
     /// let lighting = Lighting::default();
     /// let mesh = GpuMesh::new(device, &scene.mesh, &scene.moving_parts);
     /// let (mut gbuffer_pass, shadow_pass) = (GBufferPass::new(device), ShadowPass::new(device));
-    /// let composite = CompositePass::new(device);
+    /// let mut composite = CompositePass::new(device);
     /// let mut ao = AoPipeline::new(device, queue, &settings)?;
     ///
     /// let projection = camera.projection(size[0] as f32 / size[1] as f32, &scene.bounds);
@@ -387,7 +423,7 @@ impl CompositePass {
     /// ```
     #[allow(clippy::too_many_arguments)]
     pub fn encode(
-        &self,
+        &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
@@ -424,10 +460,6 @@ impl CompositePass {
                 0.0
             },
             roughness: lighting.roughness,
-            multi_bounce: lighting.multi_bounce.code(),
-            specular_occlusion: lighting.specular_occlusion.code(),
-            has_bent_normals: ao.bent_normals_view.is_some().into(),
-            _pad: 0,
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
         let color = |t: &wgpu::Texture| t.create_view(&Default::default());
@@ -444,9 +476,18 @@ impl CompositePass {
             color(output),
         );
         // Without bent normals the AO fills their slot, which takes any unfilterable float
-        // texture; `has_bent_normals` = 0 tells the shader not to read it.
+        // texture; `HAS_BENT_NORMALS` = 0 tells the shader not to read it.
         let bent_normals = ao.bent_normals_view.unwrap_or(ao.ao_view);
-        self.kernel.dispatch(
+        let key = KernelKey {
+            multi_bounce: lighting.multi_bounce,
+            specular_occlusion: lighting.specular_occlusion,
+            has_bent_normals: ao.bent_normals_view.is_some(),
+        };
+        let kernel = self
+            .kernels
+            .entry(key)
+            .or_insert_with(|| key.compile(device));
+        kernel.dispatch(
             device,
             encoder,
             &[
@@ -484,9 +525,6 @@ mod tests {
             shadow_normal_offset,
             orthographic,
             roughness,
-            multi_bounce,
-            specular_occlusion,
-            has_bent_normals,
         });
         aokit::shader::check_layout(
             &shaders::COMPOSITE,
@@ -521,7 +559,8 @@ mod tests {
         );
     }
 
-    /// Checks that composite.wgsl's `u32` constants hold the codes Rust writes.
+    /// Checks that composite.wgsl's `u32` constants hold the codes Rust sets its pipeline
+    /// constants to.
     fn assert_codes_match_wgsl(codes: &[(u32, &str)]) {
         use wgpu::naga;
         let module = shaders::COMPOSITE.validate().unwrap();

@@ -24,6 +24,7 @@ mod resolution;
 mod robustness;
 mod sao;
 mod separable_hbao;
+mod soak;
 mod spatial_filter;
 mod temporal;
 mod ue4_ssao;
