@@ -184,9 +184,8 @@ struct Running {
 
 /// Frames rendered after the view last changed before the viewer stops rendering the scene
 /// (the window keeps redrawing the panel): enough for the temporal filter's history to settle.
-/// Rendering the same view again gives the same image, and costs memory on lavapipe: Mesa
-/// 22.3's lavapipe grows the process by about half a megabyte with each frame of the scene
-/// renderer's composite pass (docs/viewer.md).
+/// Rendering the same view again gives the same image, so an idle window spends no GPU (or,
+/// on a software adapter, CPU) time.
 pub const SETTLE_FRAMES: u32 = 32;
 
 /// Everything the rendered images depend on, as text: camera, settings (B's too in the split),
