@@ -581,30 +581,21 @@ impl Renderer {
             back_depth: gbuffer.back_depth.as_ref(),
             ..AoInputs::new(&gbuffer.depth, projection)
         };
-        let composite_view = CompositeView {
-            projection: &projection,
-            view_from_world,
-            sun: &sun,
-        };
-        let lit = create_texture_2d(
-            device,
-            "lit",
+        let shading = Shading {
+            gpu,
             size,
-            LIT_FORMAT,
-            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
-        );
-        let outputs = self.ao.encode(device, queue, &mut encoder, &inputs)?;
-        self.composite.encode(
-            device,
-            queue,
-            &mut encoder,
-            &self.lighting,
-            &composite_view,
-            &gbuffer,
-            &outputs,
-            &self.shadow_pass.map,
-            &lit,
-        );
+            inputs: &inputs,
+            gbuffer: &gbuffer,
+            lighting: &self.lighting,
+            view: CompositeView {
+                projection: &projection,
+                view_from_world,
+                sun: &sun,
+            },
+            shadow_map: &self.shadow_pass.map,
+        };
+        let (outputs, lit) =
+            shading.encode(&mut encoder, &mut self.ao, &mut self.composite, "lit")?;
         queue.submit([encoder.finish()]);
         self.previous = Some((clip_from_world, time));
 
@@ -664,26 +655,9 @@ impl Renderer {
         // A submission of its own: the composite's uniforms (whether there are bent normals)
         // may differ from the first side's.
         let mut encoder = device.create_command_encoder(&Default::default());
-        let second_lit = create_texture_2d(
-            device,
-            "lit (second)",
-            size,
-            LIT_FORMAT,
-            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
-        );
         let second_bent_normals = second.settings().bent_normals;
-        let outputs = second.encode(device, queue, &mut encoder, &inputs)?;
-        self.composite.encode(
-            device,
-            queue,
-            &mut encoder,
-            &self.lighting,
-            &composite_view,
-            &gbuffer,
-            &outputs,
-            &self.shadow_pass.map,
-            &second_lit,
-        );
+        let (outputs, second_lit) =
+            shading.encode(&mut encoder, second, &mut self.composite, "lit (second)")?;
         queue.submit([encoder.finish()]);
         let side = sides.read(&outputs, &second_lit, second_bent_normals)?;
         let second_frame = side.into_frame(frame.clone());
@@ -711,6 +685,55 @@ impl Side {
             debug: self.debug,
             ..frame
         }
+    }
+}
+
+/// What one AO pipeline's side of a frame is drawn from: the frame's G-buffer, inputs, lights
+/// and shadow map, shared by both sides of a split.
+struct Shading<'a> {
+    gpu: &'a GpuContext,
+    size: [u32; 2],
+    inputs: &'a AoInputs<'a>,
+    gbuffer: &'a GBuffer,
+    lighting: &'a Lighting,
+    view: CompositeView<'a>,
+    shadow_map: &'a wgpu::Texture,
+}
+
+impl<'a> Shading<'a> {
+    /// Records `ao`'s passes and the lit composite of their AO into a new texture named
+    /// `label`.
+    fn encode<'p>(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        ao: &'p mut AoPipeline,
+        composite: &mut CompositePass,
+        label: &str,
+    ) -> Result<(aokit::AoOutputs<'p>, wgpu::Texture), RenderError>
+    where
+        'a: 'p,
+    {
+        let (device, queue) = (&self.gpu.device, &self.gpu.queue);
+        let lit = create_texture_2d(
+            device,
+            label,
+            self.size,
+            LIT_FORMAT,
+            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+        );
+        let outputs = ao.encode(device, queue, encoder, self.inputs)?;
+        composite.encode(
+            device,
+            queue,
+            encoder,
+            self.lighting,
+            &self.view,
+            self.gbuffer,
+            &outputs,
+            self.shadow_map,
+            &lit,
+        );
+        Ok((outputs, lit))
     }
 }
 
