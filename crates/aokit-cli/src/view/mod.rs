@@ -101,7 +101,7 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         eprintln!("note: {}: {note}", scene.name);
     }
     let camera = args.camera.resolve(&scene)?;
-    let settings = args.settings.resolve(scene.suggested_radius)?;
+    let settings = args.settings.resolve_for_sequence(scene.suggested_radius)?;
     if args.panel_layout {
         out!("{}", panel::layout(&settings));
         return Ok(());
