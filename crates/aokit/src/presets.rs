@@ -79,7 +79,7 @@ pub(crate) fn preset_values(method: Method, preset: Preset) -> Tuned {
         (Method::HbaoPlus, Preset::Medium) => tuned([4, 2], 1.5, 0.0, 0.05, 3.5, 1.5),
         (Method::HbaoPlus, Preset::High) => tuned([6, 3], 1.5, 0.0, 0.05, 3.5, 1.5),
         (Method::HbaoPlus, Preset::Ultra) => tuned([6, 9], 1.5, 0.0, 0.05, 3.5, 1.5),
-        (Method::Gtao, Preset::Low) => tuned([2, 1], 1.0, 0.0, 0.0, 1.1, 1.35),
+        (Method::Gtao, Preset::Low) => tuned([1, 2], 1.0, 0.0, 0.05, 1.6, 1.1),
         (Method::Gtao, Preset::Medium) => tuned([2, 2], 1.0, 0.0, 0.0, 1.0, 1.1),
         (Method::Gtao, Preset::High) => tuned([3, 3], 1.25, 0.0, 0.1, 1.25, 1.1),
         (Method::Gtao, Preset::Ultra) => tuned([3, 9], 1.0, 0.1, 0.0, 1.1, 0.8),
