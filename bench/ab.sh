@@ -13,7 +13,8 @@
 #
 #   bash bench/ab.sh target/ab/before target/release/aokit -- --scene scenes/sponza.obj \
 #       --camera atrium --size 1920x1080 --compare \
-#       "--set spatial.enabled=true --set temporal.enabled=true" "--set temporal.enabled=true"
+#       "--set spatial.enabled=true --set temporal.enabled=true" \
+#       "--set spatial.enabled=false --set temporal.enabled=true"
 #
 # On a software adapter only the wall times mean anything (docs/bench.md).
 set -euo pipefail

@@ -20,7 +20,8 @@ set_view() {
 
 # bench_json NAME OPTION... -- CONFIGURATION...: one interleaved `--compare` run of the
 # configurations, 100 timed frames after 10 (AOKIT_BENCH_FRAMES), its JSON array to
-# OUT/NAME.json.
+# OUT/NAME.json. The spatial filter is off unless a configuration turns it on, as it was by
+# default when the published tables were measured: every configuration names its filters.
 bench_json() {
     local name=$1 options=()
     shift
@@ -29,7 +30,7 @@ bench_json() {
         shift
     done
     shift
-    "$aokit" bench "${options[@]}" --timing-frames "$frames" --warmup "$warmup" --json --compare "$@" \
+    "$aokit" bench --set spatial.enabled=false "${options[@]}" --timing-frames "$frames" --warmup "$warmup" --json --compare "$@" \
         >"$out/$name.json"
     echo "wrote $out/$name.json" >&2
 }

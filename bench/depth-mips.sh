@@ -25,7 +25,7 @@ for variant in "${variants[@]}"; do
         settings=(--set "depth_mips=${variant%-*}" --set "depth_mip_offset=${variant#*-}")
     fi
     target/release/aokit compare "${views[@]}" --method "$methods" --preset high \
-        --size "$size" --spp 128 --timing-frames 1 "${settings[@]}" \
+        --size "$size" --spp 128 --timing-frames 1 --set spatial.enabled=false "${settings[@]}" \
         --out "$out/$variant" >/dev/null
 done
 

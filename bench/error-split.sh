@@ -42,7 +42,8 @@ for method in ${methods//,/ }; do
     for stage in high expectation converged; do
         # shellcheck disable=SC2046 # the settings are separate words on purpose
         target/release/aokit compare "${views[@]}" --method "$method" --preset high \
-            --size 480x270 --spp 512 --timing-frames 1 $(stage_settings "$method" "$stage") \
+            --size 480x270 --spp 512 --timing-frames 1 --set spatial.enabled=false \
+            $(stage_settings "$method" "$stage") \
             --out "$out/$method-$stage" >/dev/null
     done
 done

@@ -27,7 +27,7 @@ compare() {
     cargo run --quiet --release -p aokit-cli -- compare \
         --view room --view stairs --view thin --view scenes/sponza.obj@atrium \
         --method "$(IFS=,; echo "${methods[*]}")" --preset high --timing-frames 0 \
-        --set noise.kind="$kind" "$@" --out "$out/$kind/$name" >/dev/null
+        --set noise.kind="$kind" --set spatial.enabled=false "$@" --out "$out/$kind/$name" >/dev/null
 }
 
 # column QUANTITY KIND NAME COLUMN: appends kind,view,method,quantity,value to $out/scores.csv

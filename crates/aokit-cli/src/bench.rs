@@ -34,7 +34,7 @@ pub struct BenchArgs {
     pub settings: SettingsArgs,
     /// Run a peer instead of an aokit method, NAME=DIR: `xegtao=` a checkout of XeGTAO, or a
     /// folder `aokit peer compile` wrote (docs/peers.md). --preset picks its quality level,
-    /// --set spatial.enabled=true its denoiser.
+    /// --set spatial.enabled=false turns its denoiser off.
     #[arg(long, value_name = "NAME=DIR", conflicts_with = "method")]
     pub peer: Option<PeerSpec>,
     /// Timed frames; the statistics are over these (`--frames` before; `compare` names its

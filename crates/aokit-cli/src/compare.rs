@@ -89,8 +89,9 @@ pub struct CompareArgs {
     #[arg(long, value_name = "PATH", default_value = "still")]
     pub path: CameraPath,
     /// Also score a peer, NAME=DIR, at each of --preset: `xegtao=` a checkout of XeGTAO, or a
-    /// folder `aokit peer compile` wrote (docs/peers.md); --set spatial.enabled=true turns its
-    /// denoiser on, --set peer.denoise_passes=N sets its passes.
+    /// folder `aokit peer compile` wrote (docs/peers.md); its denoiser (one pass) is on
+    /// as aokit's is, --set spatial.enabled=false turns it off, --set peer.denoise_passes=N
+    /// sets its passes.
     #[arg(long, value_name = "NAME=DIR")]
     pub peer: Option<PeerSpec>,
     /// Output directory.

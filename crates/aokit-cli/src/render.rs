@@ -62,7 +62,8 @@ pub struct RenderArgs {
     #[arg(long, value_name = "R", value_parser = parse_roughness, allow_negative_numbers = true)]
     pub roughness: Option<f32>,
     /// Render a sequence of this many frames along --path, each reprojecting the last (the
-    /// temporal filter, when on, accumulates over them): writes frames/ao-NNN.png and
+    /// temporal filter accumulates over them: on for N > 1 unless --set temporal.enabled=false
+    /// turns it off): writes frames/ao-NNN.png and
     /// lit-NNN.png, animated ao.gif and lit.gif, and the last frame as ao.png, ao.exr, lit.png;
     /// with the temporal filter on, rejected.png (and frames/rejected-NNN.png): white where the
     /// frame rejected its history.
@@ -163,7 +164,13 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         eprintln!("note: {}: {note}", scene.name);
     }
     let camera = args.camera.resolve(&scene)?;
-    let settings = args.settings.resolve(scene.suggested_radius)?;
+    // Frames that follow each other get the temporal filter (`--set temporal.enabled=false`
+    // still turns it off).
+    let settings = if args.frames > 1 {
+        args.settings.resolve_for_sequence(scene.suggested_radius)?
+    } else {
+        args.settings.resolve(scene.suggested_radius)?
+    };
     let gpu = open_gpu()?;
     let mut renderer = Renderer::new(&gpu, &scene, &settings)?;
     if let Some(sun) = args.sun {

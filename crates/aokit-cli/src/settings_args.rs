@@ -83,6 +83,16 @@ impl SettingsArgs {
         self.overrides
             .apply_to_preset(method, preset, Some(base.radius), self.radius)
     }
+
+    /// [`SettingsArgs::resolve`] for frames that follow each other (`render --frames N`, the
+    /// viewer): the temporal filter is on under the file and `--set`, which can still turn it
+    /// off.
+    pub fn resolve_for_sequence(&self, suggested_radius: Option<f32>) -> Result<AoSettings> {
+        let method: Method = parse_or_default(self.method.as_deref())?;
+        let preset: Preset = parse_or_default(self.preset.as_deref())?;
+        self.overrides
+            .apply_to_sequence_preset(method, preset, suggested_radius, self.radius)
+    }
 }
 
 impl OverrideArgs {
@@ -97,9 +107,40 @@ impl OverrideArgs {
         base_radius: Option<f32>,
         radius: Option<f32>,
     ) -> Result<AoSettings> {
-        let with_radius = |settings: AoSettings| AoSettings {
-            radius: base_radius.unwrap_or(settings.radius),
-            ..settings
+        self.apply_to_base(method, preset, base_radius, radius, |settings| settings)
+    }
+
+    /// [`OverrideArgs::apply_to_preset`] for frames that follow each other (`render --frames
+    /// N`, the viewer's A and B): the temporal filter on under the overrides, which can still
+    /// turn it off.
+    pub fn apply_to_sequence_preset(
+        &self,
+        method: Method,
+        preset: Preset,
+        base_radius: Option<f32>,
+        radius: Option<f32>,
+    ) -> Result<AoSettings> {
+        self.apply_to_base(method, preset, base_radius, radius, |mut settings| {
+            settings.temporal.enabled = true;
+            settings
+        })
+    }
+
+    /// [`OverrideArgs::apply_to_preset`] with `adjust` applied to the preset before the
+    /// overrides, so that they still win over what it changes.
+    fn apply_to_base(
+        &self,
+        method: Method,
+        preset: Preset,
+        base_radius: Option<f32>,
+        radius: Option<f32>,
+        adjust: impl Fn(AoSettings) -> AoSettings,
+    ) -> Result<AoSettings> {
+        let with_radius = |settings: AoSettings| {
+            adjust(AoSettings {
+                radius: base_radius.unwrap_or(settings.radius),
+                ..settings
+            })
         };
         let settings = self.apply(&with_radius(AoSettings::preset(method, preset)), radius)?;
         if settings.method == Method::Vbao && settings.vbao.back_faces {
@@ -423,6 +464,31 @@ mod tests {
             a.resolve(None).unwrap(),
             AoSettings::preset(Method::Vbao, Preset::Medium)
         );
+    }
+
+    #[test]
+    fn sequences_start_with_the_temporal_filter_on_unless_the_overrides_turn_it_off() {
+        let single = args(&[]).resolve(None).unwrap();
+        assert!(single.spatial.enabled && !single.temporal.enabled);
+        let sequence = args(&[]).resolve_for_sequence(None).unwrap();
+        assert_eq!(
+            sequence,
+            AoSettings {
+                temporal: aokit::TemporalSettings {
+                    enabled: true,
+                    ..single.temporal
+                },
+                ..single
+            }
+        );
+        let raw = args(&["temporal.enabled=false", "spatial.enabled=false"])
+            .resolve_for_sequence(None)
+            .unwrap();
+        assert!(!raw.temporal.enabled && !raw.spatial.enabled);
+        // Back faces take their own presets, still with the filter on.
+        let mut a = args(&["vbao.back_faces=true"]);
+        a.method = Some("vbao".into());
+        assert!(a.resolve_for_sequence(None).unwrap().temporal.enabled);
     }
 
     #[test]

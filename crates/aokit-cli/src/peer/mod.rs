@@ -176,7 +176,8 @@ impl PeerSettings {
             denoise_passes: 0,
             shader: None,
         };
-        let mut spatial = false;
+        // Denoised by default as aokit's presets are, so that the two compare like for like.
+        let mut spatial = aokit::SpatialSettings::default().enabled;
         let mut passes = None;
         for assignment in set {
             let (key, value) = assignment
@@ -282,8 +283,11 @@ mod settings_tests {
         let s = PeerSettings::from_flags(Preset::High, 0.5, &[], true).unwrap();
         assert_eq!(
             (s.quality.slices_and_steps(), s.denoise_passes),
-            ((3, 3), 0)
+            ((3, 3), 1)
         );
+        let raw = sets(&["spatial.enabled=false"]);
+        let s = PeerSettings::from_flags(Preset::High, 0.5, &raw, true).unwrap();
+        assert_eq!(s.denoise_passes, 0);
         assert_eq!(s.samples_per_pixel(), 18);
         let s = PeerSettings::from_flags(
             Preset::Ultra,

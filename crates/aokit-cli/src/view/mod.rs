@@ -182,7 +182,7 @@ pub fn run(args: &ViewArgs) -> Result<()> {
             scene.name
         );
     }
-    let settings = args.settings.resolve(scene.suggested_radius)?;
+    let settings = args.settings.resolve_for_sequence(scene.suggested_radius)?;
     let preset = parse_preset(args.settings.preset.as_deref())?;
     let config = Config {
         method: settings.method,
@@ -250,7 +250,8 @@ fn split_start(
         settings: None,
         set: split.b_set.clone(),
     };
-    let b = overrides.apply_to_preset(method, preset, suggested_radius, settings.radius)?;
+    let b =
+        overrides.apply_to_sequence_preset(method, preset, suggested_radius, settings.radius)?;
     if b.normals.encoding != a.settings.normals.encoding {
         bail!(
             "normals.encoding `{}` differs from A's `{}`: both halves run on one G-buffer, whose \

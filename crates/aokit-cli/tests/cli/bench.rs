@@ -146,9 +146,10 @@ fn compare_gives_one_entry_per_configuration_against_the_first() {
     let first = check_object(&entries[0], &stderr);
     let second = check_object(&entries[1], &stderr);
     if !first.is_empty() {
-        assert_eq!(first, ["linear_depth", "gtao"]);
-        // Below full resolution the downsample and upsample read the depth themselves.
-        assert_eq!(second, ["downsample", "hbao", "upsample"]);
+        assert_eq!(first, ["linear_depth", "gtao", "edge_filter"]);
+        // Below full resolution the downsample and upsample read the depth themselves; the
+        // presets' edge filter runs at the working resolution, before the upsample.
+        assert_eq!(second, ["downsample", "hbao", "edge_filter", "upsample"]);
     }
 
     let (stdout, _) = bench_ok(&configurations);
@@ -213,7 +214,13 @@ fn separable_hbao_is_timed_per_pass_and_refused_to_hbao_plus() {
     if !passes.is_empty() {
         assert_eq!(
             passes,
-            ["downsample", "hbao_rows", "hbao_columns", "upsample"]
+            [
+                "downsample",
+                "hbao_rows",
+                "hbao_columns",
+                "edge_filter",
+                "upsample"
+            ]
         );
     }
     let out = bench(

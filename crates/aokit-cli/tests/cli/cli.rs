@@ -245,17 +245,7 @@ fn a_camera_path_writes_frames_and_animated_previews() {
     let out = aokit(
         dir.path(),
         &[
-            "render",
-            "--size",
-            "48x32",
-            "--frames",
-            "4",
-            "--path",
-            "orbit",
-            "--set",
-            "temporal.enabled=true",
-            "--out",
-            "seq",
+            "render", "--size", "48x32", "--frames", "4", "--path", "orbit", "--out", "seq",
         ],
     );
     assert!(out.status.success(), "{}", text(&out.stderr));
@@ -289,6 +279,22 @@ fn a_camera_path_writes_frames_and_animated_previews() {
     );
     let gif = std::fs::read(seq.join("ao.gif")).unwrap();
     assert!(gif.starts_with(b"GIF89a"));
+    // Frames that follow each other get the temporal filter unless --set turns it off.
+    let args = [
+        "render",
+        "--size",
+        "48x32",
+        "--frames",
+        "2",
+        "--set",
+        "temporal.enabled=false",
+        "--out",
+        "raw",
+    ];
+    let out = aokit(dir.path(), &args);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(dir.path().join("raw/ao.png").is_file());
+    assert!(!dir.path().join("raw/rejected.png").exists());
     for (args, expected) in [
         (&["render", "--frames", "0"][..], "--frames"),
         (&["render", "--frames", "3", "--path", "spin"][..], "spin"),

@@ -459,17 +459,15 @@ fn distance_fade_intensity_and_method_switches_apply_at_runtime() {
             method.name()
         );
     }
-    // Past max_distance nothing is occluded; intensity 0 removes all occlusion.
-    renderer
-        .set_settings(
-            &gpu,
-            &AoSettings {
-                max_distance: 6.0,
-                distance_falloff: 1.0,
-                ..base
-            },
-        )
-        .unwrap();
+    // Past max_distance nothing is occluded; intensity 0 removes all occlusion. The kernel's
+    // AO: the spatial filter would blend nearer neighbours' into the first texels past it.
+    let mut faded = AoSettings {
+        max_distance: 6.0,
+        distance_falloff: 1.0,
+        ..base
+    };
+    faded.spatial.enabled = false;
+    renderer.set_settings(&gpu, &faded).unwrap();
     let faded = renderer.render(&gpu, camera, SIZE, 0).unwrap();
     for (ao, depth) in faded.ao.iter().zip(&faded.linear_depth) {
         if *depth >= 6.0 {

@@ -470,7 +470,10 @@ fn pass_times_are_reported_when_the_adapter_has_timestamps() {
         Some(times) => {
             let times = times.unwrap();
             let names: Vec<&str> = times.iter().map(|t| t.name).collect();
-            assert_eq!(names, ["linear_depth", "normals_from_depth", "gtao"]);
+            assert_eq!(
+                names,
+                ["linear_depth", "normals_from_depth", "gtao", "edge_filter"]
+            );
             assert!(times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0));
         }
     }

@@ -117,10 +117,11 @@ fn gpu_matches_cpu(
     for builtin in [Builtin::Room, Builtin::Stairs, Builtin::Thin] {
         let scene = builtin.build();
         let camera = &scene.cameras[0];
-        let raw_settings = AoSettings {
+        let mut raw_settings = AoSettings {
             radius: scene.suggested_radius.unwrap_or(1.0),
             ..AoSettings::default()
         };
+        raw_settings.spatial.enabled = false;
         let mut renderer = Renderer::new(&gpu, &scene, &raw_settings).unwrap();
         let raw = renderer.render(&gpu, camera, SIZE, 3).unwrap();
         for &spatial in filters {
@@ -277,7 +278,10 @@ fn the_guided_filter_scores_against_the_reference_like_the_bilateral_one() {
             ..SpatialSettings::default()
         };
         let scores = [
-            errors(SpatialSettings::default()),
+            errors(SpatialSettings {
+                enabled: false,
+                ..SpatialSettings::default()
+            }),
             errors(on),
             errors(SpatialSettings {
                 kind: SpatialKind::Guided,

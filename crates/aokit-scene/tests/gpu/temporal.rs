@@ -10,11 +10,14 @@ use common::{encode_frame, gpu, linear_depth_texture, trace_at};
 
 const SIZE: [u32; 2] = [160, 96];
 
+/// GTAO `high` with the temporal filter on or off, and without the spatial filter the preset
+/// runs: these tests are about the temporal filter alone, on the kernel's AO.
 fn settings(scene: &Scene, temporal: bool) -> AoSettings {
     let mut s = AoSettings {
         radius: scene.suggested_radius.unwrap(),
         ..AoSettings::preset(Method::Gtao, Preset::High)
     };
+    s.spatial.enabled = false;
     s.temporal.enabled = temporal;
     s
 }

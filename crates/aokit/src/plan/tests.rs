@@ -48,6 +48,14 @@ fn names(plan: &FramePlan) -> Vec<String> {
         .collect()
 }
 
+/// The default settings without the spatial filter that they run: the kernel's passes alone,
+/// to which each test adds the filters it is about.
+fn raw() -> AoSettings {
+    let mut settings = AoSettings::default();
+    settings.spatial.enabled = false;
+    settings
+}
+
 fn half(settings: AoSettings) -> AoSettings {
     AoSettings {
         resolution: Resolution::Half,
@@ -69,10 +77,7 @@ fn temporal(settings: AoSettings) -> AoSettings {
 }
 
 fn method(method: Method) -> AoSettings {
-    AoSettings {
-        method,
-        ..AoSettings::default()
-    }
+    AoSettings { method, ..raw() }
 }
 
 /// The step running `pass`'s kind, by its name in [`names`].
@@ -85,8 +90,21 @@ fn step<'p>(plan: &'p FramePlan, name: &str) -> &'p Step {
 }
 
 #[test]
-fn full_resolution_reads_oct32_view_space_normals_as_they_are() {
+fn the_defaults_run_the_edges_filter_after_the_kernel() {
     let plan = plan(AoSettings::default());
+    assert_eq!(names(&plan), ["linear_depth@i", "method@w", "spatial@w"]);
+    assert!(matches!(
+        plan.steps[2].pass,
+        Pass::Spatial {
+            kind: SpatialKind::Edges,
+            ..
+        }
+    ));
+}
+
+#[test]
+fn full_resolution_reads_oct32_view_space_normals_as_they_are() {
+    let plan = plan(raw());
     assert_eq!(names(&plan), ["linear_depth@i", "method@w"]);
     assert_eq!((plan.scale, plan.working), (1, [160, 96]));
     assert_eq!(plan.normals, Target::InputNormals);
@@ -109,7 +127,7 @@ fn full_resolution_reads_oct32_view_space_normals_as_they_are() {
 
 #[test]
 fn other_encodings_and_world_space_normals_are_decoded() {
-    let mut settings = AoSettings::default();
+    let mut settings = raw();
     settings.normals.encoding = NormalEncoding::Oct16;
     let decoded = plan(settings);
     assert_eq!(
@@ -125,7 +143,7 @@ fn other_encodings_and_world_space_normals_are_decoded() {
     );
     assert_eq!(decoded.normals, Target::Normals);
     // oct32 in world space still needs turning into view space.
-    let mut settings = AoSettings::default();
+    let mut settings = raw();
     settings.normals.space = NormalSpace::World;
     let world = plan(settings);
     assert_eq!(
@@ -139,7 +157,7 @@ fn other_encodings_and_world_space_normals_are_decoded() {
 
 #[test]
 fn normals_come_from_depth_without_a_buffer_or_when_the_settings_say_so() {
-    let mut settings = AoSettings::default();
+    let mut settings = raw();
     settings.normals.source = NormalSource::Depth5tap;
     let expected = ["linear_depth@i", "normals_from_depth@i", "method@w"];
     assert_eq!(names(&plan(settings)), expected);
@@ -147,14 +165,14 @@ fn normals_come_from_depth_without_a_buffer_or_when_the_settings_say_so() {
         normals: false,
         ..INPUTS
     };
-    let plan = FramePlan::new(&AoSettings::default(), &no_buffer);
+    let plan = FramePlan::new(&raw(), &no_buffer);
     assert_eq!(names(&plan), expected);
     assert_eq!(plan.normals, Target::Normals);
 }
 
 #[test]
 fn below_full_resolution_with_a_normal_buffer_the_resample_reads_the_input_depth() {
-    let plan = plan(half(AoSettings::default()));
+    let plan = plan(half(raw()));
     // No linear depth pass: the upsample writes it.
     assert_eq!(names(&plan), ["downsample@w", "method@w", "upsample@i"]);
     assert_eq!((plan.scale, plan.working), (2, [80, 48]));
@@ -213,7 +231,7 @@ fn below_full_resolution_with_normals_from_depth_the_linear_depth_pass_runs() {
     };
     let settings = AoSettings {
         resolution: Resolution::Quarter,
-        ..AoSettings::default()
+        ..raw()
     };
     let plan = FramePlan::new(&settings, &inputs);
     let expected = [
@@ -242,7 +260,7 @@ fn a_1x1_image_runs_as_at_full_resolution() {
         size: [1, 1],
         ..INPUTS
     };
-    let settings = temporal(spatial(SpatialKind::Bilateral, half(AoSettings::default())));
+    let settings = temporal(spatial(SpatialKind::Bilateral, half(raw())));
     let plan = FramePlan::new(&settings, &inputs);
     let expected = ["linear_depth@i", "method@w", "spatial@w", "temporal@w"];
     assert_eq!(names(&plan), expected);
@@ -252,10 +270,7 @@ fn a_1x1_image_runs_as_at_full_resolution() {
 
 #[test]
 fn filters_run_at_working_resolution_before_the_upsample() {
-    let plan = plan(temporal(spatial(
-        SpatialKind::Bilateral,
-        half(AoSettings::default()),
-    )));
+    let plan = plan(temporal(spatial(SpatialKind::Bilateral, half(raw()))));
     let expected = [
         "downsample@w",
         "method@w",
@@ -303,7 +318,7 @@ fn filters_run_at_working_resolution_before_the_upsample() {
 
 #[test]
 fn filter_resolution_full_moves_the_filters_after_the_upsample() {
-    let mut settings = temporal(spatial(SpatialKind::Guided, half(AoSettings::default())));
+    let mut settings = temporal(spatial(SpatialKind::Guided, half(raw())));
     settings.filter_resolution = FilterResolution::Full;
     let plan = plan(settings);
     let expected = [
@@ -341,7 +356,7 @@ fn filter_resolution_full_moves_the_filters_after_the_upsample() {
 
 #[test]
 fn filter_resolution_full_at_full_resolution_changes_nothing() {
-    let mut settings = spatial(SpatialKind::Edges, AoSettings::default());
+    let mut settings = spatial(SpatialKind::Edges, raw());
     let working = plan(settings);
     settings.filter_resolution = FilterResolution::Full;
     assert_eq!(plan(settings), working);
@@ -356,7 +371,7 @@ fn each_spatial_kind_alone_writes_the_ao_unpacked() {
         SpatialKind::Guided,
         SpatialKind::Edges,
     ] {
-        let plan = plan(spatial(kind, half(AoSettings::default())));
+        let plan = plan(spatial(kind, half(raw())));
         assert!(matches!(
             step(&plan, "spatial").pass,
             Pass::Spatial {
@@ -374,10 +389,7 @@ fn each_spatial_kind_alone_writes_the_ao_unpacked() {
         ));
     }
     // Only the bilateral kind packs for the temporal filter.
-    let guided = plan(temporal(spatial(
-        SpatialKind::Guided,
-        AoSettings::default(),
-    )));
+    let guided = plan(temporal(spatial(SpatialKind::Guided, raw())));
     assert!(matches!(
         step(&guided, "temporal").pass,
         Pass::Temporal { packed: false, .. }
@@ -386,7 +398,7 @@ fn each_spatial_kind_alone_writes_the_ao_unpacked() {
 
 #[test]
 fn the_temporal_filter_alone_reads_the_kernels_ao_and_what_motion_there_is() {
-    let plan = plan(temporal(AoSettings::default()));
+    let plan = plan(temporal(raw()));
     assert_eq!(names(&plan), ["linear_depth@i", "method@w", "temporal@w"]);
     assert_eq!(
         step(&plan, "temporal").pass,
@@ -401,7 +413,7 @@ fn the_temporal_filter_alone_reads_the_kernels_ao_and_what_motion_there_is() {
         motion_vectors: false,
         ..INPUTS
     };
-    let settings = temporal(half(AoSettings::default()));
+    let settings = temporal(half(raw()));
     let plan = FramePlan::new(&settings, &still);
     assert!(matches!(
         step(&plan, "temporal").pass,
@@ -483,7 +495,7 @@ fn the_depth_mip_atlas_is_made_for_the_kernels_that_read_it() {
     ] {
         let settings = AoSettings {
             depth_mips,
-            ..half(AoSettings::default())
+            ..half(raw())
         };
         let plan = FramePlan::new(
             &settings,
@@ -575,7 +587,7 @@ fn the_mask_is_the_last_pass() {
         mask: true,
         ..INPUTS
     };
-    let settings = temporal(spatial(SpatialKind::Bilateral, half(AoSettings::default())));
+    let settings = temporal(spatial(SpatialKind::Bilateral, half(raw())));
     let plan = FramePlan::new(&settings, &masked);
     assert_eq!(names(&plan).last().map(String::as_str), Some("mask@i"));
     assert_eq!(

@@ -289,7 +289,6 @@ named_enum! {
     /// ```
     /// use aokit::{AoSettings, DepthWeight};
     /// let mut settings = AoSettings::default();
-    /// settings.spatial.enabled = true;
     /// // One compare per tap instead of an `exp`, for a GPU short of arithmetic.
     /// settings.spatial.depth_weight = "threshold".parse()?;
     /// assert_eq!(settings.spatial.depth_weight, DepthWeight::Threshold);
@@ -311,7 +310,6 @@ named_enum! {
     /// ```
     /// use aokit::{AoSettings, SpatialKind};
     /// let mut settings = AoSettings::default();
-    /// settings.spatial.enabled = true;
     /// // `--set spatial.kind=guided` on the command line.
     /// settings.spatial.kind = "guided".parse()?;
     /// assert_eq!(settings.spatial.kind, SpatialKind::Guided);
@@ -471,7 +469,6 @@ named_enum! {
     ///     filter_resolution: "full".parse()?,
     ///     ..AoSettings::default()
     /// };
-    /// settings.spatial.enabled = true;
     /// assert_eq!(settings.filter_resolution, FilterResolution::Full);
     /// # Ok::<(), String>(())
     /// ```

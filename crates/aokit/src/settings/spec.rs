@@ -288,9 +288,9 @@ impl SettingKind {
 /// use aokit::AoSettings;
 /// use aokit::settings::SettingValue;
 /// let mut settings = AoSettings::default();
-/// settings.set("spatial.enabled", SettingValue::Bool(true))?;
+/// settings.set("spatial.enabled", SettingValue::Bool(false))?;
 /// settings.set("spatial.kind", SettingValue::Choice("guided"))?;
-/// assert!(settings.spatial.enabled);
+/// assert!(!settings.spatial.enabled);
 /// assert_eq!(settings.get("gtao.slice_count")?, SettingValue::Integer(3));
 /// assert_eq!(settings.get("method")?.to_string(), "gtao");
 /// # Ok::<(), aokit::settings::SetError>(())
@@ -673,7 +673,7 @@ impl AoSettings {
     /// use aokit::AoSettings;
     /// use aokit::settings::SettingValue;
     /// let settings = AoSettings::default();
-    /// assert_eq!(settings.get("spatial.enabled")?, SettingValue::Bool(false));
+    /// assert_eq!(settings.get("spatial.enabled")?, SettingValue::Bool(true));
     /// assert!(settings.get("spatial.enable").is_err());
     /// # Ok::<(), aokit::settings::SetError>(())
     /// ```
@@ -688,16 +688,16 @@ impl AoSettings {
     /// ```
     /// use aokit::AoSettings;
     /// use aokit::settings::SettingValue;
-    /// // What a Python binding does with `{"spatial.enabled": True, "spatial.radius": 4}`.
+    /// // What a Python binding does with `{"spatial.kind": "bilateral", "spatial.radius": 4}`.
     /// let mut settings = AoSettings::default();
     /// for (key, value) in [
-    ///     ("spatial.enabled", SettingValue::Bool(true)),
+    ///     ("spatial.kind", SettingValue::Choice("bilateral")),
     ///     ("spatial.radius", SettingValue::Integer(4)),
     /// ] {
     ///     settings.set(key, value)?;
     /// }
     /// settings.validate()?;
-    /// assert_eq!((settings.spatial.enabled, settings.spatial.radius), (true, 4));
+    /// assert_eq!((settings.spatial.kind.name(), settings.spatial.radius), ("bilateral", 4));
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn set(&mut self, key: &str, value: SettingValue) -> Result<(), SetError> {

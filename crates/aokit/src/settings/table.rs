@@ -373,8 +373,8 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         spatial.enabled,
         bool,
-        "run the spatial filter, an edge-aware blur of the AO ([denoise.md](denoise.md)); off so \
-         that the published tables keep scoring raw AO"
+        "run the spatial filter, an edge-aware blur of the AO ([denoise.md](denoise.md)); on by \
+         default, `false` gives the raw estimate"
     ),
     setting!(
         spatial.kind,
@@ -428,7 +428,8 @@ pub static SETTINGS: &[SettingSpec] = &[
     setting!(
         temporal.enabled,
         bool,
-        "blend each frame's AO with its reprojected history ([denoise.md](denoise.md))"
+        "blend each frame's AO with its reprojected history ([denoise.md](denoise.md)); off for \
+         single frames, on where frames follow each other (`render --frames N`, `view`)"
     ),
     setting!(
         temporal.blend,
