@@ -129,13 +129,13 @@ pub fn groups() -> Vec<(&'static str, Vec<&'static SettingSpec>)> {
 }
 
 /// The settings `method` at `preset` start from in the viewer: the preset with the scene's
-/// radius, as `aokit render` makes them.
+/// radius and, since the frames follow each other, the temporal filter on, as
+/// `aokit render --frames N` makes them.
 pub fn base_settings(method: Method, preset: Preset, radius: Option<f32>) -> AoSettings {
-    let preset_settings = AoSettings::preset(method, preset);
-    AoSettings {
-        radius: radius.unwrap_or(preset_settings.radius),
-        ..preset_settings
-    }
+    let mut settings = AoSettings::preset(method, preset);
+    settings.radius = radius.unwrap_or(settings.radius);
+    settings.temporal.enabled = true;
+    settings
 }
 
 /// `settings` as flags of `aokit render` and the other commands: `--method` and `--preset`,
@@ -347,13 +347,13 @@ mod tests {
             text,
             "--method gtao --preset high --set radius=0.75 --set gtao.slice_count=7"
         );
-        // What `aokit render` would make of them.
+        // What `aokit render --frames N` would make of them.
         let args = crate::settings_args::OverrideArgs {
             settings: None,
             set: vec!["radius=0.75".into(), "gtao.slice_count=7".into()],
         };
         let parsed = args
-            .apply_to_preset(Method::Gtao, Preset::High, Some(0.5), None)
+            .apply_to_sequence_preset(Method::Gtao, Preset::High, Some(0.5), None)
             .unwrap();
         assert_eq!(parsed, settings);
     }
