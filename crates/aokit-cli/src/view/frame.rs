@@ -1,6 +1,7 @@
 //! What the viewer shows of a rendered frame (lit, AO only, a debug view), the internal render
 //! size, and the frame timings.
 
+use std::collections::VecDeque;
 use std::time::Duration;
 
 use aokit::PassTime;
@@ -123,22 +124,34 @@ pub fn internal_size(area: [u32; 2], scale: f32) -> [u32; 2] {
     area.map(|side| ((side as f32 * scale).round() as u32).max(8))
 }
 
-/// Per-pass times, smoothed over frames so that the table can be read.
+/// Per-pass times, smoothed over frames so that the table can be read, and the last frames'
+/// times unsmoothed for the graph.
 #[derive(Default)]
 pub struct Timings {
     /// Milliseconds of each AO pass, by name, in the order the frame ran them.
     pub passes: Vec<(&'static str, f64)>,
     /// Milliseconds the CPU spent on the last frames (render, read back, draw), smoothed.
     pub frame_ms: f64,
+    /// The last [`HISTORY`] rendered frames, oldest first: the CPU time of each and, where
+    /// the adapter has timestamps, the GPU time of its AO passes.
+    pub history: VecDeque<(f64, Option<f64>)>,
 }
 
 /// Weight of the newest sample in the smoothed times.
 const SMOOTHING: f64 = 0.2;
 
+/// Frames the graph shows: a few seconds at interactive rates.
+pub const HISTORY: usize = 240;
+
 impl Timings {
     /// Adds one frame's CPU time and, where the adapter has timestamps, its pass times.
     pub fn add(&mut self, frame: Duration, passes: Option<&[PassTime]>) {
         let ms = frame.as_secs_f64() * 1e3;
+        if self.history.len() == HISTORY {
+            self.history.pop_front();
+        }
+        let gpu = passes.map(|passes| passes.iter().map(|p| p.ms).sum());
+        self.history.push_back((ms, gpu));
         self.frame_ms = if self.frame_ms == 0.0 {
             ms
         } else {
@@ -169,6 +182,26 @@ impl Timings {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_history_keeps_the_newest_frames_unsmoothed() {
+        let mut timings = Timings::default();
+        for i in 0..HISTORY + 10 {
+            let passes = [PassTime {
+                name: "gtao",
+                ms: i as f64,
+            }];
+            timings.add(Duration::from_millis(i as u64), Some(&passes));
+        }
+        assert_eq!(timings.history.len(), HISTORY);
+        assert_eq!(timings.history.front(), Some(&(10.0, Some(10.0))));
+        let last = (HISTORY + 9) as f64;
+        assert_eq!(timings.history.back(), Some(&(last, Some(last))));
+        // The table's time is smoothed: it lags the newest frame.
+        assert!(timings.frame_ms < last);
+        timings.add(Duration::from_millis(1), None);
+        assert_eq!(timings.history.back(), Some(&(1.0, None)));
+    }
 
     #[test]
     fn modes_parse_by_name_and_cycle_through_every_debug_view() {

@@ -5,7 +5,7 @@ use aokit::{AoSettings, Method, Preset};
 use aokit_scene::Camera;
 
 use super::camera::{CameraMode, ViewCamera};
-use super::frame::{DisplayMode, Timings};
+use super::frame::{DisplayMode, HISTORY, Timings};
 use super::motion::Motion;
 use super::panel::{self, PanelChange};
 
@@ -576,6 +576,7 @@ fn timings(ui: &mut egui::Ui, view: &ViewState) {
                 ui.monospace(format!("{:7.1} ms", t.frame_ms));
                 ui.end_row();
             });
+            frame_time_graph(ui, t);
             if !view.timestamps {
                 ui.label(
                     "no GPU timestamps on this adapter: only the CPU time of a frame (render, \
@@ -583,4 +584,61 @@ fn timings(ui: &mut egui::Ui, view: &ViewState) {
                 );
             }
         });
+}
+
+/// The last rendered frames' times as lines over a strip of the panel, each on its own scale
+/// from 0 to its largest time shown (named in the corner): the CPU's frame time (grey) and,
+/// with timestamps, the GPU time of the AO passes (green), which is far smaller.
+fn frame_time_graph(ui: &mut egui::Ui, timings: &Timings) {
+    let history = &timings.history;
+    if history.len() < 2 {
+        return;
+    }
+    let (rect, _) = ui.allocate_exact_size(
+        egui::vec2(ui.available_width().min(320.0), 56.0),
+        egui::Sense::hover(),
+    );
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 2.0, ui.visuals().extreme_bg_color);
+    let series = |times: Vec<(usize, f64)>, color: egui::Color32, corner: egui::Align2| {
+        let top = times.iter().map(|&(_, ms)| ms).fold(0.0, f64::max);
+        if times.len() < 2 || top <= 0.0 {
+            return;
+        }
+        let points = times
+            .iter()
+            .map(|&(i, ms)| {
+                let x = rect.left() + rect.width() * i as f32 / (HISTORY - 1) as f32;
+                egui::pos2(
+                    x,
+                    rect.bottom() - (rect.height() - 14.0) * (ms / top) as f32,
+                )
+            })
+            .collect();
+        painter.add(egui::Shape::line(points, egui::Stroke::new(1.0, color)));
+        let inset = egui::vec2(4.0, 2.0);
+        let at = match corner {
+            egui::Align2::RIGHT_TOP => rect.right_top() + egui::vec2(-inset.x, inset.y),
+            _ => rect.left_top() + inset,
+        };
+        painter.text(
+            at,
+            corner,
+            format!("{top:.3} ms"),
+            egui::FontId::monospace(10.0),
+            color,
+        );
+    };
+    series(
+        history.iter().map(|&(cpu, _)| cpu).enumerate().collect(),
+        egui::Color32::GRAY,
+        egui::Align2::LEFT_TOP,
+    );
+    series(
+        (history.iter().enumerate())
+            .filter_map(|(i, &(_, gpu))| Some((i, gpu?)))
+            .collect(),
+        egui::Color32::from_rgb(90, 200, 110),
+        egui::Align2::RIGHT_TOP,
+    );
 }
