@@ -22,6 +22,37 @@ fn have_xvfb() -> bool {
     found
 }
 
+/// Whether `xdotool` is here; panics where `AOKIT_REQUIRE_XVFB=1` but it is not.
+fn have_xdotool() -> bool {
+    let found = Command::new("xdotool").arg("version").output().is_ok();
+    if !found {
+        assert!(
+            std::env::var("AOKIT_REQUIRE_XVFB").as_deref() != Ok("1"),
+            "AOKIT_REQUIRE_XVFB=1 but xdotool (Debian package xdotool) does not run"
+        );
+        eprintln!("skipping: no xdotool (Debian package xdotool)");
+    }
+    found
+}
+
+/// `script` run by `sh` under a fresh Xvfb display in `dir`, with the aokit binary as `$1`.
+fn script_in_xvfb(dir: &Path, script: &str) -> Output {
+    output(
+        Command::new("xvfb-run")
+            .args([
+                "-a",
+                "-s",
+                "-screen 0 1024x768x24",
+                "sh",
+                "-c",
+                script,
+                "sh",
+            ])
+            .arg(env!("CARGO_BIN_EXE_aokit"))
+            .current_dir(dir),
+    )
+}
+
 /// `aokit args` run in `dir` under a fresh Xvfb display.
 fn aokit_in_xvfb(dir: &Path, args: &[&str]) -> Output {
     let aokit = command(dir, args);
@@ -260,15 +291,7 @@ fn the_panel_has_a_widget_within_its_bounds_for_every_declared_setting() {
 /// (skipped without it unless `AOKIT_REQUIRE_XVFB=1`).
 #[test]
 fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
-    if !have_xvfb() {
-        return;
-    }
-    if Command::new("xdotool").arg("version").output().is_err() {
-        assert!(
-            std::env::var("AOKIT_REQUIRE_XVFB").as_deref() != Ok("1"),
-            "AOKIT_REQUIRE_XVFB=1 but xdotool (Debian package xdotool) does not run"
-        );
-        eprintln!("skipping: no xdotool (Debian package xdotool)");
+    if !have_xvfb() || !have_xdotool() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -291,20 +314,7 @@ fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
         xdotool key Escape
         wait $app
     "#;
-    let out = output(
-        Command::new("xvfb-run")
-            .args([
-                "-a",
-                "-s",
-                "-screen 0 1024x768x24",
-                "sh",
-                "-c",
-                script,
-                "sh",
-            ])
-            .arg(env!("CARGO_BIN_EXE_aokit"))
-            .current_dir(dir.path()),
-    );
+    let out = script_in_xvfb(dir.path(), script);
     let printed = std::fs::read_to_string(dir.path().join("out.txt")).unwrap();
     let errors = std::fs::read_to_string(dir.path().join("err.txt")).unwrap();
     assert!(out.status.success(), "{}\n{errors}", text(&out.stderr));
@@ -524,4 +534,44 @@ fn the_motion_plays_the_frames_aokit_render_renders() {
             "frame {other}: {differs} vs {same}"
         );
     }
+}
+
+#[test]
+fn resizing_to_one_pixel_hiding_and_restoring_the_window_keep_it_rendering() {
+    if !have_xvfb() || !have_xdotool() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // The motion plays, so every frame renders the scene: 1x1, 1x40, 240x160, unmapped
+    // (minimised: there is no window manager to iconify it), mapped, 320x180.
+    let script = r#"
+        "$1" view --scene room --mode ao --animate --loop-frames 24 --window-size 320x180 \
+            --no-panel --frames 500 --screenshot shot.png > out.txt 2> err.txt &
+        app=$!
+        window=$(xdotool search --sync --name "aokit view" | head -n 1)
+        sleep 1
+        xdotool windowsize --sync "$window" 1 1; sleep 1
+        xdotool windowsize --sync "$window" 1 40; sleep 0.5
+        xdotool windowsize --sync "$window" 240 160; sleep 1
+        xdotool windowunmap --sync "$window"; sleep 1
+        xdotool windowmap --sync "$window"; sleep 0.5
+        xdotool windowsize --sync "$window" 320 180
+        wait $app
+    "#;
+    let out = script_in_xvfb(dir.path(), script);
+    let errors = std::fs::read_to_string(dir.path().join("err.txt")).unwrap();
+    assert!(out.status.success(), "{}\n{errors}", text(&out.stderr));
+    let printed = std::fs::read_to_string(dir.path().join("out.txt")).unwrap();
+    // All the frames were drawn; had the window been too fast for the script, the size would
+    // not be the last one asked for.
+    assert!(printed.contains("frame 500"), "{printed}\n{errors}");
+    let shot = image::open(dir.path().join("shot.png")).unwrap().to_rgba8();
+    assert_eq!(shot.dimensions(), (320, 180), "{printed}");
+    // The room's AO again, as the first test sees it: the corner darker than the open floor.
+    let corner = mean_grey(&shot, 0.31, 0.5, 0.02);
+    let floor = mean_grey(&shot, 0.5, 0.72, 0.02);
+    assert!(
+        corner < floor - 30.0,
+        "the corner ({corner}) should be darker than the open floor ({floor})"
+    );
 }
