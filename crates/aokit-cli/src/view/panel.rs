@@ -332,6 +332,38 @@ mod tests {
         }
     }
 
+    /// A harness (egui_kittest: no window, the widgets found by their accessible labels)
+    /// drawing the widget of the setting `name` over default settings.
+    fn widget_of(name: &'static str) -> egui_kittest::Harness<'static, (AoSettings, PanelChange)> {
+        let spec = aokit::settings::find_setting(name).unwrap();
+        egui_kittest::Harness::new_ui_state(
+            move |ui, (settings, change): &mut (AoSettings, PanelChange)| {
+                setting_ui(ui, spec, settings, change);
+            },
+            (AoSettings::default(), PanelChange::default()),
+        )
+    }
+
+    #[test]
+    fn clicking_a_widget_sets_its_setting_through_the_declaration() {
+        use egui_kittest::kittest::Queryable;
+        let mut check = widget_of("spatial.enabled");
+        check.get_by_label("enabled").click();
+        check.run();
+        let (settings, change) = check.state();
+        assert!(!settings.spatial.enabled);
+        assert!(change.settings && change.refused.is_none());
+
+        let mut menu = widget_of("noise.kind");
+        menu.get_by_label("kind").click();
+        menu.run();
+        menu.get_by_label("white").click();
+        menu.run();
+        let (settings, change) = menu.state();
+        assert_eq!(settings.noise.kind, aokit::NoiseKind::White);
+        assert!(change.settings);
+    }
+
     #[test]
     fn flags_name_only_what_differs_from_the_preset_and_parse_back() {
         let base = base_settings(Method::Gtao, Preset::High, Some(0.5));
