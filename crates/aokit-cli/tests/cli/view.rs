@@ -546,7 +546,7 @@ fn resizing_to_one_pixel_hiding_and_restoring_the_window_keep_it_rendering() {
     // (minimised: there is no window manager to iconify it), mapped, 320x180.
     let script = r#"
         "$1" view --scene room --mode ao --animate --loop-frames 24 --window-size 320x180 \
-            --no-panel --frames 500 --screenshot shot.png > out.txt 2> err.txt &
+            --no-panel --frames 1000 --screenshot shot.png > out.txt 2> err.txt &
         app=$!
         window=$(xdotool search --sync --name "aokit view" | head -n 1)
         sleep 1
@@ -556,6 +556,9 @@ fn resizing_to_one_pixel_hiding_and_restoring_the_window_keep_it_rendering() {
         xdotool windowunmap --sync "$window"; sleep 1
         xdotool windowmap --sync "$window"; sleep 0.5
         xdotool windowsize --sync "$window" 320 180
+        # The process's memory a few hundred frames apart, the window at its last size.
+        sleep 2; grep VmRSS /proc/$app/status > rss-before.txt
+        sleep 6; grep VmRSS /proc/$app/status > rss-after.txt
         wait $app
     "#;
     let out = script_in_xvfb(dir.path(), script);
@@ -564,9 +567,21 @@ fn resizing_to_one_pixel_hiding_and_restoring_the_window_keep_it_rendering() {
     let printed = std::fs::read_to_string(dir.path().join("out.txt")).unwrap();
     // All the frames were drawn; had the window been too fast for the script, the size would
     // not be the last one asked for.
-    assert!(printed.contains("frame 500"), "{printed}\n{errors}");
+    assert!(printed.contains("frame 1000"), "{printed}\n{errors}");
     let shot = image::open(dir.path().join("shot.png")).unwrap().to_rgba8();
     assert_eq!(shot.dimensions(), (320, 180), "{printed}");
+    let rss = |name: &str| -> u64 {
+        let line = std::fs::read_to_string(dir.path().join(name)).unwrap();
+        let kib = line.split_whitespace().nth(1);
+        kib.and_then(|kib| kib.parse().ok())
+            .unwrap_or_else(|| panic!("{name}: {line:?} (the viewer ended too early?)"))
+    };
+    let (before, after) = (rss("rss-before.txt"), rss("rss-after.txt"));
+    // The composite's old growth was half a megabyte a frame: a leak of that kind shows here.
+    assert!(
+        after < before + 8 * 1024,
+        "resident memory grew from {before} KiB to {after} KiB in six seconds of frames"
+    );
     // The room's AO again, as the first test sees it: the corner darker than the open floor.
     let corner = mean_grey(&shot, 0.31, 0.5, 0.02);
     let floor = mean_grey(&shot, 0.5, 0.72, 0.02);
