@@ -21,6 +21,7 @@ mod cache;
 mod camera_args;
 mod compare;
 mod export;
+mod lighting_args;
 mod passes;
 mod peer;
 mod recorded;

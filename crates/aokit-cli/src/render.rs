@@ -5,7 +5,6 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, bail};
 use aokit::debug::DebugView;
 use aokit::{AdapterKind, GpuContext};
-use aokit_scene::composite::{MultiBounce, SpecularOcclusion};
 use aokit_scene::{CameraPath, Frame, Renderer, Scene};
 use clap::Args;
 
@@ -13,6 +12,7 @@ use aokit_eval::{grey_to_rgba, write_exr, write_gif, write_grey_png, write_rgba_
 
 use crate::camera_args::CameraArgs;
 use crate::export::{check_out_dir, create_dir, write_back_depth, write_gbuffer};
+use crate::lighting_args::LightingArgs;
 use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug)]
@@ -36,31 +36,8 @@ pub struct RenderArgs {
     /// frames/depth-NNN.exr and so on, for `aokit ao --sequence`.
     #[arg(long)]
     pub gbuffer: bool,
-    /// Direction towards the sun for lit.png, in world space (default: 0.3,1,0.15).
-    #[arg(long, value_name = "X,Y,Z", value_parser = crate::camera_args::parse_vec3, allow_hyphen_values = true)]
-    pub sun: Option<glam::Vec3>,
-    /// Multi-bounce AO in lit.png's ambient diffuse light: gtao (Jimenez et al.'s fit, the
-    /// default, also what a bare --multi-bounce means), closed-form (k / (1 - albedo (1 - k)))
-    /// or none (the raw AO).
-    #[arg(
-        long,
-        value_name = "FORM",
-        num_args = 0..=1,
-        default_missing_value = "gtao",
-        value_parser = parse_multi_bounce,
-        overrides_with = "no_multi_bounce"
-    )]
-    pub multi_bounce: Option<MultiBounce>,
-    /// The raw AO in lit.png's ambient diffuse light: --multi-bounce none.
-    #[arg(long, overrides_with = "multi_bounce")]
-    pub no_multi_bounce: bool,
-    /// Specular occlusion in lit.png: none, gtso (bent normals with gtao and vbao) or frostbite
-    /// (default: frostbite).
-    #[arg(long, value_name = "MODE", value_parser = parse_specular_occlusion)]
-    pub specular_occlusion: Option<SpecularOcclusion>,
-    /// Roughness of every surface in lit.png, 0 (mirror) to 1 (default: 0.5).
-    #[arg(long, value_name = "R", value_parser = parse_roughness, allow_negative_numbers = true)]
-    pub roughness: Option<f32>,
+    #[command(flatten)]
+    pub lighting: LightingArgs,
     /// Render a sequence of this many frames along --path, each reprojecting the last (the
     /// temporal filter accumulates over them: on for N > 1 unless --set temporal.enabled=false
     /// turns it off): writes frames/ao-NNN.png and
@@ -87,25 +64,6 @@ pub struct RenderArgs {
 
 fn parse_debug_view(s: &str) -> Result<DebugView, String> {
     s.parse()
-}
-
-fn parse_multi_bounce(s: &str) -> Result<MultiBounce, String> {
-    s.parse()
-}
-
-fn parse_specular_occlusion(s: &str) -> Result<SpecularOcclusion, String> {
-    s.parse()
-}
-
-fn parse_roughness(s: &str) -> Result<f32, String> {
-    let r: f32 = s
-        .trim()
-        .parse()
-        .map_err(|e| format!("`{s}` is not a number: {e}"))?;
-    if !(0.0..=1.0).contains(&r) {
-        return Err(format!("`{s}` is outside [0, 1]"));
-    }
-    Ok(r)
 }
 
 /// Largest side `--size` accepts: twice the 8192 every wgpu device supports, far past any
@@ -173,33 +131,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     };
     let gpu = open_gpu()?;
     let mut renderer = Renderer::new(&gpu, &scene, &settings)?;
-    if let Some(sun) = args.sun {
-        if sun.length() < 1e-6 {
-            bail!("--sun {sun} has no direction");
-        }
-        renderer.lighting.sun_direction = sun.normalize();
-    }
-    let lighting = &mut renderer.lighting;
-    // The two flags override each other, so at most one is set: the last given.
-    if args.no_multi_bounce {
-        lighting.multi_bounce = MultiBounce::None;
-    } else if let Some(form) = args.multi_bounce {
-        lighting.multi_bounce = form;
-    }
-    if let Some(mode) = args.specular_occlusion {
-        lighting.specular_occlusion = mode;
-    }
-    if let Some(roughness) = args.roughness {
-        lighting.roughness = roughness;
-    }
-    if lighting.specular_occlusion == SpecularOcclusion::Gtso && !settings.method.has_bent_normals()
-    {
-        eprintln!(
-            "note: {} has no bent normals: gtso uses the surface normal, keeping the AO's \
-             amount but not the direction of the openings",
-            settings.method.name()
-        );
-    }
+    args.lighting
+        .apply(&mut renderer.lighting, settings.method)?;
     for note in
         crate::sequence::single_frame_notes(args.frames, args.path, settings.temporal.enabled)
     {

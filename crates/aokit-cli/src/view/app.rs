@@ -8,6 +8,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, anyhow};
 use aokit::{AdapterKind, AoPipeline};
+use aokit_scene::composite::Lighting;
 use aokit_scene::{Camera, Renderer, Scene};
 use glam::Vec3;
 use winit::application::ApplicationHandler;
@@ -36,6 +37,9 @@ pub struct Start {
     pub split: Option<Split>,
     /// The moving parts and the camera path.
     pub motion: Motion,
+    /// The lit image's lighting (`--sun`, `--multi-bounce`, `--specular-occlusion`,
+    /// `--roughness`).
+    pub lighting: Lighting,
     /// Trace the reference of the starting view (and, with a screenshot, wait for it).
     pub reference: bool,
     /// Rays per pixel of the reference; `None`: [`truth::default_spp`].
@@ -193,13 +197,15 @@ pub const SETTLE_FRAMES: u32 = 32;
 fn scene_key(view: &ViewState) -> String {
     let camera = &view.camera;
     format!(
-        "{:?} {:?} {:?} {:?} {:?} {} {:?} {} {:?}",
+        "{:?} {:?} {:?} {:?} {:?} {} {:?} {:?} {:?} {} {:?}",
         camera.eye,
         camera.forward,
         view.a.settings,
         view.split.as_ref().map(|split| split.b.settings),
         view.mode,
         view.scale,
+        view.multi_bounce,
+        view.specular_occlusion,
         view.area,
         view.truth.ready,
         view.motion
@@ -239,6 +245,7 @@ impl Running {
             eprintln!("note: {note}");
         }
         let mut renderer = Renderer::new(gpu, &start.scene, &start.config.settings)?;
+        renderer.lighting = start.lighting;
         let timestamps = renderer.enable_timing(gpu);
         let egui_ctx = egui::Context::default();
         let egui_state = egui_winit::State::new(
@@ -262,6 +269,8 @@ impl Running {
             split: start.split,
             mode: start.mode,
             scale,
+            multi_bounce: renderer.lighting.multi_bounce,
+            specular_occlusion: renderer.lighting.specular_occlusion,
             panel: start.panel,
             timings: Timings::default(),
             timestamps,
@@ -614,6 +623,8 @@ impl Running {
         let size = frame::internal_size(self.view.area, self.view.scale);
         self.view.render_size = size;
         self.renderer.debug_views = self.view.mode.debug_view().into_iter().collect();
+        self.renderer.lighting.multi_bounce = self.view.multi_bounce;
+        self.renderer.lighting.specular_occlusion = self.view.specular_occlusion;
         // The frame after the last one rendered, while the motion plays (the panel names the
         // frame on screen).
         if self.frame_index > 0 && self.view.motion.advance() {

@@ -24,9 +24,11 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
 use aokit_scene::Scene;
+use aokit_scene::composite::Lighting;
 use clap::Args;
 
 use crate::camera_args::CameraArgs;
+use crate::lighting_args::LightingArgs;
 use crate::render::parse_size;
 use crate::settings_args::{OverrideArgs, SettingsArgs};
 
@@ -67,6 +69,8 @@ pub struct ViewArgs {
     pub split: SplitArgs,
     #[command(flatten)]
     pub motion: MotionArgs,
+    #[command(flatten)]
+    pub lighting: LightingArgs,
     /// Trace the CPU reference of the starting view as soon as the window shows; with
     /// --screenshot, the frames are counted once it is traced, and the RMSE is printed.
     #[arg(long)]
@@ -202,11 +206,14 @@ pub fn run(args: &ViewArgs) -> Result<()> {
     let frames = args
         .frames
         .or(args.screenshot.as_ref().map(|_| SCREENSHOT_FRAMES));
+    let mut lighting = Lighting::default();
+    args.lighting.apply(&mut lighting, config.settings.method)?;
     app::run(app::Start {
         scene,
         camera,
         config,
         split,
+        lighting,
         motion: motion::Motion {
             animate: args.motion.animate,
             path: args.motion.path,

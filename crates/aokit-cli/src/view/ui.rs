@@ -3,6 +3,7 @@
 
 use aokit::{AoSettings, Method, Preset};
 use aokit_scene::Camera;
+use aokit_scene::composite::{MultiBounce, SpecularOcclusion};
 
 use super::camera::{CameraMode, ViewCamera};
 use super::frame::{DisplayMode, HISTORY, Timings};
@@ -29,6 +30,10 @@ pub struct ViewState {
     pub mode: DisplayMode,
     /// Internal render scale.
     pub scale: f32,
+    /// How the lit composite turns the AO into the occlusion of ambient diffuse light.
+    pub multi_bounce: MultiBounce,
+    /// How the lit composite occludes the ambient specular term.
+    pub specular_occlusion: SpecularOcclusion,
     /// Whether the side panel shows.
     pub panel: bool,
     /// Frame and pass times.
@@ -339,6 +344,26 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
                 ui.selectable_value(&mut view.mode, mode, mode.name());
             }
         });
+    egui::ComboBox::new("multi-bounce", "multi-bounce")
+        .selected_text(view.multi_bounce.name())
+        .show_ui(ui, |ui| {
+            for form in MultiBounce::ALL {
+                ui.selectable_value(&mut view.multi_bounce, form, form.name());
+            }
+        })
+        .response
+        .on_hover_text(
+            "how the lit image darkens ambient diffuse light by the AO (--multi-bounce)",
+        );
+    egui::ComboBox::new("specular occlusion", "specular occlusion")
+        .selected_text(view.specular_occlusion.name())
+        .show_ui(ui, |ui| {
+            for mode in SpecularOcclusion::ALL {
+                ui.selectable_value(&mut view.specular_occlusion, mode, mode.name());
+            }
+        })
+        .response
+        .on_hover_text("how the lit image occludes ambient reflections (--specular-occlusion)");
     ui.add(egui::Slider::new(&mut view.scale, 0.1..=2.0).text("internal scale"))
         .on_hover_text("fraction of the view's pixels rendered, then stretched to the view");
     ui.label(format!(

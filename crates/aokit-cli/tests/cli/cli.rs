@@ -184,7 +184,7 @@ fn bad_arguments_exit_2_and_name_the_problem() {
         ),
         (
             &["render", "--set", "sample_depth=exact"],
-            "`nearest` or `interpolated`",
+            "one of `nearest`, `interpolated`, not `exact`",
         ),
         (&["render", "--settings", "missing.toml"], "missing.toml"),
         (&["render", "--settings", "bad.toml"], "bad.toml"),

@@ -590,3 +590,38 @@ fn resizing_to_one_pixel_hiding_and_restoring_the_window_keep_it_rendering() {
         "the corner ({corner}) should be darker than the open floor ({floor})"
     );
 }
+
+#[test]
+fn the_lighting_flags_reach_the_lit_image_as_in_render() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let corner_of = |form: &str| {
+        let shot = format!("{form}.png");
+        let out = aokit_in_xvfb(
+            dir.path(),
+            &[
+                "view",
+                "--scene",
+                "room",
+                "--no-panel",
+                "--window-size",
+                "320x180",
+                "--frames",
+                "3",
+                "--multi-bounce",
+                form,
+                "--screenshot",
+                &shot,
+            ],
+        );
+        ok(&out);
+        let shot = image::open(dir.path().join(shot)).unwrap().to_rgba8();
+        mean_grey(&shot, 0.31, 0.5, 0.02)
+    };
+    // Multi-bounce gives back light the raw AO takes: the corner is brighter with the closed
+    // form (the brightest of the forms) than with none.
+    let (none, closed) = (corner_of("none"), corner_of("closed-form"));
+    assert!(closed > none + 3.0, "corner: none {none}, closed-form {closed}");
+}
