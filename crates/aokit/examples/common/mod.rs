@@ -1,8 +1,8 @@
 //! The renderer the examples share, standing in for yours: a few boxes, a column and a sphere on
 //! a ground plane, drawn by a small headless forward renderer with a depth prepass and a lighting
 //! pass. What it does for aokit is what its prepass writes: reverse-Z `Depth32Float` depth with
-//! `TEXTURE_BINDING` usage and view-space normals in aokit's oct32 encoding. Each example runs
-//! aokit between the two passes and brings the lighting shader that uses the AO.
+//! `TEXTURE_BINDING` usage, view-space normals in aokit's oct32 encoding and motion vectors. Each
+//! example runs aokit between the two passes and brings the lighting shader that uses the AO.
 
 use std::error::Error;
 use std::fmt;
@@ -18,6 +18,8 @@ pub type Result<T> = std::result::Result<T, Box<dyn Error>>;
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// View-space normals, oct32: aokit's default `NormalEncoding`, stored in `R32Uint`.
 pub const NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
+/// Motion vectors in pixels: one of the formats `AoInputs::motion_vectors` takes.
+pub const MOTION_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
 /// The lit image: sRGB-encoded on write, so the PNG takes its bytes as they are.
 pub const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 /// Size when the command line names none.
@@ -29,6 +31,8 @@ const SKY: Vec3 = Vec3::new(0.45, 0.56, 0.72);
 const SUN_DIRECTION: Vec3 = Vec3::new(0.5, 0.8, 0.35);
 const SUN: Vec3 = Vec3::new(0.6, 0.55, 0.48);
 
+/// Where the examples' camera stands (it looks at a point between the boxes and the sphere).
+const EYE: Vec3 = Vec3::new(0.6, 2.6, 5.6);
 /// The box in front, where the tests look for contact shadow: centre, half extents, yaw.
 const FRONT_BOX: (Vec3, Vec3, f32) = (Vec3::new(-1.5, 0.5, 0.2), Vec3::splat(0.5), 0.45);
 /// Open ground, farther than the AO radius from everything, for the tests' comparison.
@@ -107,13 +111,16 @@ pub struct Camera {
 
 impl Camera {
     fn new(size: [u32; 2]) -> Self {
-        let eye = Vec3::new(0.6, 2.6, 5.6);
+        Self::orbiting(0.0, size)
+    }
+
+    /// The examples' view turned by `degrees` (counter-clockwise seen from above) about the
+    /// vertical axis through the point it looks at, for an image of `size` pixels.
+    pub fn orbiting(degrees: f32, size: [u32; 2]) -> Self {
+        let target = Vec3::new(-0.2, 0.5, 0.0);
+        let eye = target + Quat::from_rotation_y(degrees.to_radians()) * (EYE - target);
         Self {
-            view_from_world: glam::camera::rh::view::look_at_mat4(
-                eye,
-                Vec3::new(-0.2, 0.5, 0.0),
-                Vec3::Y,
-            ),
+            view_from_world: glam::camera::rh::view::look_at_mat4(eye, target, Vec3::Y),
             projection: Projection::perspective(
                 50f32.to_radians(),
                 size[0] as f32 / size[1] as f32,
@@ -123,7 +130,7 @@ impl Camera {
         }
     }
 
-    fn clip_from_world(&self) -> Mat4 {
+    pub fn clip_from_world(&self) -> Mat4 {
         self.projection.clip_from_view() * self.view_from_world
     }
 
@@ -263,6 +270,57 @@ struct FrameUniforms {
     sun_direction: Vec4,
     sun_color: Vec4,
     sky_color: Vec4,
+    previous_clip_from_world: Mat4,
+    size: Vec4,
+}
+
+impl FrameUniforms {
+    /// `previous_clip_from_world`: the camera the last frame was drawn with, `None` on a first
+    /// frame or after a cut (no motion then).
+    fn new(camera: &Camera, previous_clip_from_world: Option<Mat4>, size: [u32; 2]) -> Self {
+        let clip_from_world = camera.clip_from_world();
+        Self {
+            clip_from_world,
+            view_from_world: camera.view_from_world,
+            sun_direction: camera
+                .view_from_world
+                .transform_vector3(SUN_DIRECTION.normalize())
+                .extend(0.0),
+            sun_color: SUN.extend(1.0),
+            sky_color: SKY.extend(1.0),
+            previous_clip_from_world: previous_clip_from_world.unwrap_or(clip_from_world),
+            size: Vec4::new(size[0] as f32, size[1] as f32, 0.0, 0.0),
+        }
+    }
+}
+
+/// The render targets, all of the window's size: what a resize makes again.
+struct Targets {
+    depth: wgpu::Texture,
+    normals: wgpu::Texture,
+    motion: wgpu::Texture,
+    color: wgpu::Texture,
+}
+
+impl Targets {
+    fn new(device: &wgpu::Device, size: [u32; 2]) -> Self {
+        let target = |label, format, usage| {
+            aokit::gpu::create_texture_2d(device, label, size, format, usage)
+        };
+        // TEXTURE_BINDING on depth, normals and motion vectors: aokit's compute passes read them.
+        let attachment = wgpu::TextureUsages::RENDER_ATTACHMENT;
+        let read = attachment | wgpu::TextureUsages::TEXTURE_BINDING;
+        Self {
+            depth: target("depth", DEPTH_FORMAT, read),
+            normals: target("normals", NORMALS_FORMAT, read),
+            motion: target("motion", MOTION_FORMAT, read),
+            color: target(
+                "color",
+                COLOR_FORMAT,
+                attachment | wgpu::TextureUsages::COPY_SRC,
+            ),
+        }
+    }
 }
 
 /// The forward renderer: its targets, geometry and the two passes' pipelines.
@@ -273,7 +331,15 @@ pub struct Renderer {
     pub depth: wgpu::Texture,
     /// oct32 view-space normals from the prepass, `RENDER_ATTACHMENT | TEXTURE_BINDING`.
     pub normals: wgpu::Texture,
+    /// Motion vectors from the prepass (`MOTION_FORMAT`), `RENDER_ATTACHMENT | TEXTURE_BINDING`:
+    /// 0 everywhere until [`Renderer::set_camera`] names a previous camera.
+    pub motion: wgpu::Texture,
     color: wgpu::Texture,
+    #[allow(
+        dead_code,
+        reason = "written by `set_camera`, which only `frame_loop` calls"
+    )]
+    uniforms: wgpu::Buffer,
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
     index_count: u32,
@@ -311,20 +377,11 @@ impl Renderer {
             bytemuck::cast_slice(&mesh.indices),
             wgpu::BufferUsages::INDEX,
         );
-        let uniforms = FrameUniforms {
-            clip_from_world: camera.clip_from_world(),
-            view_from_world: camera.view_from_world,
-            sun_direction: camera
-                .view_from_world
-                .transform_vector3(SUN_DIRECTION.normalize())
-                .extend(0.0),
-            sun_color: SUN.extend(1.0),
-            sky_color: SKY.extend(1.0),
-        };
+        let uniforms = FrameUniforms::new(&camera, None, size);
         let uniforms = buffer(
             "frame",
             bytemuck::bytes_of(&uniforms),
-            wgpu::BufferUsages::UNIFORM,
+            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
         );
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("frame"),
@@ -357,8 +414,9 @@ impl Renderer {
         });
         let pipeline = |fragment,
                         layouts: &[Option<&wgpu::BindGroupLayout>],
-                        format: wgpu::TextureFormat,
+                        formats: &[wgpu::TextureFormat],
                         compare| {
+            let targets: Vec<_> = formats.iter().map(|&f| Some(f.into())).collect();
             let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(fragment),
                 bind_group_layouts: layouts,
@@ -396,7 +454,7 @@ impl Renderer {
                     module: &module,
                     entry_point: Some(fragment),
                     compilation_options: Default::default(),
-                    targets: &[Some(format.into())],
+                    targets: &targets,
                 }),
                 multiview_mask: None,
                 cache: None,
@@ -406,32 +464,30 @@ impl Renderer {
         let prepass = pipeline(
             "fs_prepass",
             &[Some(&frame_layout)],
-            NORMALS_FORMAT,
+            &[NORMALS_FORMAT, MOTION_FORMAT],
             wgpu::CompareFunction::Greater,
         );
         let lighting = pipeline(
             "fs_lighting",
             &[Some(&frame_layout), Some(lighting_layout)],
-            COLOR_FORMAT,
+            &[COLOR_FORMAT],
             wgpu::CompareFunction::GreaterEqual,
         );
 
-        let target = |label, format, usage| {
-            aokit::gpu::create_texture_2d(device, label, size, format, usage)
-        };
-        // TEXTURE_BINDING on depth and normals: aokit's compute passes read them.
-        let attachment = wgpu::TextureUsages::RENDER_ATTACHMENT;
-        let read = attachment | wgpu::TextureUsages::TEXTURE_BINDING;
+        let Targets {
+            depth,
+            normals,
+            motion,
+            color,
+        } = Targets::new(device, size);
         Self {
             size,
             camera,
-            depth: target("depth", DEPTH_FORMAT, read),
-            normals: target("normals", NORMALS_FORMAT, read),
-            color: target(
-                "color",
-                COLOR_FORMAT,
-                attachment | wgpu::TextureUsages::COPY_SRC,
-            ),
+            depth,
+            normals,
+            motion,
+            color,
+            uniforms,
             vertices,
             indices,
             index_count: mesh.indices.len() as u32,
@@ -441,14 +497,15 @@ impl Renderer {
         }
     }
 
-    /// Records the depth prepass: depth, cleared to the far plane (0, reverse-Z), and normals.
+    /// Records the depth prepass: depth, cleared to the far plane (0, reverse-Z), normals and
+    /// motion vectors (0 where nothing is drawn).
     pub fn prepass(&self, encoder: &mut wgpu::CommandEncoder) {
         let clear = wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT);
         let groups = [&self.frame];
         self.draw(
             encoder,
             &self.prepass,
-            &self.normals,
+            &[&self.normals, &self.motion],
             clear,
             wgpu::LoadOp::Clear(0.0),
             &groups,
@@ -468,7 +525,7 @@ impl Renderer {
         self.draw(
             encoder,
             &self.lighting,
-            &self.color,
+            &[&self.color],
             clear,
             wgpu::LoadOp::Load,
             &groups,
@@ -479,24 +536,33 @@ impl Renderer {
         &self,
         encoder: &mut wgpu::CommandEncoder,
         pipeline: &wgpu::RenderPipeline,
-        target: &wgpu::Texture,
+        targets: &[&wgpu::Texture],
         load: wgpu::LoadOp<wgpu::Color>,
         depth_load: wgpu::LoadOp<f32>,
         groups: &[&wgpu::BindGroup],
     ) {
-        let view = target.create_view(&Default::default());
+        let views: Vec<_> = targets
+            .iter()
+            .map(|t| t.create_view(&Default::default()))
+            .collect();
+        let attachments: Vec<_> = views
+            .iter()
+            .map(|view| {
+                Some(wgpu::RenderPassColorAttachment {
+                    view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load,
+                        store: wgpu::StoreOp::Store,
+                    },
+                })
+            })
+            .collect();
         let depth = self.depth.create_view(&Default::default());
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: None,
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load,
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
+            color_attachments: &attachments,
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &depth,
                 depth_ops: Some(wgpu::Operations {
@@ -573,6 +639,30 @@ impl Renderer {
                 .filter(|&i| (0..3).any(|c| rgb(i)[c].abs_diff(sky[c]) > 1))
                 .count(),
         })
+    }
+}
+
+/// What a frame loop adds: a camera per frame, and a window that changes size.
+#[allow(
+    dead_code,
+    reason = "`frame_loop` calls these; the other examples draw one frame of one camera"
+)]
+impl Renderer {
+    /// Makes the targets again at a new window size. The geometry and pipelines stay; the
+    /// caller sets a camera of the new aspect ratio next.
+    pub fn resize(&mut self, device: &wgpu::Device, size: [u32; 2]) {
+        let targets = Targets::new(device, size);
+        (self.depth, self.normals) = (targets.depth, targets.normals);
+        (self.motion, self.color) = (targets.motion, targets.color);
+        self.size = size;
+    }
+
+    /// This frame's camera, and the one the previous frame was drawn with (`None` on a first
+    /// frame or a cut) for the motion vectors.
+    pub fn set_camera(&mut self, queue: &wgpu::Queue, camera: Camera, previous: Option<Mat4>) {
+        let uniforms = FrameUniforms::new(&camera, previous, self.size);
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        self.camera = camera;
     }
 }
 
