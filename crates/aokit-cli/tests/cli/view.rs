@@ -623,5 +623,8 @@ fn the_lighting_flags_reach_the_lit_image_as_in_render() {
     // Multi-bounce gives back light the raw AO takes: the corner is brighter with the closed
     // form (the brightest of the forms) than with none.
     let (none, closed) = (corner_of("none"), corner_of("closed-form"));
-    assert!(closed > none + 3.0, "corner: none {none}, closed-form {closed}");
+    assert!(
+        closed > none + 3.0,
+        "corner: none {none}, closed-form {closed}"
+    );
 }
