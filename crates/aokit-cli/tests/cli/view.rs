@@ -628,3 +628,41 @@ fn the_lighting_flags_reach_the_lit_image_as_in_render() {
         "corner: none {none}, closed-form {closed}"
     );
 }
+
+#[test]
+fn every_built_in_scene_opens_and_draws() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for scene in ["room", "stairs", "thin", "open"] {
+        let shot = format!("{scene}.png");
+        let out = aokit_in_xvfb(
+            dir.path(),
+            &[
+                "view",
+                "--scene",
+                scene,
+                "--no-panel",
+                "--window-size",
+                "160x90",
+                "--frames",
+                "2",
+                "--screenshot",
+                &shot,
+            ],
+        );
+        let stdout = ok(&out);
+        assert!(
+            stdout.contains(&format!("wrote {shot} (160x90")),
+            "{stdout}"
+        );
+        // Lit: the sky and the shaded surfaces differ, whatever the scene.
+        let image = image::open(dir.path().join(&shot)).unwrap().to_rgba8();
+        let first = *image.get_pixel(0, 0);
+        assert!(
+            image.pixels().any(|p| p != &first),
+            "{scene}: a uniform image"
+        );
+    }
+}
