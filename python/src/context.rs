@@ -90,6 +90,8 @@ impl Context {
                     .external
                     .insert(ExternalAo::new(&self.gpu, settings, &passes)?),
             };
+            // Where the camera moved since the last frame: the temporal filter reprojects by it.
+            external.set_view_from_world(frame.camera.view_from_world);
             let frame_index = first_frame.wrapping_add(index as u32);
             outputs.push(if bent_normals {
                 external.run_with_bent_normals(&self.gpu, frame_index)?

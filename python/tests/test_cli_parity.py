@@ -117,3 +117,32 @@ def test_bent_normals_come_with_the_same_ao(ctx, gbuffer):
         gbuffer.depth, gbuffer.normals, camera=gbuffer.camera, settings={"bent_normals": True}
     )
     np.testing.assert_array_equal(ao, plain)
+
+
+def test_a_moving_sequence_with_the_temporal_filter_matches_ao_sequence(ctx, cli, tmp_path):
+    # Three frames orbiting the room, as `render --frames 3 --gbuffer` exports them; the record
+    # of their settings goes, so both sides run the defaults with the temporal filter named.
+    cli(
+        "render", "--scene", "room", "--size", "48x32", "--frames", "3", "--path", "orbit",
+        "--gbuffer", "--out", "s", cwd=tmp_path,
+    )
+    frames = tmp_path / "s" / "frames"
+    (frames / "ao-settings.json").unlink()
+    names = [f"{i:03}" for i in range(3)]
+    depths = [aokit.read_depth(frames / f"depth-{n}.exr") for n in names]
+    normals = [aokit.read_normals(frames / f"normal-{n}.exr") for n in names]
+    cameras = [aokit.Camera.from_json(frames / f"camera-{n}.json") for n in names]
+    settings = {"temporal.enabled": True}
+    ao = ctx.ao_batch(np.stack(depths), np.stack(normals), cameras=cameras, settings=settings)
+    cli(
+        "ao", "--sequence", str(frames), "--set", "temporal.enabled=true", "--out", "a",
+        cwd=tmp_path,
+    )
+    for i, n in enumerate(names):
+        expected = aokit.read_depth(tmp_path / "a" / "frames" / f"ao-{n}.exr")
+        np.testing.assert_array_equal(ao[i], expected, err_msg=f"frame {i}")
+    # The cameras' motion matters: held still, the same frames give another history.
+    still = ctx.ao_batch(
+        np.stack(depths), np.stack(normals), cameras=[cameras[0]] * 3, settings=settings
+    )
+    assert np.abs(still[2] - ao[2]).max() > 1e-3
