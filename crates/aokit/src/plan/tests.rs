@@ -202,6 +202,7 @@ fn below_full_resolution_with_a_normal_buffer_the_resample_reads_the_input_depth
 fn below_full_resolution_decoded_normals_run_the_linear_depth_pass_their_fallback_reads() {
     let mut settings = half(AoSettings::default());
     settings.normals.encoding = NormalEncoding::Rgba16f;
+    settings.spatial.enabled = false;
     let plan = plan(settings);
     assert_eq!(
         names(&plan),
