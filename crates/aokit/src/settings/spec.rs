@@ -417,7 +417,7 @@ impl SettingSpec {
     /// use aokit::{AoSettings, Method, Preset};
     /// let settings = AoSettings::preset(Method::Gtao, Preset::Low);
     /// let steps = find_setting("gtao.steps_per_side").unwrap();
-    /// assert_eq!(steps.get(&settings), SettingValue::Integer(1));
+    /// assert_eq!(steps.get(&settings), SettingValue::Integer(settings.gtao.steps_per_side));
     /// ```
     pub fn get(&self, settings: &AoSettings) -> SettingValue {
         (self.get)(settings)
