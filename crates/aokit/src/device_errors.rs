@@ -11,13 +11,33 @@ use std::sync::{Arc, Mutex, PoisonError};
 use crate::AoError;
 
 /// Why the device was lost, once its lost callback ran; shared between the callback and the
-/// pipeline that checks it.
+/// code that checks it ([`AoPipeline`](crate::AoPipeline) keeps one, and so can other GPU work
+/// on the device, such as a peer's passes).
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device) {
+/// use aokit::{AoError, DeviceLoss};
+/// let loss = DeviceLoss::watch(device);
+/// assert!(loss.check().is_ok());
+/// device.destroy();
+/// // wgpu runs the callback while polling, once the queue is idle.
+/// device.poll(wgpu::PollType::wait_indefinitely()).ok();
+/// assert!(matches!(loss.check(), Err(AoError::DeviceLost { .. })));
+/// # }
+/// ```
 #[derive(Clone, Debug, Default)]
-pub(crate) struct DeviceLoss(Arc<Mutex<Option<String>>>);
+pub struct DeviceLoss(Arc<Mutex<Option<String>>>);
 
 impl DeviceLoss {
     /// A record that `device`'s lost callback fills. A device has one lost callback: this
     /// replaces any set before.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device) {
+    /// let loss = aokit::DeviceLoss::watch(device);
+    /// assert!(loss.check().is_ok(), "a device just watched is not lost");
+    /// # }
+    /// ```
     pub fn watch(device: &wgpu::Device) -> Self {
         let loss = Self::default();
         device.set_device_lost_callback(loss.callback());
@@ -25,6 +45,14 @@ impl DeviceLoss {
     }
 
     /// A lost callback that records into `self`, for renderers that forward from their own.
+    ///
+    /// ```
+    /// let loss = aokit::DeviceLoss::default();
+    /// (loss.callback())(wgpu::DeviceLostReason::Destroyed, "gone".into());
+    /// assert_eq!(loss.check().unwrap_err().to_string(), aokit::AoError::DeviceLost {
+    ///     reason: "destroyed: gone".into()
+    /// }.to_string());
+    /// ```
     pub fn callback(&self) -> impl Fn(wgpu::DeviceLostReason, String) + Send + 'static {
         let loss = self.0.clone();
         move |reason, message| {
@@ -42,6 +70,11 @@ impl DeviceLoss {
     }
 
     /// [`AoError::DeviceLost`] once the device was lost.
+    ///
+    /// ```
+    /// let loss = aokit::DeviceLoss::default();
+    /// assert!(loss.check().is_ok());
+    /// ```
     pub fn check(&self) -> Result<(), AoError> {
         match &*self.0.lock().unwrap_or_else(PoisonError::into_inner) {
             Some(reason) => Err(AoError::DeviceLost {

@@ -14,6 +14,7 @@
 
 pub mod debug;
 mod device_errors;
+pub use device_errors::DeviceLoss;
 pub mod error;
 pub mod gpu;
 pub mod inputs;

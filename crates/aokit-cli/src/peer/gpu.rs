@@ -3,12 +3,11 @@
 //! term; on aokit's depth buffer and normals, timed with aokit's [`PassTimer`].
 
 use std::borrow::Cow;
-use std::sync::{Arc, Mutex};
 
 use anyhow::{Result, bail};
 use aokit::gpu::{create_texture_2d, create_texture_2d_mips, mip_view};
 use aokit::passes::bind;
-use aokit::{GpuError, PassTime, PassTimer, Projection};
+use aokit::{AoError, DeviceLoss, GpuError, PassTime, PassTimer, Projection};
 
 use super::constants::GtaoConstants;
 use super::source::Shaders;
@@ -125,26 +124,6 @@ fn denoise_entries(format: wgpu::TextureFormat) -> Vec<wgpu::BindGroupLayoutEntr
     ]
 }
 
-/// The message of the device's loss, once it is lost (`Device::set_device_lost_callback`).
-#[derive(Clone, Default)]
-struct DeviceLost(Arc<Mutex<Option<String>>>);
-
-impl DeviceLost {
-    /// Watches `device` from now on.
-    fn watch(device: &wgpu::Device) -> Self {
-        let lost = Self::default();
-        let message = lost.0.clone();
-        device.set_device_lost_callback(move |_, text| {
-            *message.lock().unwrap_or_else(|e| e.into_inner()) = Some(text);
-        });
-        lost
-    }
-
-    fn take(&self) -> Option<String> {
-        self.0.lock().unwrap_or_else(|e| e.into_inner()).take()
-    }
-}
-
 /// A compute pipeline from SPIR-V `words`, through naga or passed through; wgpu's validation
 /// errors and the driver's own failures come back as errors.
 fn pass(
@@ -154,7 +133,7 @@ fn pass(
     words: &[u32],
     path: ShaderPath,
     entries: &[wgpu::BindGroupLayoutEntry],
-    lost: &DeviceLost,
+    lost: &DeviceLoss,
 ) -> Result<Pass> {
     let internal = device.push_error_scope(wgpu::ErrorFilter::Internal);
     let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -210,7 +189,7 @@ fn pass(
     // through with "NVVM compilation failed") fails the pipeline, and wgpu takes the device for
     // lost without an error to catch: caught here, it stops the run with the reason rather
     // than a panic at the next use of the device.
-    if let Some(message) = lost.take() {
+    if let Err(AoError::DeviceLost { reason: message }) = lost.check() {
         bail!(
             "the driver failed to build XeGTAO's {name} pass from the SPIR-V given it {}, and \
              the device is lost: {message}{hint}",
@@ -264,7 +243,7 @@ impl XeGtao {
         let storage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
         let readable = storage | wgpu::TextureUsages::COPY_SRC;
         let term = |label| create_texture_2d(device, label, size, TERM_FORMAT, storage);
-        let lost = DeviceLost::watch(device);
+        let lost = DeviceLoss::watch(device);
         Ok(Self {
             size,
             settings: settings.clone(),
