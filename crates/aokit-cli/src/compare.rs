@@ -27,6 +27,7 @@ use crate::reference::ReferenceInfo;
 use crate::render::{open_gpu, open_gpu_with, parse_size};
 use crate::sequence::{SequenceFrame, score_sequence};
 use crate::settings_args::OverrideArgs;
+use crate::view_sets::ViewSet;
 
 #[derive(Args, Debug)]
 pub struct CompareArgs {
@@ -38,6 +39,11 @@ pub struct CompareArgs {
     /// A view as SCENE or SCENE@CAMERA; repeat for several views in one report.
     #[arg(long, value_name = "SCENE[@CAMERA]", conflicts_with = "inputs")]
     pub view: Vec<String>,
+    /// A named set of views instead of --view: `tuning` (the views `aokit tune` fits the
+    /// presets on) or `held-out` (views of scenes it never reads, made by `bash
+    /// scripts/fetch-scenes.sh`); paths are from the repository root (docs/quality.md).
+    #[arg(long, value_name = "SET", conflicts_with_all = ["view", "scene", "inputs"])]
+    pub views: Option<ViewSet>,
     /// Score `aokit ao` on the passes in DIR (depth.exr, optional normal.exr and back_depth.exr, camera.json)
     /// against DIR/reference.exr, with the radius from DIR/reference.json unless --radius is given.
     #[arg(long, value_name = "DIR")]
@@ -623,14 +629,18 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     let mut scored = Vec::new();
     if let Some(dir) = &args.inputs {
         scored.push(score_inputs(&gpu, args, &methods, dir)?);
-    } else if args.view.is_empty() {
+    } else if args.view.is_empty() && args.views.is_none() {
         let scene = Scene::open(args.scene.as_deref().unwrap_or("room"))?;
         let camera = args.camera.resolve(&scene)?;
         scored.push(score_scene_view(
             &gpu, args, &methods, &cache_dir, &scene, &camera,
         )?);
     } else {
-        for view in &args.view {
+        let views = match args.views {
+            Some(set) => set.present_views()?,
+            None => args.view.clone(),
+        };
+        for view in &views {
             let (scene, camera) = open_view(view)?;
             scored.push(score_scene_view(
                 &gpu, args, &methods, &cache_dir, &scene, &camera,

@@ -26,11 +26,13 @@ use crate::cache;
 use crate::compare::{methods, open_view};
 use crate::export::create_dir;
 use crate::render::{open_gpu, parse_size};
+use crate::view_sets;
 
 #[derive(Args, Debug)]
 pub struct TuneArgs {
-    /// A view as SCENE or SCENE@CAMERA; repeat for several (default: the built-in room,
-    /// stairs and thin, and Sponza's four cameras from scenes/sponza.obj).
+    /// A view as SCENE or SCENE@CAMERA; repeat for several (default: the tuning views, the
+    /// built-in room, stairs and thin, and Sponza's four cameras from scenes/sponza.obj). A
+    /// view of a held-out scene is refused (docs/quality.md).
     #[arg(long, value_name = "SCENE[@CAMERA]")]
     pub view: Vec<String>,
     /// Image size of every view.
@@ -114,17 +116,6 @@ fn settings_file(tuned: &Tuned) -> Result<String> {
         body.join("\n")
     ))
 }
-
-/// The views searched when none is named.
-const DEFAULT_VIEWS: [&str; 7] = [
-    "room",
-    "stairs",
-    "thin",
-    "scenes/sponza.obj@atrium",
-    "scenes/sponza.obj@arcade",
-    "scenes/sponza.obj@gallery",
-    "scenes/sponza.obj@floor",
-];
 
 /// Step spacings searched for the marching methods.
 const STEP_POWERS: &[f32] = &[1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0];
@@ -600,15 +591,23 @@ fn subject(method: Method, back_faces: bool) -> String {
     }
 }
 
+/// The views a search reads: those named, or the tuning views; never a held-out one.
+fn view_specs(named: &[String]) -> Result<Vec<String>> {
+    let specs: Vec<String> = if named.is_empty() {
+        view_sets::TUNING.iter().map(|s| s.to_string()).collect()
+    } else {
+        named.to_vec()
+    };
+    for spec in &specs {
+        view_sets::check_not_held_out(spec)?;
+    }
+    Ok(specs)
+}
+
 fn load_views(gpu: &GpuContext, args: &TuneArgs) -> Result<Vec<View>> {
     let cache_dir = args.cache.clone().unwrap_or_else(cache::default_dir);
-    let specs: Vec<String> = if args.view.is_empty() {
-        DEFAULT_VIEWS.iter().map(|s| s.to_string()).collect()
-    } else {
-        args.view.clone()
-    };
     let mut views = Vec::new();
-    for spec in &specs {
+    for spec in &view_specs(&args.view)? {
         let (scene, camera) = open_view(spec)?;
         let radius = scene.suggested_radius.unwrap_or(1.0);
         let options = AoOptions {
@@ -835,7 +834,8 @@ pub fn run(args: &TuneArgs) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Candidate, Fit, pair_moves};
+    use super::{Candidate, Fit, pair_moves, view_specs};
+    use crate::view_sets::{HELD_OUT, TUNING};
     use aokit::{AoSettings, Method, Preset};
 
     /// Which of a candidate's parameters differ from `at`'s, by name.
@@ -893,5 +893,15 @@ mod tests {
         let free = Fit::of(&[0.2, 0.2], None);
         assert_eq!(free.excess, 0.0);
         assert!(free.improved_by(&Fit::of(&[0.1, 0.2], None)));
+    }
+
+    #[test]
+    fn a_search_reads_the_tuning_views_and_never_a_held_out_one() {
+        assert_eq!(view_specs(&[]).unwrap(), TUNING);
+        for view in HELD_OUT {
+            let named = [TUNING[0].to_string(), view.to_string()];
+            let error = view_specs(&named).unwrap_err().to_string();
+            assert!(error.contains("held-out scene"), "{error}");
+        }
     }
 }
