@@ -12,6 +12,7 @@ mod ground_truth;
 mod peer;
 mod robustness;
 mod roundtrip;
+mod sequences;
 mod settings;
 mod suspicious;
 mod tune;
