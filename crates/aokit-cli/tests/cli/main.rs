@@ -10,6 +10,7 @@ mod cli;
 mod composite;
 mod ground_truth;
 mod peer;
+mod provenance;
 mod robustness;
 mod roundtrip;
 mod sequences;
