@@ -402,7 +402,7 @@ impl Renderer {
     /// let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?;
     /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
     /// let outputs = pipeline.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
-    ///     normals: Some(&gbuffer.normals),
+    ///     normals: Some((&gbuffer.normals).into()),
     ///     view_from_world: camera.view_from_world(),
     ///     ..AoInputs::new(&gbuffer.depth, projection)
     /// })?;

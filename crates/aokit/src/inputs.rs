@@ -174,7 +174,7 @@ impl<'a> AoInputs<'a> {
     /// # fn f(depth: &wgpu::Texture, normals: &wgpu::Texture, view: glam::Mat4, frame: u32) {
     /// let projection = aokit::Projection::perspective(1.0, 16.0 / 9.0, 0.1, None);
     /// let inputs = aokit::AoInputs {
-    ///     normals: Some(normals),
+    ///     normals: Some(normals.into()),
     ///     view_from_world: view,
     ///     frame_index: frame,
     ///     ..aokit::AoInputs::new(depth, projection)

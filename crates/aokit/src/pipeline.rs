@@ -178,7 +178,7 @@ pub struct AoOutputs<'a> {
 /// let mut pipeline = AoPipeline::new(device, queue, &AoSettings::default())?;
 /// let mut encoder = device.create_command_encoder(&Default::default());
 /// let outputs = pipeline.encode(device, queue, &mut encoder, &AoInputs {
-///     normals: Some(normals),
+///     normals: Some(normals.into()),
 ///     ..AoInputs::new(depth, projection)
 /// })?;
 /// // ... bind `outputs.ao_view` in your lighting pass ...
