@@ -85,21 +85,50 @@ impl<'a> AoTexture<'a> {
     }
 
     /// The whole texture, or the parent of the view.
+    ///
+    /// ```no_run
+    /// # fn f(view: &wgpu::TextureView, texture: &wgpu::Texture) {
+    /// let input = aokit::AoTexture::view(view, [640, 360], wgpu::TextureFormat::R32Float);
+    /// // A resize remakes the texture; a view kept from before still points at the old one.
+    /// assert!(*input.texture() == *texture, "view of a stale texture");
+    /// # }
+    /// ```
     pub fn texture(&self) -> &'a wgpu::Texture {
         self.texture
     }
 
     /// Width and height in pixels.
+    ///
+    /// ```no_run
+    /// # fn f(depth: &wgpu::Texture) {
+    /// let input = aokit::AoTexture::from(depth);
+    /// assert_eq!(input.size(), [depth.width(), depth.height()]);
+    /// # }
+    /// ```
     pub fn size(&self) -> [u32; 2] {
         self.size
     }
 
     /// The format the pipeline reads.
+    ///
+    /// ```no_run
+    /// # fn f(depth: &wgpu::Texture) {
+    /// // Hardware depth is linearised with the projection; R32Float is read as linear already.
+    /// let hardware = aokit::AoTexture::from(depth).format().has_depth_aspect();
+    /// # }
+    /// ```
     pub fn format(&self) -> wgpu::TextureFormat {
         self.format
     }
 
     /// Samples per pixel (a view has its parent's).
+    ///
+    /// ```no_run
+    /// # fn f(depth: &wgpu::Texture) {
+    /// // Multisampled depth is read at sample 0.
+    /// let msaa = aokit::AoTexture::from(depth).sample_count() > 1;
+    /// # }
+    /// ```
     pub fn sample_count(&self) -> u32 {
         self.texture.sample_count()
     }
