@@ -711,11 +711,11 @@ fn submit_frame(
             &gpu.queue,
             encoder,
             &AoInputs {
-                normals: Some(&gbuffer.normals),
+                normals: Some((&gbuffer.normals).into()),
                 view_from_world: view.view_from_world,
                 frame_index,
-                motion_vectors: Some(&gbuffer.motion),
-                back_depth: gbuffer.back_depth.as_ref(),
+                motion_vectors: Some((&gbuffer.motion).into()),
+                back_depth: gbuffer.back_depth.as_ref().map(Into::into),
                 ..AoInputs::new(&gbuffer.depth, view.projection)
             },
         )?;

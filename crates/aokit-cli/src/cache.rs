@@ -138,7 +138,10 @@ pub fn reference(
         camera.view_from_world(),
     )?;
     // Written last: its presence marks a complete entry.
-    write_json(&dir.join("reference.json"), &ReferenceInfo::new(options))?;
+    write_json(
+        &dir.join("reference.json"),
+        &ReferenceInfo::new(scene, camera, size, options),
+    )?;
     eprintln!("reference: {} (traced, cached)", dir.display());
     Ok(image)
 }

@@ -414,8 +414,8 @@ impl Evaluator<'_> {
                 queue,
                 &mut encoder,
                 &AoInputs {
-                    normals: Some(&view.gbuffer.normals),
-                    back_depth: view.gbuffer.back_depth.as_ref(),
+                    normals: Some((&view.gbuffer.normals).into()),
+                    back_depth: view.gbuffer.back_depth.as_ref().map(Into::into),
                     ..AoInputs::new(&view.gbuffer.depth, view.projection)
                 },
             )?;

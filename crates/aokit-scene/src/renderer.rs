@@ -402,7 +402,7 @@ impl Renderer {
     /// let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?;
     /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
     /// let outputs = pipeline.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
-    ///     normals: Some(&gbuffer.normals),
+    ///     normals: Some((&gbuffer.normals).into()),
     ///     view_from_world: camera.view_from_world(),
     ///     ..AoInputs::new(&gbuffer.depth, projection)
     /// })?;
@@ -573,12 +573,12 @@ impl Renderer {
         self.shadow_pass
             .encode(queue, &mut encoder, &self.mesh, &sun);
         let inputs = AoInputs {
-            normals: Some(&gbuffer.normals),
+            normals: Some((&gbuffer.normals).into()),
             view_from_world,
             frame_index,
-            motion_vectors: self.use_motion_vectors.then_some(&gbuffer.motion),
+            motion_vectors: self.use_motion_vectors.then_some((&gbuffer.motion).into()),
             reset_history,
-            back_depth: gbuffer.back_depth.as_ref(),
+            back_depth: gbuffer.back_depth.as_ref().map(Into::into),
             ..AoInputs::new(&gbuffer.depth, projection)
         };
         let shading = Shading {

@@ -127,9 +127,10 @@ pub struct AoOutputs<'a> {
     pub working_linear_depth: &'a wgpu::Texture,
     /// The view-space normals, oct32 (`R32Uint`, see
     /// [`normals::unpack_oct32`](crate::normals::unpack_oct32)), at the input's size: the input
-    /// texture itself when it is oct32 in view space, else the input decoded (and turned into
-    /// view space) or the normals reconstructed from depth. The kernel read these, or below
-    /// full resolution the downsample's copy.
+    /// texture itself when it is oct32 in view space (given as a view, the view's texture:
+    /// bind `normals_view`, the view itself), else the input decoded (and turned into view
+    /// space) or the normals reconstructed from depth. The kernel read these, or below full
+    /// resolution the downsample's copy.
     pub normals: &'a wgpu::Texture,
     /// A view of [`AoOutputs::normals`] for binding.
     pub normals_view: &'a wgpu::TextureView,
@@ -177,7 +178,7 @@ pub struct AoOutputs<'a> {
 /// let mut pipeline = AoPipeline::new(device, queue, &AoSettings::default())?;
 /// let mut encoder = device.create_command_encoder(&Default::default());
 /// let outputs = pipeline.encode(device, queue, &mut encoder, &AoInputs {
-///     normals: Some(normals),
+///     normals: Some(normals.into()),
 ///     ..AoInputs::new(depth, projection)
 /// })?;
 /// // ... bind `outputs.ao_view` in your lighting pass ...
@@ -429,13 +430,12 @@ impl AoPipeline {
         let scaled = ViewUniforms::scaled(projection, size, plan.scale, frame_index);
         queue.write_buffer(&self.working_view_uniforms, 0, bytemuck::bytes_of(&scaled));
 
-        self.input_normals_view = inputs.normals.map(|n| n.create_view(&Default::default()));
-        let motion_vectors = inputs
-            .motion_vectors
-            .map(|t| t.create_view(&Default::default()));
+        let whole = wgpu::TextureAspect::All;
+        self.input_normals_view = inputs.normals.map(|n| n.bind(whole));
+        let motion_vectors = inputs.motion_vectors.map(|t| t.bind(whole));
         let mut views = Views {
             targets,
-            input_depth: &DepthInput::view(inputs.depth),
+            input_depth: &DepthInput::view(&inputs.depth),
             input_normals: self.input_normals_view.as_ref(),
             motion_vectors: motion_vectors.as_ref(),
             history: None,
@@ -487,7 +487,10 @@ impl AoPipeline {
         };
         let (normals, normals_view) = match plan.normals {
             Target::InputNormals => (
-                inputs.normals.expect("planned with input normals"),
+                inputs
+                    .normals
+                    .expect("planned with input normals")
+                    .texture(),
                 self.input_normals_view.as_ref().expect("made by encode"),
             ),
             target => (&made(target).0, &made(target).1),
