@@ -18,6 +18,7 @@ pub use device_errors::DeviceLoss;
 pub mod error;
 pub mod gpu;
 pub mod inputs;
+mod methods;
 pub mod noise;
 pub mod normals;
 pub mod occlusion;
