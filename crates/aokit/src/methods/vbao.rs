@@ -80,6 +80,13 @@ impl VbaoSettings {
     }
 }
 
+impl AoSettings {
+    /// Whether the frame reads back-face depth: `vbao` measuring its occluders.
+    pub(crate) fn reads_back_faces(&self) -> bool {
+        self.method == Method::Vbao && self.vbao.back_faces
+    }
+}
+
 /// `vbao`'s values at `preset` with [`VbaoSettings::back_faces`] on, tuned as the others are:
 /// its knob is then the least thickness, for occluders whose back faces lie closer than that
 /// or were not seen.
