@@ -173,7 +173,11 @@ pub struct Candidate {
     pub split: [u32; 2],
 }
 
-/// The setting each method's knob is.
+/// The setting each method's knob is: the one its preset rows set in the library (`Knob` in
+/// crates/aokit/src/methods/; tests/cli/tune.rs compares the presets with the table this
+/// writes). The search (these names, [`Candidate`]'s fields, the grids of `dimensions`) stays
+/// with the tool rather than in each method's module: it is how `aokit tune` measures, not
+/// what the library runs.
 pub fn knob_name(method: Method) -> &'static str {
     match method {
         Method::SsaoCrytek | Method::Ssao | Method::Sao | Method::Ue4Ssao => "bias",

@@ -19,6 +19,7 @@ pub mod error;
 pub mod gpu;
 mod input_texture;
 pub mod inputs;
+mod methods;
 pub mod noise;
 pub mod normals;
 pub mod occlusion;

@@ -9,7 +9,7 @@ use crate::passes::input::linear_depth::DepthInput;
 use crate::passes::kernel::depth_mips::atlas_format;
 use crate::plan::{At, FrameInputs, FramePlan, Pass, Target};
 use crate::record::{Passes, Views};
-use crate::settings::{AoSettings, Method, NormalSpace};
+use crate::settings::{AoSettings, NormalSpace};
 use crate::targets::{Layout, Targets};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
@@ -50,8 +50,7 @@ fn check_inputs(
     if world_normals && !(determinant.is_finite() && determinant.abs() > 1e-6) {
         return Err(InputError::ViewFromWorld { determinant }.into());
     }
-    let back_faces = settings.method == Method::Vbao && settings.vbao.back_faces;
-    if back_faces && inputs.back_depth.is_none() {
+    if settings.reads_back_faces() && inputs.back_depth.is_none() {
         return Err(AoError::MissingBackDepth);
     }
     Ok(size)
