@@ -46,8 +46,9 @@ pub use projection::{Projection, ProjectionError, ProjectionKind};
 pub use settings::{
     AoSettings, DepthMips, DepthWeight, Downsample, FilterResolution, GtaoSettings, HbaoSettings,
     HbaoVariant, MSVO_MAX_LEVELS, Method, MsvoSettings, NoiseKind, NoiseSettings, NormalEncoding,
-    NormalSource, NormalSpace, NormalsSettings, Preset, Resolution, SEPARABLE_HBAO_MAX_RADIUS_PX,
-    SampleDepth, SettingsError, SliceMarch, SpatialKind, SpatialSettings, SsaoSettings,
-    TemporalOffset, TemporalSettings, Ue4SsaoSettings, Upsample, VbaoSettings,
+    NormalSource, NormalSpace, NormalsSettings, OffscreenSamples, Preset, Resolution,
+    SEPARABLE_HBAO_MAX_RADIUS_PX, SampleDepth, SettingsError, SliceMarch, SpatialKind,
+    SpatialSettings, SsaoSettings, TemporalOffset, TemporalSettings, Ue4SsaoSettings, Upsample,
+    VbaoSettings,
 };
 pub use timing::{PassTime, PassTimer};

@@ -1,4 +1,4 @@
-// requires: common/view.wgsl, common/ao.wgsl
+// requires: common/view.wgsl, common/encoding.wgsl, common/ao.wgsl
 // Slices, shared by the slice-based methods (GTAO, VBAO): half-planes through the view vector V
 // at a screen angle, samples placed exactly in them, and the cosine-weighted arc integral.
 
@@ -66,6 +66,51 @@ fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f3
     let d = clamp(select(seen.depth, crossing, crossing > 0.0), seen.depth / (1.0 + DEPTH_EDGE),
                   2.0 * seen.depth);
     return vec4<f32>(near + d * along - p, 1.0);
+}
+
+// What a sample that lands off screen reads (AoSettings::offscreen_samples), compiled into
+// each kernel like NEAREST_DEPTH: true continues the surface at the screen's edge
+// (edge_plane_sample), false drops the sample, as if the scene were open beyond the edge.
+override EXTEND_OFFSCREEN: bool = true;
+
+// Distance in pixels from `center` along the screen direction `dir` to the last texel centre
+// on screen: where a slice leaving the screen last sees the scene.
+fn edge_distance(center: vec2<f32>, dir: vec2<f32>) -> f32 {
+    let bound = select(vec2<f32>(0.5), view.size - 0.5, dir > vec2<f32>(0.0));
+    let reach = select(vec2<f32>(MAX_DEPTH), (bound - center) / dir, abs(dir) > vec2<f32>(1e-6));
+    return max(min(reach.x, reach.y), 0.0);
+}
+
+// The surface seen at `edge` (the last texel on screen towards an off-screen sample) as a plane:
+// that texel's point and its normal. Walls, floors and ceilings mostly go on past the edge as
+// they left it; taking the space beyond as open (the alternative) left the 12 px border band the
+// largest error outside silhouettes (docs/quality.md#off-screen-samples-and-silhouettes).
+struct EdgePlane {
+    n: vec3<f32>,
+    // dot(point, n): the plane is dot(x, n) = offset.
+    offset: f32,
+    depth: f32,
+}
+
+fn edge_plane(edge: vec2<f32>) -> EdgePlane {
+    let texel = vec2<u32>(edge);
+    let depth = textureLoad(linear_depth, texel, 0).r;
+    let n = unpack_oct32(textureLoad(normals, texel, 0).r);
+    return EdgePlane(n, dot(view_position(floor(edge) + 0.5, depth), n), depth);
+}
+
+// The off-screen sample on the view ray near + d * along (view_position at depths 0 and 1 of
+// the sample's screen position) where it meets `plane`, as an offset from `p`. A plane seen
+// nearly edge-on meets the ray arbitrarily far off, or behind the eye: the point stays within a
+// factor of 4 of the edge's depth, a receding plane then lying out of reach and an approaching
+// one still occluding. w = 0 where the edge shows no surface or the ray meets the plane behind
+// the eye.
+fn edge_plane_sample(plane: EdgePlane, near: vec3<f32>, along: vec3<f32>,
+                     p: vec3<f32>) -> vec4<f32> {
+    let d = (plane.offset - dot(near, plane.n)) / dot(along, plane.n);
+    let valid = plane.depth != NO_SURFACE && d > 0.0;
+    let offset = near + clamp(d, 0.25 * plane.depth, 4.0 * plane.depth) * along - p;
+    return select(vec4<f32>(0.0), vec4<f32>(offset, 1.0), valid);
 }
 
 // Step jitter is stratified across a pixel's slices and sides: slice i shifts it by i times the
@@ -145,14 +190,22 @@ fn side_position(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec2<
 }
 
 // The sample of a step on one side of a slice (side = +1 towards +omega, -1 away): the offset
-// from the shaded point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen, no
-// surface, or slid past the pixel onto the other half of the slice).
+// from the shaded point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen
+// without EXTEND_OFFSCREEN, no surface, or slid past the pixel onto the other half of the slice).
 fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f32> {
     let q = side_position(s, slice, side, distance_px);
+    var sample: vec4<f32>;
     if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
-        return vec4<f32>(0.0);
+        if !EXTEND_OFFSCREEN {
+            return vec4<f32>(0.0);
+        }
+        let dir = side * slice.omega;
+        let plane = edge_plane(s.center + dir * edge_distance(s.center, dir));
+        let near = view_position(q, 0.0);
+        sample = edge_plane_sample(plane, near, view_position(q, 1.0) - near, s.p);
+    } else {
+        sample = slice_sample(q, mip_level(distance_px), s.p, s.n);
     }
-    let sample = slice_sample(q, mip_level(distance_px), s.p, s.n);
     if sample.w == 0.0 || side * dot(sample.xyz, slice.tangent) <= 0.0 {
         return vec4<f32>(0.0);
     }
@@ -196,6 +249,10 @@ struct SideMarch {
     // The ray's change per pixel of screen offset, times n.xy: moves the tangent plane's
     // crossing from the sample to the texel centre the depth was read at.
     pixel_n: vec2<f32>,
+    // With LEAN and EXTEND_OFFSCREEN, where the side reaches past the screen's edge within the
+    // radius: the surface at the edge (edge_plane), read once for all its steps. Depth
+    // NO_SURFACE otherwise.
+    edge: EdgePlane,
 }
 
 // The lean march's set-up of one side (the general march takes only `side` from it).
@@ -210,16 +267,26 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
     m.along_n = select(dot(m.ray, s.n.xy), 0.0, ORTHOGRAPHIC) - s.n.z;
     m.along_n_step = select(dot(m.ray_step, s.n.xy), 0.0, ORTHOGRAPHIC);
     m.pixel_n = pixel_to_ray * s.n.xy;
+    if EXTEND_OFFSCREEN && LEAN {
+        let edge = edge_distance(s.center, m.dir);
+        if edge < s.radius_px {
+            m.edge = edge_plane(s.center + m.dir * edge);
+        }
+    }
     return m;
 }
 
 // side_sample for the lean march, the same sample without branches: the offset from the shaded
-// point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen, no surface, or on
-// the other half of the slice). The nearest texel's point is moved onto the view ray through
-// the sample as slice_sample does; the fetch goes through the clamping sampler, so a sample off
-// screen reads the edge and only its weight says it is not there.
+// point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen without
+// EXTEND_OFFSCREEN, no surface, or on the other half of the slice). The nearest texel's point
+// is moved onto the view ray through the sample as slice_sample does; the fetch goes through
+// the clamping sampler, so a sample off screen reads the edge and only its weight says it is
+// not there. With EXTEND_OFFSCREEN one off
+// screen lies on the side's edge plane instead (read once in begin_side), selected without a
+// branch: a few multiply-adds and a division.
 fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) -> vec4<f32> {
     let q = s.center + m.dir * distance_px;
+    let inside = all(q >= vec2<f32>(0.0)) && all(q < view.size);
     var texel: vec2<f32>;
     var depth: f32;
     if DEPTH_MIPS == DEPTH_MIPS_OFF {
@@ -238,10 +305,15 @@ fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) 
     let crossing = depth + dot(texel - q, m.pixel_n) * select(depth, 1.0, ORTHOGRAPHIC) / along_n;
     let d = clamp(select(depth, crossing, crossing > 0.0), depth * (1.0 / (1.0 + DEPTH_EDGE)),
                   2.0 * depth);
-    let offset = vec3<f32>(select(ray * d, ray, ORTHOGRAPHIC), -d) - s.p;
-    let valid = all(q >= vec2<f32>(0.0)) && all(q < view.size) && depth != NO_SURFACE
-        && m.side * dot(offset, tangent) > 0.0;
-    return vec4<f32>(offset, select(0.0, 1.0, valid));
+    var sample = vec4<f32>(vec3<f32>(select(ray * d, ray, ORTHOGRAPHIC), -d) - s.p,
+                           select(0.0, 1.0, inside && depth != NO_SURFACE));
+    if EXTEND_OFFSCREEN {
+        let near = select(vec3<f32>(0.0), vec3<f32>(ray, 0.0), ORTHOGRAPHIC);
+        let along = select(vec3<f32>(ray, -1.0), vec3<f32>(0.0, 0.0, -1.0), ORTHOGRAPHIC);
+        sample = select(edge_plane_sample(m.edge, near, along, s.p), sample, inside);
+    }
+    let valid = sample.w > 0.0 && m.side * dot(sample.xyz, tangent) > 0.0;
+    return vec4<f32>(sample.xyz, select(0.0, 1.0, valid));
 }
 
 // The sample of a step `distance_px` along a slice's side, as the settings' march places it:

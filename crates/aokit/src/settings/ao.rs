@@ -118,6 +118,9 @@ pub struct AoSettings {
     /// How the slice methods march their slices: lean or general, the same AO at different
     /// cost.
     pub slice_march: SliceMarch,
+    /// What the slice methods take for a sample off screen: the surface at the edge continued,
+    /// or nothing.
+    pub offscreen_samples: OffscreenSamples,
 }
 
 impl Default for AoSettings {
@@ -195,6 +198,7 @@ impl AoSettings {
             depth_mip_offset: 3.0,
             sample_depth: SampleDepth::default(),
             slice_march: SliceMarch::default(),
+            offscreen_samples: OffscreenSamples::default(),
         }
     }
 

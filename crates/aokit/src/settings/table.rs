@@ -389,6 +389,14 @@ const AFTER_METHODS: &[SettingSpec] = &[
          every sample placed from scratch; the same AO to rounding, at different cost \
          ([gtao.md](methods/gtao.md#the-lean-march))"
     ),
+    setting!(
+        offscreen_samples,
+        choice,
+        "what `gtao`, `vbao`, `hbao` and `hbao-plus` take for a sample off screen: the surface at \
+         the screen's edge continued (the plane of the last texel on screen along the slice), or \
+         nothing, as if the scene were open beyond the edge \
+         ([quality.md](quality.md#off-screen-samples-and-silhouettes))"
+    ),
 ];
 
 /// Every setting of [`AoSettings`], in the order docs/settings.md lists them and

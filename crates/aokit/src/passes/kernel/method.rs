@@ -12,7 +12,7 @@ use crate::passes::input::back_faces::THICKNESS_FORMAT;
 use crate::passes::input::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::passes::kernel::depth_mips::{atlas_format, atlas_holds_level_0};
 use crate::passes::{ComputeKernel, PassContext, bind};
-use crate::settings::{AoSettings, Method, NoiseKind, SampleDepth, SliceMarch};
+use crate::settings::{AoSettings, Method, NoiseKind, OffscreenSamples, SampleDepth, SliceMarch};
 use crate::shader;
 use crate::uniforms::AoUniforms;
 
@@ -44,13 +44,14 @@ impl DepthMipsRead {
 }
 
 /// What a compiled kernel was specialised for besides its method: how it reads the depth MIP
-/// atlas, how its samples read depth (`None` for the methods that read depth one way only),
-/// for the lean slice march the slice and step counts, whether it writes bent normals, and its
+/// atlas, how its samples read depth and what they take off screen (`None` for the methods
+/// that read depth one way only), for the lean slice march the slice and step counts, whether it writes bent normals, and its
 /// noise. Each is an `override` of the WGSL: code a setting turns off is not in the kernel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 struct Variant {
     depth_mips_read: DepthMipsRead,
     sample_depth: Option<SampleDepth>,
+    offscreen_samples: Option<OffscreenSamples>,
     lean: Option<Lean>,
     bent_normals: bool,
     /// The noise kind's and its temporal offset's codes (common/noise.wgsl).
@@ -63,6 +64,10 @@ impl Variant {
             .method
             .marches_slices()
             .then_some(settings.sample_depth);
+        let offscreen_samples = settings
+            .method
+            .marches_slices()
+            .then_some(settings.offscreen_samples);
         let uniforms = AoUniforms::new(settings);
         let lean = (sample_depth == Some(SampleDepth::Nearest)
             && settings.slice_march == SliceMarch::Lean)
@@ -75,6 +80,7 @@ impl Variant {
         Self {
             depth_mips_read: DepthMipsRead::of(settings),
             sample_depth,
+            offscreen_samples,
             lean,
             bent_normals: settings.bent_normals,
             noise: [
@@ -96,6 +102,10 @@ impl Variant {
         if let Some(sample_depth) = self.sample_depth {
             let nearest = sample_depth == SampleDepth::Nearest;
             constants.push(("NEAREST_DEPTH", f64::from(u8::from(nearest))));
+        }
+        if let Some(offscreen) = self.offscreen_samples {
+            let extend = offscreen == OffscreenSamples::Extend;
+            constants.push(("EXTEND_OFFSCREEN", f64::from(u8::from(extend))));
         }
         if let Some(lean) = self.lean {
             constants.extend([
@@ -338,6 +348,24 @@ mod tests {
                 "{method:?}"
             );
         }
+    }
+
+    #[test]
+    fn off_screen_samples_compile_into_the_slice_kernels_only() {
+        // The override exists in common/slice.wgsl only: a kernel without it would refuse it.
+        let extend = |settings: &AoSettings| {
+            let constants = Variant::of(settings).constants();
+            constants
+                .into_iter()
+                .find(|(name, _)| *name == "EXTEND_OFFSCREEN")
+                .map(|(_, value)| value)
+        };
+        let mut settings = AoSettings::preset(Method::Gtao, crate::Preset::High);
+        assert_eq!(extend(&settings), Some(1.0));
+        settings.offscreen_samples = OffscreenSamples::Unoccluded;
+        assert_eq!(extend(&settings), Some(0.0));
+        settings.method = Method::Ssao;
+        assert_eq!(extend(&settings), None);
     }
 
     #[test]
