@@ -8,7 +8,8 @@ use aokit::normals::{
 use aokit::passes::{ComputeKernel, bind};
 use aokit::shader::{ENCODING, ShaderSource};
 use aokit::{
-    AoError, AoInputs, AoPipeline, AoSettings, GpuContext, InputError, NormalEncoding, Projection,
+    AoError, AoInputs, AoPipeline, AoSettings, GpuContext, InputError, NormalEncoding,
+    OffscreenSamples, Projection,
 };
 use glam::Vec3;
 
@@ -372,6 +373,9 @@ fn unusable_normals_in_a_texture_fall_back_to_normals_from_depth_per_pixel() {
     let mut settings = AoSettings::default();
     settings.spatial.enabled = false;
     settings.temporal.enabled = false;
+    // Samples off screen lie on the plane of the last texel on screen, whose normal is another
+    // pixel's: with them dropped, a pixel's AO depends on its own normal only.
+    settings.offscreen_samples = OffscreenSamples::Unoccluded;
     let (from_depth, depth_normals) = ao_and_normals(&gpu, &settings, &depth, None);
     // The renderer's normals: those from depth tilted 30 degrees about x, as a normal map
     // would, so that its AO differs from the AO with normals from depth.
