@@ -36,6 +36,13 @@ pub struct RenderArgs {
     /// frames/depth-NNN.exr and so on, for `aokit ao --sequence`.
     #[arg(long)]
     pub gbuffer: bool,
+    /// Pixels of overscan on each side that the AO reads (a guard band): the G-buffer for the
+    /// AO is drawn this much larger through a widened frustum, and the AO computed for the
+    /// image of --size alone, so that occluders just off screen count at its edges. A
+    /// multiple of the resolution's scale below full resolution. docs/integration.md gives
+    /// the size to choose.
+    #[arg(long, value_name = "PX", default_value_t = 0)]
+    pub guard_band: u32,
     #[command(flatten)]
     pub lighting: LightingArgs,
     /// Render a sequence of this many frames along --path, each reprojecting the last (the
@@ -131,6 +138,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     };
     let gpu = open_gpu()?;
     let mut renderer = Renderer::new(&gpu, &scene, &settings)?;
+    renderer.guard_band = args.guard_band;
     args.lighting
         .apply(&mut renderer.lighting, settings.method)?;
     for note in
