@@ -76,6 +76,8 @@ pub struct ExternalAo {
     pipeline: AoPipeline,
     /// Start the temporal history over at the next run.
     reset_history: bool,
+    /// Pixels of overscan on each side of the passes ([`AoInputs::guard_band`]).
+    guard_band: u32,
 }
 
 impl ExternalAo {
@@ -108,9 +110,31 @@ impl ExternalAo {
             view_from_world: Mat4::IDENTITY,
             pipeline: AoPipeline::new(&gpu.device, &gpu.queue, settings)?,
             reset_history: false,
+            guard_band: 0,
         };
         external.upload_normals(gpu, settings.normals.encoding)?;
         Ok(external)
+    }
+
+    /// Reads the passes as an overscan of `band` pixels on each side ([`AoInputs::guard_band`]):
+    /// [`Passes::projection`] is then the inner frame's, and the AO comes back for the inner
+    /// frame only, `2 * band` pixels narrower and shorter than the passes. 0, the default,
+    /// is no band.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, passes: &aokit_scene::external::Passes<'_>)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::AoSettings;
+    /// use aokit_scene::external::ExternalAo;
+    /// // Passes exported 16 px larger on each side than the image they light.
+    /// let mut external = ExternalAo::new(gpu, &AoSettings::default(), passes)?;
+    /// external.set_guard_band(16);
+    /// let ao = external.run(gpu, 0)?;
+    /// assert_eq!(ao.len() as u32, (passes.size[0] - 32) * (passes.size[1] - 32));
+    /// # Ok(()) }
+    /// ```
+    pub fn set_guard_band(&mut self, band: u32) {
+        self.guard_band = band;
     }
 
     /// Replaces the passes with `passes` (of any size), keeping the compiled pipeline and, for
@@ -336,6 +360,7 @@ impl ExternalAo {
                 frame_index,
                 reset_history: std::mem::take(&mut self.reset_history),
                 back_depth: self.back_depth.as_ref(),
+                guard_band: self.guard_band,
                 ..AoInputs::new(&self.depth, self.projection)
             },
         )?;

@@ -699,6 +699,9 @@ fn a_guard_band_makes_its_own_linear_depth_and_normals_for_the_inner_frame_to_co
     // The steps through the kernel run on the whole input, the rest on the inner frame.
     assert_eq!(plan.through_kernel(), 4);
     let full = FramePlan::new(&raw(), &band);
-    assert_eq!(names(&full), ["linear_depth@i", "decode_normals@i", "method@w"]);
+    assert_eq!(
+        names(&full),
+        ["linear_depth@i", "decode_normals@i", "method@w"]
+    );
     assert_eq!(full.through_kernel(), 3);
 }
