@@ -173,7 +173,7 @@ def main():
         bands = sorted(set(BANDS[1:] + [kernel]))
         configurations = [f"--guard-band {b}" for b in [0] + bands]
         report = json.loads(run(aokit, "bench", "--scene", scene, "--camera", camera, *SETTINGS,
-                                "--size", f"{SIZE[0]}x{SIZE[1]}", "--timing-frames", "30",
+                                "--size", f"{SIZE[0]}x{SIZE[1]}", "--timing-frames", "60",
                                 "--warmup", "3", "--json", "--compare", *configurations))
         base = report[0]["wall_ms"]["median"]
         for band, entry in zip(bands, report[1:]):
