@@ -2,8 +2,8 @@
 # Regenerates bench/data/tuning.json and the table of docs/tuning.md: `aokit tune` over the built-in
 # scenes and the four Sponza cameras at 480x270 against 512-ray references (cached after the
 # first run; about 10 minutes on 2 cores for raw AO, more with the spatial filter the presets
-# now run). The presets (crates/aokit/src/presets.rs) are this table:
-# crates/aokit-cli/tests/cli/tune.rs fails until a changed table is copied there.
+# now run). The presets (each method's rows in crates/aokit/src/methods/<method>.rs) are this
+# table: crates/aokit-cli/tests/cli/tune.rs fails until a changed table is copied there.
 #
 #   bash bench/tuning.sh                  # every method and preset
 #   bash bench/tuning.sh METHOD PRESET    # one of them again, where a full run does not fit

@@ -41,8 +41,11 @@ pub struct AoArgs {
     /// A sequence of frames instead of --depth, --normals, --back-depth and --camera-json: a
     /// directory of depth-NNN.exr and camera-NNN.json, with normal-NNN.exr and
     /// back_depth-NNN.exr where there are (what `render --frames N --gbuffer` writes into
-    /// frames/). The temporal filter, when on, accumulates over them.
-    #[arg(long, value_name = "DIR", conflicts_with_all = ["depth", "camera_json"])]
+    /// frames/), or a pattern of the depth files with one `*` for the frame number
+    /// (`'shot/depth.*.exr'`), whose other files are named with `depth` replaced by `camera`
+    /// (and the extension by .json), `normal` and `back_depth`. The temporal filter, when on,
+    /// accumulates over them.
+    #[arg(long, value_name = "DIR|PATTERN", conflicts_with_all = ["depth", "camera_json"])]
     pub sequence: Option<PathBuf>,
     /// Whether the depth is linear view depth or depth-buffer values.
     #[arg(long, value_parser = passes::depth_kind_parser(), default_value = "linear")]
@@ -227,64 +230,126 @@ fn summary(loaded: &LoadedPasses, ao: &[f32]) -> String {
     ao_summary(ao, &depth)
 }
 
-/// The frames of `dir`, in the order of their numbers: each camera-NNN.json with its
-/// depth-NNN.exr, and normal-NNN.exr and back_depth-NNN.exr where every frame has one.
-fn sequence_files(dir: &Path) -> Result<Vec<FrameFiles>> {
-    let entries =
-        std::fs::read_dir(dir).map_err(|e| anyhow::anyhow!("--sequence {}: {e}", dir.display()))?;
-    let mut numbers = Vec::new();
-    for entry in entries {
-        let name = entry?.file_name();
-        let name = name.to_string_lossy();
-        if let Some(number) = name
-            .strip_prefix("camera-")
-            .and_then(|rest| rest.strip_suffix(".json"))
-        {
-            numbers.push(number.to_string());
-        }
+/// The frames `--sequence` names: a directory, or a pattern of depth files.
+fn sequence_files(sequence: &Path) -> Result<Vec<FrameFiles>> {
+    let shown = sequence.display();
+    if sequence.is_dir() {
+        // `render --frames N --gbuffer`'s frames/: the cameras number the frames.
+        let names = SequenceNames {
+            dir: sequence.to_path_buf(),
+            template: "depth-*.exr".to_string(),
+        };
+        return names.frames(&shown.to_string(), "camera");
     }
-    if numbers.is_empty() {
+    let name = sequence
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    if name.matches('*').count() != 1 || name.matches("depth").count() != 1 {
         bail!(
-            "--sequence {}: no camera-NNN.json in it (`render --frames N --gbuffer` writes a \
-             sequence into its frames/)",
-            dir.display()
+            "--sequence {shown}: neither a directory nor a pattern of depth files such as \
+             `frames/depth-*.exr` (one `*` for the frame number and `depth` once in the file \
+             name, which names the other passes)"
         );
     }
-    numbers.sort_by_key(|n| (n.len(), n.clone()));
-    // A pass every frame has, else none; some frames with one is a broken sequence.
-    let optional = |prefix: &str| -> Result<Option<Vec<PathBuf>>> {
-        let paths: Vec<PathBuf> = numbers
-            .iter()
-            .map(|n| dir.join(format!("{prefix}-{n}.exr")))
-            .collect();
-        match paths.iter().filter(|p| p.is_file()).count() {
-            0 => Ok(None),
-            count if count == paths.len() => Ok(Some(paths)),
-            count => bail!(
-                "--sequence {}: {count} of the {} frames have a {prefix}-NNN.exr; give one for \
-                 every frame or none",
-                dir.display(),
-                paths.len()
-            ),
-        }
+    let dir = match sequence.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
+        _ => PathBuf::from("."),
     };
-    let normals = optional("normal")?;
-    let back_depth = optional("back_depth")?;
-    let mut frames = Vec::with_capacity(numbers.len());
-    for (i, n) in numbers.iter().enumerate() {
-        let depth = dir.join(format!("depth-{n}.exr"));
-        if !depth.is_file() {
+    if dir.to_string_lossy().contains('*') {
+        bail!("--sequence {shown}: only the file name may hold a `*`");
+    }
+    let names = SequenceNames {
+        dir,
+        template: name,
+    };
+    names.frames(&shown.to_string(), "depth")
+}
+
+/// How one sequence names its files: `template` is the depth files' name in `dir`, with `*`
+/// for the frame number; the other passes' names put their own in place of `depth`.
+struct SequenceNames {
+    dir: PathBuf,
+    template: String,
+}
+
+impl SequenceNames {
+    /// The name of `pass`'s file pattern: `depth` replaced, and a camera's extension .json.
+    fn pattern(&self, pass: &str) -> String {
+        let name = self.template.replacen("depth", pass, 1);
+        if pass != "camera" {
+            return name;
+        }
+        let stem = Path::new(&name).with_extension("json");
+        stem.to_string_lossy().into_owned()
+    }
+
+    fn path(&self, pass: &str, number: &str) -> PathBuf {
+        self.dir.join(self.pattern(pass).replacen('*', number, 1))
+    }
+
+    /// The frames, in the order of their numbers: each file of the `lead` pass (camera or
+    /// depth) with the other one beside it, and normals and back-face depth where every frame
+    /// has them. `shown` names the sequence in errors.
+    fn frames(&self, shown: &str, lead: &str) -> Result<Vec<FrameFiles>> {
+        let pattern = self.pattern(lead);
+        let (before, after) = pattern.split_once('*').expect("one `*` in the template");
+        let entries =
+            std::fs::read_dir(&self.dir).map_err(|e| anyhow::anyhow!("--sequence {shown}: {e}"))?;
+        let mut numbers = Vec::new();
+        for entry in entries {
+            let name = entry?.file_name();
+            let name = name.to_string_lossy();
+            if let Some(number) = name
+                .strip_prefix(before)
+                .and_then(|rest| rest.strip_suffix(after))
+            {
+                numbers.push(number.to_string());
+            }
+        }
+        if numbers.is_empty() {
             bail!(
-                "--sequence {}: camera-{n}.json has no depth-{n}.exr beside it",
-                dir.display()
+                "--sequence {shown}: no file matches {} in {} (`render --frames N --gbuffer` \
+                 writes a sequence into its frames/)",
+                pattern,
+                self.dir.display()
             );
         }
-        frames.push(FrameFiles {
-            depth,
-            normals: normals.as_ref().map(|paths| paths[i].clone()),
-            back_depth: back_depth.as_ref().map(|paths| paths[i].clone()),
-            camera: dir.join(format!("camera-{n}.json")),
-        });
+        numbers.sort_by_key(|n| (n.len(), n.clone()));
+        // A pass every frame has, else none; some frames with one is a broken sequence.
+        let optional = |pass: &str| -> Result<Option<Vec<PathBuf>>> {
+            let paths: Vec<PathBuf> = numbers.iter().map(|n| self.path(pass, n)).collect();
+            match paths.iter().filter(|p| p.is_file()).count() {
+                0 => Ok(None),
+                count if count == paths.len() => Ok(Some(paths)),
+                count => bail!(
+                    "--sequence {shown}: {count} of the {} frames have a {}; give one for \
+                     every frame or none",
+                    paths.len(),
+                    self.pattern(pass)
+                ),
+            }
+        };
+        let normals = optional("normal")?;
+        let back_depth = optional("back_depth")?;
+        let other = if lead == "camera" { "depth" } else { "camera" };
+        let mut frames = Vec::with_capacity(numbers.len());
+        for (i, n) in numbers.iter().enumerate() {
+            let name = |pass| self.pattern(pass).replacen('*', n, 1);
+            if !self.path(other, n).is_file() {
+                bail!(
+                    "--sequence {shown}: {} has no {} beside it",
+                    name(lead),
+                    name(other)
+                );
+            }
+            frames.push(FrameFiles {
+                depth: self.path("depth", n),
+                normals: normals.as_ref().map(|paths| paths[i].clone()),
+                back_depth: back_depth.as_ref().map(|paths| paths[i].clone()),
+                camera: self.path("camera", n),
+            });
+        }
+        Ok(frames)
     }
-    Ok(frames)
 }

@@ -734,12 +734,12 @@ fn submit_frame(
             &gpu.queue,
             encoder,
             &AoInputs {
-                normals: Some(&gbuffer.normals),
+                normals: Some((&gbuffer.normals).into()),
                 view_from_world: frame.view.view_from_world,
                 frame_index: frame.index,
                 // Refused with a band; only the temporal filter reads them.
-                motion_vectors: (frame.band == 0).then_some(&gbuffer.motion),
-                back_depth: gbuffer.back_depth.as_ref(),
+                motion_vectors: (frame.band == 0).then_some((&gbuffer.motion).into()),
+                back_depth: gbuffer.back_depth.as_ref().map(Into::into),
                 guard_band: frame.band,
                 ..AoInputs::new(&gbuffer.depth, frame.view.projection)
             },

@@ -137,7 +137,10 @@ pub fn reference(
         &CameraFile::new(&projection, camera.view_from_world(), size),
     )?;
     // Written last: its presence marks a complete entry.
-    write_json(&dir.join("reference.json"), &ReferenceInfo::new(options))?;
+    write_json(
+        &dir.join("reference.json"),
+        &ReferenceInfo::new(scene, camera, size, options),
+    )?;
     eprintln!("reference: {} (traced, cached)", dir.display());
     Ok(image)
 }

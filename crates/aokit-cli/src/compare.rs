@@ -23,10 +23,12 @@ use crate::camera_args::CameraArgs;
 use crate::export::{check_out_dir, create_dir};
 use crate::passes::{self, DepthKind, PassFiles};
 use crate::peer::{self, PeerSettings, PeerSpec, XeGtao};
+use crate::recorded;
 use crate::reference::ReferenceInfo;
 use crate::render::{open_gpu, open_gpu_with, parse_size};
 use crate::sequence::{SequenceFrame, score_sequence};
-use crate::settings_args::OverrideArgs;
+use crate::settings_args::{OverrideArgs, SettingsArgs};
+use crate::view_sets::ViewSet;
 
 #[derive(Args, Debug)]
 pub struct CompareArgs {
@@ -38,29 +40,36 @@ pub struct CompareArgs {
     /// A view as SCENE or SCENE@CAMERA; repeat for several views in one report.
     #[arg(long, value_name = "SCENE[@CAMERA]", conflicts_with = "inputs")]
     pub view: Vec<String>,
+    /// A named set of views instead of --view: `tuning` (the views `aokit tune` fits the
+    /// presets on) or `held-out` (views of scenes it never reads, made by `bash
+    /// scripts/fetch-scenes.sh`); paths are from the repository root (docs/quality.md).
+    #[arg(long, value_name = "SET", conflicts_with_all = ["view", "scene", "inputs"])]
+    pub views: Option<ViewSet>,
     /// Score `aokit ao` on the passes in DIR (depth.exr, optional normal.exr and back_depth.exr, camera.json)
-    /// against DIR/reference.exr, with the radius from DIR/reference.json unless --radius is given.
+    /// against DIR/reference.exr, with the radius from DIR/reference.json unless --radius is given,
+    /// and the settings recorded in DIR/ao-settings.json (as `render --gbuffer` writes it), under
+    /// --method, --preset, --settings and --set, when there is one.
     #[arg(long, value_name = "DIR")]
     pub inputs: Option<PathBuf>,
     /// Image size (scene views).
     #[arg(long, value_name = "WxH", default_value = "480x270", value_parser = parse_size, allow_hyphen_values = true)]
     pub size: [u32; 2],
-    /// Methods to score, comma-separated, or `all` (`--methods` before).
+    /// Methods to score, comma-separated, or `all` (`--methods` before) [default: all, or
+    /// with --inputs the method recorded in DIR/ao-settings.json].
     #[arg(
         long = "method",
         alias = "methods",
         value_name = "METHOD,...",
-        value_delimiter = ',',
-        default_value = "all"
+        value_delimiter = ','
     )]
     pub methods: Vec<String>,
-    /// Presets to score, comma-separated (`--presets` before).
+    /// Presets to score, comma-separated (`--presets` before) [default: low,medium,high,ultra,
+    /// or with --inputs the preset recorded in DIR/ao-settings.json].
     #[arg(
         long = "preset",
         alias = "presets",
         value_name = "PRESET,...",
-        value_delimiter = ',',
-        default_value = "low,medium,high,ultra"
+        value_delimiter = ','
     )]
     pub presets: Vec<Preset>,
     /// AO radius (default: the scene's suggested radius, else 1); the reference uses it too.
@@ -97,6 +106,38 @@ pub struct CompareArgs {
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-compare")]
     pub out: PathBuf,
+}
+
+/// The presets scored when `--preset` is not given (and no recorded settings stand in).
+const DEFAULT_PRESETS: [Preset; 4] = [Preset::Low, Preset::Medium, Preset::High, Preset::Ultra];
+
+impl CompareArgs {
+    /// `--method`, else every method.
+    fn method_names(&self) -> Vec<String> {
+        match self.methods.is_empty() {
+            true => vec!["all".to_string()],
+            false => self.methods.clone(),
+        }
+    }
+
+    /// `--preset`, else [`DEFAULT_PRESETS`].
+    fn presets(&self) -> &[Preset] {
+        match self.presets.is_empty() {
+            true => &DEFAULT_PRESETS,
+            false => &self.presets,
+        }
+    }
+
+    /// `--settings` and `--set` without the `peer.*` keys, which are the peer's alone.
+    fn aokit_overrides(&self) -> OverrideArgs {
+        OverrideArgs {
+            settings: self.overrides.settings.clone(),
+            set: (self.overrides.set.iter())
+                .filter(|s| !PeerSettings::is_peer_key(s))
+                .cloned()
+                .collect(),
+        }
+    }
 }
 
 /// The error maps' colour scale: errors beyond a quarter of the AO range read as saturated.
@@ -139,15 +180,9 @@ fn settings_for(
     preset: Preset,
     radius: f32,
 ) -> Result<AoSettings> {
-    // `peer.*` keys are the peer's alone.
-    let overrides = OverrideArgs {
-        settings: args.overrides.settings.clone(),
-        set: (args.overrides.set.iter())
-            .filter(|s| !PeerSettings::is_peer_key(s))
-            .cloned()
-            .collect(),
-    };
-    let settings = overrides.apply_to_preset(method, preset, Some(radius), None)?;
+    let settings = args
+        .aokit_overrides()
+        .apply_to_preset(method, preset, Some(radius), None)?;
     if settings.radius != radius {
         bail!("set the radius with --radius, so that the reference is traced with it too");
     }
@@ -306,16 +341,19 @@ fn score_scene_view(
         })
         .collect();
     let grazing = grazing(&references[last], &sequence_frames[last].projection);
-    let first = settings_for(args, methods[0], args.presets[0], radius)?;
+    let first = settings_for(args, methods[0], args.presets()[0], radius)?;
     let mut renderer = Renderer::new(gpu, scene, &first)?;
     let timed = renderer.enable_timing(gpu);
     let mut results = Vec::new();
     // Scoring every method at every preset takes as long as the trace on lavapipe: a bar, as
     // the trace has, so that the run does not fall silent.
-    let bar =
-        crate::reference::progress_bar((methods.len() * args.presets.len()) as u64, "scoring", "");
+    let bar = crate::reference::progress_bar(
+        (methods.len() * args.presets().len()) as u64,
+        "scoring",
+        "",
+    );
     for &method in methods {
-        for &preset in &args.presets {
+        for &preset in args.presets() {
             bar.set_message(format!("{} {}", method.name(), preset.name()));
             let settings = settings_for(args, method, preset, radius)?;
             renderer.set_settings(gpu, &settings)?;
@@ -398,9 +436,9 @@ fn score_peer(
         }
         Ok(settings)
     };
-    let paths = peer::shader_paths(&gpu.device, settings_at(args.presets[0])?.shader);
+    let paths = peer::shader_paths(&gpu.device, settings_at(args.presets()[0])?.shader);
     let mut results = Vec::new();
-    for &preset in &args.presets {
+    for &preset in args.presets() {
         let settings = settings_at(preset)?;
         let shaders = peer::Shaders::load(spec, settings.quality)?;
         for &shader in &paths {
@@ -445,6 +483,68 @@ fn score_peer(
     Ok(results)
 }
 
+/// The preset and settings of each run on `--inputs` passes: every method at every preset, or
+/// with settings recorded beside `camera` those (`aokit ao`'s rules: `--method` and `--preset`
+/// pick others, the flags go over them), all at the reference's `radius`.
+fn inputs_settings(
+    args: &CompareArgs,
+    methods: &[Method],
+    camera: &Path,
+    radius: f32,
+) -> Result<Vec<(Preset, AoSettings)>> {
+    let Some(recorded) = recorded::read_beside(camera)? else {
+        let mut runs = Vec::new();
+        for &method in methods {
+            for &preset in args.presets() {
+                runs.push((preset, settings_for(args, method, preset, radius)?));
+            }
+        }
+        return Ok(runs);
+    };
+    // Each flag given picks its own list; one not given keeps the recorded value.
+    let method_names: Vec<Option<String>> = match args.methods.is_empty() {
+        true => vec![None],
+        false => methods.iter().map(|m| Some(m.name().to_string())).collect(),
+    };
+    let presets: Vec<Option<Preset>> = match args.presets.is_empty() {
+        true => vec![None],
+        false => args.presets.iter().copied().map(Some).collect(),
+    };
+    let mut runs = Vec::new();
+    for method in &method_names {
+        for preset in &presets {
+            let flags = SettingsArgs {
+                method: method.clone(),
+                preset: preset.map(|p| p.name().to_string()),
+                radius: args.radius,
+                overrides: args.aokit_overrides(),
+            };
+            let settings = flags.resolve_recorded(&recorded)?;
+            if settings.radius != radius {
+                bail!(
+                    "{} records radius {} but the reference was traced with radius {radius} \
+                     (reference.json): trace it again with `aokit reference --radius {}`, or \
+                     give --radius to score both at one",
+                    recorded.path.display(),
+                    settings.radius,
+                    settings.radius
+                );
+            }
+            runs.push((preset.unwrap_or(recorded.preset), settings));
+        }
+    }
+    let (preset, settings) = &runs[0];
+    eprintln!(
+        "note: settings recorded in {} ({} at {}, radius {}); --method, --preset, --settings, \
+         --set and --radius go over them",
+        recorded.path.display(),
+        settings.method.name(),
+        preset.name(),
+        settings.radius
+    );
+    Ok(runs)
+}
+
 fn score_inputs(
     gpu: &GpuContext,
     args: &CompareArgs,
@@ -452,12 +552,13 @@ fn score_inputs(
     dir: &Path,
 ) -> Result<Scored> {
     let (normals, back_depth) = (dir.join("normal.exr"), dir.join("back_depth.exr"));
+    let camera = dir.join("camera.json");
     let loaded = passes::load(
         &PassFiles {
             depth: &dir.join("depth.exr"),
             normals: normals.is_file().then_some(normals.as_path()),
             back_depth: back_depth.is_file().then_some(back_depth.as_path()),
-            camera: &dir.join("camera.json"),
+            camera: &camera,
         },
         DepthKind::Linear,
         NormalSpace::View,
@@ -489,11 +590,25 @@ fn score_inputs(
             dir.display()
         );
     }
+    let info = ReferenceInfo::read(dir);
+    if let Ok(ReferenceInfo {
+        size: Some(traced), ..
+    }) = &info
+        && *traced != loaded.size
+    {
+        bail!(
+            "{}: reference.json says the reference was traced at {}x{}, but the passes are {}x{}",
+            dir.display(),
+            traced[0],
+            traced[1],
+            loaded.size[0],
+            loaded.size[1]
+        );
+    }
     let radius = match args.radius {
         Some(r) => r,
         None => {
-            ReferenceInfo::read(dir)
-                .context("give --radius, or keep the reference.json `aokit reference` writes")?
+            info.context("give --radius, or keep the reference.json `aokit reference` writes")?
                 .radius
         }
     };
@@ -514,32 +629,29 @@ fn score_inputs(
              does not hold"
         );
     }
-    let first = settings_for(args, methods[0], args.presets[0], radius)?;
     if args.frames > 1 {
         bail!("--frames needs a scene to move through; --inputs holds one frame");
     }
-    let mut external = ExternalAo::new(gpu, &first, &loaded.passes())?;
+    let runs = inputs_settings(args, methods, &camera, radius)?;
+    let mut external = ExternalAo::new(gpu, &runs[0].1, &loaded.passes())?;
     let timed = external.enable_timing(gpu);
     let mut results = Vec::new();
-    for &method in methods {
-        for &preset in &args.presets {
-            let settings = settings_for(args, method, preset, radius)?;
-            external.set_settings(gpu, &settings)?;
-            let ao = external.run(gpu, 0)?;
-            let mut times = Vec::new();
-            for _ in 0..if timed { args.timing_frames } else { 0 } {
-                external.run(gpu, 0)?;
-                times.extend(frame_ms(external.last_times(gpu))?);
-            }
-            results.push(score_method(
-                &reference,
-                &grazing,
-                &ao,
-                Scoring::of(&settings),
-                preset,
-                median(times),
-            )?);
+    for (preset, settings) in runs {
+        external.set_settings(gpu, &settings)?;
+        let ao = external.run(gpu, 0)?;
+        let mut times = Vec::new();
+        for _ in 0..if timed { args.timing_frames } else { 0 } {
+            external.run(gpu, 0)?;
+            times.extend(frame_ms(external.last_times(gpu))?);
         }
+        results.push(score_method(
+            &reference,
+            &grazing,
+            &ao,
+            Scoring::of(&settings),
+            preset,
+            median(times),
+        )?);
     }
     Ok(Scored {
         name: dir.display().to_string(),
@@ -609,15 +721,12 @@ pub fn open_view(view: &str) -> Result<(Scene, aokit_scene::Camera)> {
 
 pub fn run(args: &CompareArgs) -> Result<()> {
     check_out_dir(&args.out)?;
-    let methods = methods(&args.methods)?;
-    if methods.is_empty() || args.presets.is_empty() {
-        bail!("--method and --preset need at least one entry each");
-    }
+    let methods = methods(&args.method_names())?;
     if args.timing_frames > 1000 {
         bail!("--timing-frames {} is more than 1000", args.timing_frames);
     }
     // As every method will run it (`peer.*` keys left to the peer).
-    let temporal = settings_for(args, methods[0], args.presets[0], 1.0)?
+    let temporal = settings_for(args, methods[0], args.presets()[0], 1.0)?
         .temporal
         .enabled;
     for note in crate::sequence::single_frame_notes(args.frames, args.path, temporal) {
@@ -632,14 +741,18 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     let mut scored = Vec::new();
     if let Some(dir) = &args.inputs {
         scored.push(score_inputs(&gpu, args, &methods, dir)?);
-    } else if args.view.is_empty() {
+    } else if args.view.is_empty() && args.views.is_none() {
         let scene = Scene::open(args.scene.as_deref().unwrap_or("room"))?;
         let camera = args.camera.resolve(&scene)?;
         scored.push(score_scene_view(
             &gpu, args, &methods, &cache_dir, &scene, &camera,
         )?);
     } else {
-        for view in &args.view {
+        let views = match args.views {
+            Some(set) => set.present_views()?,
+            None => args.view.clone(),
+        };
+        for view in &views {
             let (scene, camera) = open_view(view)?;
             scored.push(score_scene_view(
                 &gpu, args, &methods, &cache_dir, &scene, &camera,
@@ -683,7 +796,14 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         notes: vec![
             format!("Adapter: {}.", gpu.describe()),
             match (&args.inputs, size) {
-                (Some(dir), _) => format!("Passes from {}.", dir.display()),
+                (Some(dir), _) => match ReferenceInfo::read(dir) {
+                    Ok(info) => format!(
+                        "Passes from {}; reference: {}.",
+                        dir.display(),
+                        info.describe()
+                    ),
+                    Err(_) => format!("Passes from {}.", dir.display()),
+                },
                 (None, Some(size)) => format!(
                     "{}x{} pixels; reference with {} cosine-weighted rays per pixel, no falloff.",
                     size[0], size[1], args.spp

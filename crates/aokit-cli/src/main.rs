@@ -33,6 +33,7 @@ mod settings_list;
 mod suspicious;
 mod tune;
 mod view;
+mod view_sets;
 
 use std::io::Write;
 use std::process::ExitCode;

@@ -56,9 +56,18 @@ pub fn parse_spp(s: &str) -> Result<u32, String> {
 }
 
 /// What a reference was traced with, saved beside it as `reference.json` so that `aokit
-/// compare --inputs` scores methods with the same radius.
+/// compare --inputs` scores methods with the same radius and says what it scored against.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ReferenceInfo {
+    /// The scene's name (a built-in one's, or the file's), and the camera's; absent in files
+    /// from before they were recorded.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scene: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub camera: Option<String>,
+    /// Width and height traced.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<[u32; 2]>,
     /// AO radius in world units.
     pub radius: f32,
     /// Rays per pixel.
@@ -70,8 +79,11 @@ pub struct ReferenceInfo {
 }
 
 impl ReferenceInfo {
-    pub fn new(options: &AoOptions) -> Self {
+    pub fn new(scene: &Scene, camera: &Camera, size: [u32; 2], options: &AoOptions) -> Self {
         Self {
+            scene: Some(scene.name.clone()),
+            camera: Some(camera.name.clone()),
+            size: Some(size),
             radius: options.radius,
             spp: options.spp,
             seed: options.seed,
@@ -85,6 +97,19 @@ impl ReferenceInfo {
             .map_err(|e| anyhow!("cannot read {}: {e}", path.display()))?;
         serde_json::from_str(&text)
             .map_err(|e| anyhow!("{} is not a reference.json: {e}", path.display()))
+    }
+
+    /// What the reference is, for a report: "`room` from camera `front`, 512 rays per pixel,
+    /// radius 1, falloff none".
+    pub fn describe(&self) -> String {
+        let view = match (&self.scene, &self.camera) {
+            (Some(scene), Some(camera)) => format!("`{scene}` from camera `{camera}`, "),
+            _ => String::new(),
+        };
+        format!(
+            "{view}{} rays per pixel, radius {}, falloff {}",
+            self.spp, self.radius, self.falloff
+        )
     }
 }
 
@@ -196,7 +221,8 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         &CameraFile::new(&projection, camera.view_from_world(), image.size),
     )?;
     let back = write_back_depth(out, "", image.size, &back_depth)?;
-    write_json(&out.join("reference.json"), &ReferenceInfo::new(&options))?;
+    let info = ReferenceInfo::new(&scene, &camera, image.size, &options);
+    write_json(&out.join("reference.json"), &info)?;
     let rays = f64::from(image.size[0]) * f64::from(image.size[1]) * f64::from(options.spp);
     outln!(
         "traced `{}` from camera `{}` at {}x{}, {} rays per pixel, radius {}, falloff {} in {:.1} s \

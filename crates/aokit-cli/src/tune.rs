@@ -26,11 +26,13 @@ use crate::cache;
 use crate::compare::{methods, open_view};
 use crate::export::create_dir;
 use crate::render::{open_gpu, parse_size};
+use crate::view_sets;
 
 #[derive(Args, Debug)]
 pub struct TuneArgs {
-    /// A view as SCENE or SCENE@CAMERA; repeat for several (default: the built-in room,
-    /// stairs and thin, and Sponza's four cameras from scenes/sponza.obj).
+    /// A view as SCENE or SCENE@CAMERA; repeat for several (default: the tuning views, the
+    /// built-in room, stairs and thin, and Sponza's four cameras from scenes/sponza.obj). A
+    /// view of a held-out scene is refused (docs/quality.md).
     #[arg(long, value_name = "SCENE[@CAMERA]")]
     pub view: Vec<String>,
     /// Image size of every view.
@@ -115,17 +117,6 @@ fn settings_file(tuned: &Tuned) -> Result<String> {
     ))
 }
 
-/// The views searched when none is named.
-const DEFAULT_VIEWS: [&str; 7] = [
-    "room",
-    "stairs",
-    "thin",
-    "scenes/sponza.obj@atrium",
-    "scenes/sponza.obj@arcade",
-    "scenes/sponza.obj@gallery",
-    "scenes/sponza.obj@floor",
-];
-
 /// Step spacings searched for the marching methods.
 const STEP_POWERS: &[f32] = &[1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0];
 
@@ -182,7 +173,11 @@ pub struct Candidate {
     pub split: [u32; 2],
 }
 
-/// The setting each method's knob is.
+/// The setting each method's knob is: the one its preset rows set in the library (`Knob` in
+/// crates/aokit/src/methods/; tests/cli/tune.rs compares the presets with the table this
+/// writes). The search (these names, [`Candidate`]'s fields, the grids of `dimensions`) stays
+/// with the tool rather than in each method's module: it is how `aokit tune` measures, not
+/// what the library runs.
 pub fn knob_name(method: Method) -> &'static str {
     match method {
         Method::SsaoCrytek | Method::Ssao | Method::Sao | Method::Ue4Ssao => "bias",
@@ -423,8 +418,8 @@ impl Evaluator<'_> {
                 queue,
                 &mut encoder,
                 &AoInputs {
-                    normals: Some(&view.gbuffer.normals),
-                    back_depth: view.gbuffer.back_depth.as_ref(),
+                    normals: Some((&view.gbuffer.normals).into()),
+                    back_depth: view.gbuffer.back_depth.as_ref().map(Into::into),
                     ..AoInputs::new(&view.gbuffer.depth, view.projection)
                 },
             )?;
@@ -600,15 +595,23 @@ fn subject(method: Method, back_faces: bool) -> String {
     }
 }
 
+/// The views a search reads: those named, or the tuning views; never a held-out one.
+fn view_specs(named: &[String]) -> Result<Vec<String>> {
+    let specs: Vec<String> = if named.is_empty() {
+        view_sets::TUNING.iter().map(|s| s.to_string()).collect()
+    } else {
+        named.to_vec()
+    };
+    for spec in &specs {
+        view_sets::check_not_held_out(spec)?;
+    }
+    Ok(specs)
+}
+
 fn load_views(gpu: &GpuContext, args: &TuneArgs) -> Result<Vec<View>> {
     let cache_dir = args.cache.clone().unwrap_or_else(cache::default_dir);
-    let specs: Vec<String> = if args.view.is_empty() {
-        DEFAULT_VIEWS.iter().map(|s| s.to_string()).collect()
-    } else {
-        args.view.clone()
-    };
     let mut views = Vec::new();
-    for spec in &specs {
+    for spec in &view_specs(&args.view)? {
         let (scene, camera) = open_view(spec)?;
         let radius = scene.suggested_radius.unwrap_or(1.0);
         let options = AoOptions {
@@ -835,7 +838,8 @@ pub fn run(args: &TuneArgs) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Candidate, Fit, pair_moves};
+    use super::{Candidate, Fit, pair_moves, view_specs};
+    use crate::view_sets::{HELD_OUT, TUNING};
     use aokit::{AoSettings, Method, Preset};
 
     /// Which of a candidate's parameters differ from `at`'s, by name.
@@ -893,5 +897,15 @@ mod tests {
         let free = Fit::of(&[0.2, 0.2], None);
         assert_eq!(free.excess, 0.0);
         assert!(free.improved_by(&Fit::of(&[0.1, 0.2], None)));
+    }
+
+    #[test]
+    fn a_search_reads_the_tuning_views_and_never_a_held_out_one() {
+        assert_eq!(view_specs(&[]).unwrap(), TUNING);
+        for view in HELD_OUT {
+            let named = [TUNING[0].to_string(), view.to_string()];
+            let error = view_specs(&named).unwrap_err().to_string();
+            assert!(error.contains("held-out scene"), "{error}");
+        }
     }
 }

@@ -408,7 +408,7 @@ impl CompositePass {
     ///     previous_clip_from_world: projection.clip_from_view() * view_from_world,
     /// }, &gbuffer);
     /// let outputs = ao.encode(device, queue, &mut encoder, &AoInputs {
-    ///     normals: Some(&gbuffer.normals),
+    ///     normals: Some((&gbuffer.normals).into()),
     ///     view_from_world,
     ///     ..AoInputs::new(&gbuffer.depth, projection)
     /// })?;

@@ -438,8 +438,8 @@ impl GBufferPass {
     /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
     /// pass.encode(gpu, &mut encoder, mesh, camera, gbuffer);
     /// let outputs = ao.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
-    ///     normals: Some(&gbuffer.normals),
-    ///     motion_vectors: Some(&gbuffer.motion),
+    ///     normals: Some((&gbuffer.normals).into()),
+    ///     motion_vectors: Some((&gbuffer.motion).into()),
     ///     view_from_world: camera.view_from_world,
     ///     ..AoInputs::new(&gbuffer.depth, *camera.projection)
     /// })?;

@@ -414,7 +414,7 @@ impl Renderer {
     /// let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?;
     /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
     /// let outputs = pipeline.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
-    ///     normals: Some(&gbuffer.normals),
+    ///     normals: Some((&gbuffer.normals).into()),
     ///     view_from_world: camera.view_from_world(),
     ///     ..AoInputs::new(&gbuffer.depth, projection)
     /// })?;
@@ -644,12 +644,13 @@ impl Renderer {
             .encode(queue, &mut encoder, &self.mesh, &sun);
         let ao_gbuffer = overscan.as_ref().unwrap_or(&gbuffer);
         let inputs = AoInputs {
-            normals: Some(&ao_gbuffer.normals),
+            normals: Some((&ao_gbuffer.normals).into()),
             view_from_world,
             frame_index,
-            motion_vectors: (self.use_motion_vectors && band == 0).then_some(&gbuffer.motion),
+            motion_vectors: (self.use_motion_vectors && band == 0)
+                .then_some((&gbuffer.motion).into()),
             reset_history,
-            back_depth: ao_gbuffer.back_depth.as_ref(),
+            back_depth: ao_gbuffer.back_depth.as_ref().map(Into::into),
             guard_band: band,
             ..AoInputs::new(&ao_gbuffer.depth, projection)
         };

@@ -86,7 +86,7 @@ fn run(gpu: &GpuContext, out: &Path, size: [u32; 2]) -> Result<Stats> {
 
     // --- aokit: begin (each frame, between the prepass and the lighting pass) ---
     let inputs = AoInputs {
-        normals: Some(&renderer.normals),
+        normals: Some((&renderer.normals).into()),
         view_from_world: renderer.camera.view_from_world,
         ..AoInputs::new(&renderer.depth, renderer.camera.projection)
     };

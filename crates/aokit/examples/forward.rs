@@ -73,7 +73,7 @@ fn run(gpu: &GpuContext, out: &Path, size: [u32; 2]) -> Result<Stats> {
         queue,
         &mut encoder,
         &AoInputs {
-            normals: Some(&renderer.normals),
+            normals: Some((&renderer.normals).into()),
             // The temporal filter (off here) reprojects with the camera; the frame counter
             // moves the sampling noise each frame.
             view_from_world: renderer.camera.view_from_world,

@@ -184,11 +184,11 @@ impl FrameLoop {
 
         // --- aokit: begin (each frame, between the prepass and the lighting pass) ---
         let inputs = AoInputs {
-            normals: Some(&self.renderer.normals),
+            normals: Some((&self.renderer.normals).into()),
             view_from_world,
             // Moves the sampling noise each frame, for the temporal filter to average.
             frame_index: self.frame_index,
-            motion_vectors,
+            motion_vectors: motion_vectors.map(Into::into),
             reset_history: shot.cut,
             ..AoInputs::new(&self.renderer.depth, projection)
         };

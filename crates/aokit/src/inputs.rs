@@ -2,6 +2,7 @@
 
 use glam::Mat4;
 
+use crate::input_texture::AoTexture;
 use crate::passes::filter::temporal_filter::MOTION_VECTOR_FORMATS;
 use crate::projection::Projection;
 use crate::settings::NormalEncoding;
@@ -16,13 +17,13 @@ use crate::settings::NormalEncoding;
 /// // The second player's half of a split screen: view 1 keeps a temporal history apart from
 /// // the first player's, and the motion vectors reproject the players' moving characters.
 /// let inputs = aokit::AoInputs {
-///     depth,
-///     normals: Some(normals),
+///     depth: depth.into(),
+///     normals: Some(normals.into()),
 ///     projection,
 ///     view_from_world,
 ///     frame_index: frame,
 ///     view_id: 1,
-///     motion_vectors: Some(motion),
+///     motion_vectors: Some(motion.into()),
 ///     reset_history: camera_cut,
 ///     mask: None,
 ///     back_depth: None,
@@ -45,7 +46,10 @@ pub struct AoInputs<'a> {
     /// is read as it is: resolve with min or max (or sample 0), never an average, which puts
     /// a surface between foreground and background that occludes both. docs/integration.md
     /// compares the two.
-    pub depth: &'a wgpu::Texture,
+    ///
+    /// Each texture here is an [`AoTexture`]: a whole texture (`texture.into()`) or a view of
+    /// one mip level or array layer of one ([`AoTexture::view`]).
+    pub depth: AoTexture<'a>,
     /// Unit normals, in view space or, with [`NormalsSettings::space`](crate::NormalsSettings::space)
     /// set to world, in world space, in the encoding
     /// [`NormalsSettings::encoding`](crate::NormalsSettings::encoding) names (`oct32` by default; [`shader::ENCODING`](crate::shader::ENCODING) has the WGSL to
@@ -53,7 +57,7 @@ pub struct AoInputs<'a> {
     /// `TEXTURE_BINDING` usage. `None` reconstructs them from depth, which is less precise at
     /// edges and on curved surfaces. When [`NormalsSettings::source`](crate::NormalsSettings::source)
     /// names a reconstruction from depth they are not read, but still checked.
-    pub normals: Option<&'a wgpu::Texture>,
+    pub normals: Option<AoTexture<'a>>,
     /// The projection the depth was rendered with.
     pub projection: Projection,
     /// The camera's world-to-view transform this frame. The temporal filter reprojects with
@@ -69,7 +73,7 @@ pub struct AoInputs<'a> {
     /// objects): `Rg16Float` or `Rg32Float` of the depth's size, the offset in pixels from each
     /// pixel to where its surface was last frame. `None` reprojects by depth and the camera
     /// alone, which is right for a still scene.
-    pub motion_vectors: Option<&'a wgpu::Texture>,
+    pub motion_vectors: Option<AoTexture<'a>>,
     /// Start the temporal history over: the view shows something unrelated to last frame (a
     /// camera cut, a teleport).
     pub reset_history: bool,
@@ -88,12 +92,12 @@ pub struct AoInputs<'a> {
     /// # fn f(depth: &wgpu::Texture, back_depth: &wgpu::Texture, projection: aokit::Projection) {
     /// // The renderer drew `back_depth` with `cull_mode: Some(wgpu::Face::Front)`.
     /// let inputs = aokit::AoInputs {
-    ///     back_depth: Some(back_depth),
+    ///     back_depth: Some(back_depth.into()),
     ///     ..aokit::AoInputs::new(depth, projection)
     /// };
     /// # }
     /// ```
-    pub back_depth: Option<&'a wgpu::Texture>,
+    pub back_depth: Option<AoTexture<'a>>,
     /// Pixels of overscan on each side of the depth, normals and back-face depth: the
     /// renderer drew them `2 * guard_band` pixels wider and taller than the output, with
     /// [`Projection::with_guard_band`], so that samples near the output's edges find the
@@ -110,7 +114,7 @@ pub struct AoInputs<'a> {
     /// let band = 32;
     /// let _overscan = camera.with_guard_band([1920, 1080], band);
     /// let inputs = aokit::AoInputs {
-    ///     normals: Some(normals),
+    ///     normals: Some(normals.into()),
     ///     guard_band: band,
     ///     ..aokit::AoInputs::new(depth, camera)
     /// };
@@ -128,7 +132,7 @@ pub struct AoInputs<'a> {
 /// // The renderer drew its characters with stencil reference 1 in the low bit.
 /// let inputs = aokit::AoInputs {
 ///     mask: Some(aokit::AoMask::Stencil {
-///         texture: depth_stencil,
+///         texture: depth_stencil.into(),
 ///         reference: 1,
 ///         read_mask: 0x01,
 ///     }),
@@ -141,13 +145,13 @@ pub enum AoMask<'a> {
     /// A single-channel `R8Unorm`, `R16Float` or `R32Float` texture of the depth's size with
     /// `TEXTURE_BINDING` usage: 1 receives no AO, 0 receives all of it, and values between
     /// blend (`ao' = ao + (1 - ao) * mask`, the mask clamped to [0, 1]), for soft edges.
-    Texture(&'a wgpu::Texture),
+    Texture(AoTexture<'a>),
     /// The stencil aspect of a texture of the depth's size (often the depth texture itself):
     /// pixels whose `stencil & read_mask` equals `reference & read_mask` receive no AO.
     Stencil {
         /// `Stencil8`, `Depth24PlusStencil8` or `Depth32FloatStencil8`, with
-        /// `TEXTURE_BINDING` usage.
-        texture: &'a wgpu::Texture,
+        /// `TEXTURE_BINDING` usage; a view of one shows the `StencilOnly` aspect.
+        texture: AoTexture<'a>,
         /// The stencil value of the pixels to leave unoccluded.
         reference: u8,
         /// The stencil bits compared.
@@ -176,11 +180,12 @@ impl AoMask<'_> {
     /// ```no_run
     /// # fn f(mask: &aokit::AoMask<'_>, depth: &wgpu::Texture) {
     /// // Whichever kind of mask it is, a window resize must remake it with the depth.
-    /// debug_assert_eq!(mask.texture().size(), depth.size(), "mask left at the old size");
+    /// let size = [depth.width(), depth.height()];
+    /// debug_assert_eq!(mask.texture().size(), size, "mask left at the old size");
     /// # }
     /// ```
-    pub fn texture(&self) -> &wgpu::Texture {
-        match self {
+    pub fn texture(&self) -> AoTexture<'_> {
+        match *self {
             AoMask::Texture(texture) | AoMask::Stencil { texture, .. } => texture,
         }
     }
@@ -194,16 +199,16 @@ impl<'a> AoInputs<'a> {
     /// # fn f(depth: &wgpu::Texture, normals: &wgpu::Texture, view: glam::Mat4, frame: u32) {
     /// let projection = aokit::Projection::perspective(1.0, 16.0 / 9.0, 0.1, None);
     /// let inputs = aokit::AoInputs {
-    ///     normals: Some(normals),
+    ///     normals: Some(normals.into()),
     ///     view_from_world: view,
     ///     frame_index: frame,
     ///     ..aokit::AoInputs::new(depth, projection)
     /// };
     /// # }
     /// ```
-    pub fn new(depth: &'a wgpu::Texture, projection: Projection) -> Self {
+    pub fn new(depth: impl Into<AoTexture<'a>>, projection: Projection) -> Self {
         Self {
-            depth,
+            depth: depth.into(),
             normals: None,
             projection,
             view_from_world: Mat4::IDENTITY,
@@ -336,6 +341,31 @@ pub enum InputError {
     /// An [`AoMask::Stencil`] texture has no stencil aspect.
     #[error("mask texture format {0:?} has no stencil aspect to compare with the reference")]
     MaskNoStencil(wgpu::TextureFormat),
+    /// An [`AoTexture::view`]'s format is neither its texture's nor a form a view of it can
+    /// take (the sRGB twin, one aspect of a depth-stencil format).
+    #[error(
+        "the {what} view is said to be {format:?}, which a view of a {parent:?} texture cannot be"
+    )]
+    ViewFormat {
+        /// Which input.
+        what: &'static str,
+        /// The format given with the view.
+        format: wgpu::TextureFormat,
+        /// Its texture's format.
+        parent: wgpu::TextureFormat,
+    },
+    /// An [`AoTexture::view`]'s size is none of its texture's mip level sizes.
+    #[error(
+        "the {what} view is said to be {size:?} pixels, but its texture's mip levels are {mips:?}"
+    )]
+    ViewSize {
+        /// Which input.
+        what: &'static str,
+        /// The size given with the view.
+        size: [u32; 2],
+        /// Its texture's mip level sizes, the largest first.
+        mips: Vec<[u32; 2]>,
+    },
 }
 
 impl AoInputs<'_> {
@@ -360,7 +390,7 @@ impl AoInputs<'_> {
     pub fn validate(&self, encoding: NormalEncoding) -> Result<[u32; 2], InputError> {
         let depth = self.depth;
         check_depth("depth", depth)?;
-        let size = [depth.width(), depth.height()];
+        let size = depth.size();
         check_size(size)?;
         let output = self.output_size()?;
         if let Some(back) = self.back_depth {
@@ -398,7 +428,7 @@ impl AoInputs<'_> {
                 }
                 _ => {}
             }
-            check_bindable("mask", mask.texture())?;
+            mask.texture().check("mask")?;
             same_size("mask", output, mask.texture())?;
         }
         Ok(output)
@@ -415,7 +445,7 @@ impl AoInputs<'_> {
     /// # Ok(()) }
     /// ```
     pub fn output_size(&self) -> Result<[u32; 2], InputError> {
-        let depth = [self.depth.width(), self.depth.height()];
+        let depth = self.depth.size();
         let band = self.guard_band;
         let inner = depth.map(|side| side.saturating_sub(band.saturating_mul(2)));
         if inner.contains(&0) {
@@ -447,20 +477,20 @@ pub fn check_size(size: [u32; 2]) -> Result<(), InputError> {
 }
 
 /// A depth texture or `R32Float` linear depth the passes can bind.
-fn check_depth(name: &'static str, texture: &wgpu::Texture) -> Result<(), InputError> {
+fn check_depth(name: &'static str, texture: AoTexture<'_>) -> Result<(), InputError> {
     let format = texture.format();
     if !(format.has_depth_aspect() || format == wgpu::TextureFormat::R32Float) {
         return Err(InputError::DepthFormat(name, format));
     }
-    check_bindable(name, texture)
+    texture.check(name)
 }
 
 fn same_size(
     what: &'static str,
     depth: [u32; 2],
-    texture: &wgpu::Texture,
+    texture: AoTexture<'_>,
 ) -> Result<(), InputError> {
-    let other = [texture.width(), texture.height()];
+    let other = texture.size();
     if depth == other {
         Ok(())
     } else {
@@ -469,19 +499,9 @@ fn same_size(
 }
 
 /// A single-sampled texture the passes can bind.
-fn check_readable(name: &'static str, texture: &wgpu::Texture) -> Result<(), InputError> {
+fn check_readable(name: &'static str, texture: AoTexture<'_>) -> Result<(), InputError> {
     if texture.sample_count() > 1 {
         return Err(InputError::Multisampled(name));
     }
-    check_bindable(name, texture)
-}
-
-fn check_bindable(name: &'static str, texture: &wgpu::Texture) -> Result<(), InputError> {
-    if !texture
-        .usage()
-        .contains(wgpu::TextureUsages::TEXTURE_BINDING)
-    {
-        return Err(InputError::NotBindable(name));
-    }
-    Ok(())
+    texture.check(name)
 }

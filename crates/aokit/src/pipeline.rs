@@ -9,7 +9,7 @@ use crate::passes::input::linear_depth::DepthInput;
 use crate::passes::kernel::depth_mips::atlas_format;
 use crate::plan::{At, FrameInputs, FramePlan, Kernel, Pass, Target};
 use crate::record::{Passes, Views};
-use crate::settings::{AoSettings, Method, NormalSpace};
+use crate::settings::{AoSettings, NormalSpace};
 use crate::targets::{Layout, Targets};
 use crate::timing::{PassTime, PassTimer};
 use crate::uniforms::ViewUniforms;
@@ -50,8 +50,7 @@ fn check_inputs(
     if world_normals && !(determinant.is_finite() && determinant.abs() > 1e-6) {
         return Err(InputError::ViewFromWorld { determinant }.into());
     }
-    let back_faces = settings.method == Method::Vbao && settings.vbao.back_faces;
-    if back_faces && inputs.back_depth.is_none() {
+    if settings.reads_back_faces() && inputs.back_depth.is_none() {
         return Err(AoError::MissingBackDepth);
     }
     Ok(size)
@@ -80,7 +79,7 @@ fn plan_band(
     if band == 0 {
         return Ok(None);
     }
-    let full = [inputs.depth.width(), inputs.depth.height()];
+    let full = inputs.depth.size();
     let front = FramePlan::new(settings, &describe(inputs, full));
     if front.scale != plan.scale || !band.is_multiple_of(front.scale) {
         let scale = settings.resolution.scale();
@@ -196,9 +195,10 @@ pub struct AoOutputs<'a> {
     pub working_linear_depth: &'a wgpu::Texture,
     /// The view-space normals, oct32 (`R32Uint`, see
     /// [`normals::unpack_oct32`](crate::normals::unpack_oct32)), at the input's size: the input
-    /// texture itself when it is oct32 in view space, else the input decoded (and turned into
-    /// view space) or the normals reconstructed from depth. The kernel read these, or below
-    /// full resolution the downsample's copy.
+    /// texture itself when it is oct32 in view space (given as a view, the view's texture:
+    /// bind `normals_view`, the view itself), else the input decoded (and turned into view
+    /// space) or the normals reconstructed from depth. The kernel read these, or below full
+    /// resolution the downsample's copy.
     pub normals: &'a wgpu::Texture,
     /// A view of [`AoOutputs::normals`] for binding.
     pub normals_view: &'a wgpu::TextureView,
@@ -246,7 +246,7 @@ pub struct AoOutputs<'a> {
 /// let mut pipeline = AoPipeline::new(device, queue, &AoSettings::default())?;
 /// let mut encoder = device.create_command_encoder(&Default::default());
 /// let outputs = pipeline.encode(device, queue, &mut encoder, &AoInputs {
-///     normals: Some(normals),
+///     normals: Some(normals.into()),
 ///     ..AoInputs::new(depth, projection)
 /// })?;
 /// // ... bind `outputs.ao_view` in your lighting pass ...
@@ -528,11 +528,10 @@ impl AoPipeline {
         let scaled = ViewUniforms::scaled(projection, size, plan.scale, frame_index);
         queue.write_buffer(&self.working_view_uniforms, 0, bytemuck::bytes_of(&scaled));
 
-        self.input_normals_view = inputs.normals.map(|n| n.create_view(&Default::default()));
-        let motion_vectors = inputs
-            .motion_vectors
-            .map(|t| t.create_view(&Default::default()));
-        let input_depth = DepthInput::view(inputs.depth);
+        let whole = wgpu::TextureAspect::All;
+        self.input_normals_view = inputs.normals.map(|n| n.bind(whole));
+        let motion_vectors = inputs.motion_vectors.map(|t| t.bind(whole));
+        let input_depth = DepthInput::view(&inputs.depth);
         let mut views = Views {
             targets,
             input_depth: &input_depth,
@@ -626,7 +625,10 @@ impl AoPipeline {
         };
         let (normals, normals_view) = match plan.normals {
             Target::InputNormals => (
-                inputs.normals.expect("planned with input normals"),
+                inputs
+                    .normals
+                    .expect("planned with input normals")
+                    .texture(),
                 self.input_normals_view.as_ref().expect("made by encode"),
             ),
             target => (&made(target).0, &made(target).1),

@@ -255,8 +255,7 @@ impl FramePlan {
         } else {
             (Target::LinearDepth, normals)
         };
-        let back_faces = settings.method == Method::Vbao && settings.vbao.back_faces;
-        if back_faces {
+        if settings.reads_back_faces() {
             step(
                 At::Working,
                 Pass::BackFaces {
@@ -305,7 +304,7 @@ impl FramePlan {
                 depth: reduction.map_or(working_depth, |_| Target::DepthMips),
                 bent_normals: settings.bent_normals,
                 depth_mip_atlas: depth_mip_atlas.is_some(),
-                back_thickness: back_faces,
+                back_thickness: settings.reads_back_faces(),
             }
         };
         step(

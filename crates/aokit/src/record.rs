@@ -135,7 +135,7 @@ impl Passes {
         match step.pass {
             Pass::LinearDepth => {
                 let output = view(Target::LinearDepth);
-                self.linear_depth.encode(ctx, frame.depth, output);
+                self.linear_depth.encode(ctx, &frame.depth, output);
             }
             Pass::DecodeNormals { encoding, world } => {
                 let to_view = if world {
@@ -168,7 +168,7 @@ impl Passes {
                     settings,
                     ResampleFrame {
                         input: match depth {
-                            Target::InputDepth => DepthInput::of(frame.depth),
+                            Target::InputDepth => DepthInput::of(&frame.depth),
                             _ => DepthInput::Linear,
                         },
                         motion_vectors,
@@ -192,7 +192,7 @@ impl Passes {
                 let back_depth = frame.back_depth.expect("checked before planning");
                 let output = view(Target::BackThickness);
                 self.back_faces
-                    .encode(ctx, scale, back_depth, view(depth), output);
+                    .encode(ctx, scale, &back_depth, view(depth), output);
             }
             Pass::DepthMips { reduction, depth } => {
                 let chain = views.texture(Target::DepthMips);

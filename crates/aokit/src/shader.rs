@@ -482,18 +482,8 @@ pub const DEPTH_MIPS_FP16: ShaderSource = ShaderSource {
 /// assert!(program.source().contains(shader::SLICE));
 /// ```
 pub fn method(method: Method) -> ShaderSource {
-    match method {
-        Method::SsaoCrytek => SSAO_CRYTEK,
-        Method::Ssao => SSAO,
-        Method::Hbao => HBAO,
-        Method::HbaoPlus => HBAO_PLUS,
-        Method::Gtao => GTAO,
-        Method::Vbao => VBAO,
-        Method::Sao => SAO,
-        Method::Ue4Ssao => UE4_SSAO,
-        // Per level; `MSVO_MERGE` combines the levels.
-        Method::Msvo => MSVO_OBSCURANCE,
-    }
+    // For `msvo`, per level; `MSVO_MERGE` combines the levels.
+    crate::methods::spec(method).shader
 }
 
 /// Separable HBAO's tile, line lookup, march and entry point; each pass file adds its axis and

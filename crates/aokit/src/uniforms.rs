@@ -3,10 +3,10 @@
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec2, Vec4};
 
+use crate::methods;
 use crate::noise;
 use crate::projection::Projection;
-use crate::settings::{AoSettings, Method, SpatialSettings};
-use crate::spiral;
+use crate::settings::{AoSettings, SpatialSettings};
 
 /// Mirrors `ViewUniforms` in `shaders/common/view.wgsl`.
 #[repr(C)]
@@ -105,6 +105,28 @@ pub(crate) mod flags {
     pub const BACK_FACES: u32 = 8;
 }
 
+/// A method's part of [`AoUniforms`]: what its `count` and `steps` count, and its occluder
+/// thickness (methods/).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct KernelCounts {
+    pub count: u32,
+    pub steps: u32,
+    pub thickness: f32,
+    pub thickness_growth: f32,
+}
+
+impl KernelCounts {
+    /// Counts with no thickness.
+    pub const fn new(count: u32, steps: u32) -> Self {
+        Self {
+            count,
+            steps,
+            thickness: 0.0,
+            thickness_growth: 0.0,
+        }
+    }
+}
+
 /// Shortest fade the kernels use, as a fraction of the radius: `falloff = 0` (a hard cut) becomes
 /// this so the weight stays a finite linear ramp; the difference is below any sample spacing.
 const MIN_FALLOFF: f32 = 1e-4;
@@ -122,55 +144,13 @@ impl AoUniforms {
         } else {
             (0.0, 1.0)
         };
-        let (count, steps, thickness, thickness_growth) = match settings.method {
-            Method::SsaoCrytek => (settings.ssao_crytek.sample_count, 1, 0.0, 0.0),
-            Method::Ssao => (settings.ssao.sample_count, 1, 0.0, 0.0),
-            Method::Hbao | Method::HbaoPlus => (
-                settings.hbao.direction_count,
-                settings.hbao.step_count,
-                0.0,
-                0.0,
-            ),
-            Method::Gtao => (
-                settings.gtao.slice_count,
-                settings.gtao.steps_per_side,
-                settings.gtao.thickness,
-                0.0,
-            ),
-            Method::Vbao => (
-                settings.vbao.slice_count,
-                settings.vbao.steps_per_side,
-                settings.vbao.thickness * radius,
-                settings.vbao.thickness_growth,
-            ),
-            // SAO's taps and the turns of their spiral.
-            Method::Sao => (
-                settings.sao.sample_count,
-                spiral::turns(settings.sao.sample_count),
-                0.0,
-                0.0,
-            ),
-            // Sample pairs, each one step.
-            Method::Ue4Ssao => (settings.ue4_ssao.sample_count, 1, 0.0, 0.0),
-            // Samples per level, the level count, and the rejection distance in chords.
-            Method::Msvo => (
-                settings.msvo.sample_count,
-                settings.msvo.levels,
-                settings.msvo.thickness,
-                0.0,
-            ),
-        };
+        let method = methods::spec(settings.method);
+        let kernel = (method.kernel_counts)(settings, radius);
         let max_radius_px = settings.effective_max_radius_px();
-        let mut bits = 0;
-        if settings.gtao.normalize_slices {
-            bits |= flags::NORMALIZE_SLICES;
-        }
-        if settings.ue4_ssao.use_normals {
-            bits |= flags::UE4_SSAO_NORMALS;
-        }
-        if settings.vbao.back_faces {
-            bits |= flags::BACK_FACES;
-        }
+        // Every method's bits, whichever runs: each kernel reads only its own.
+        let bits = methods::REGISTRY
+            .iter()
+            .fold(0, |bits, method| bits | (method.flags)(settings));
         Self {
             radius,
             falloff_mul: -1.0 / range,
@@ -187,10 +167,10 @@ impl AoUniforms {
             angle_bias: settings.angle_bias,
             fade_mul,
             fade_add,
-            thickness,
-            thickness_growth,
-            count,
-            steps,
+            thickness: kernel.thickness,
+            thickness_growth: kernel.thickness_growth,
+            count: kernel.count,
+            steps: kernel.steps,
             flags: bits,
             step_power: settings.step_power,
             noise_kind: noise::kind_code(settings.noise.kind),
@@ -344,6 +324,7 @@ impl UpsampleUniforms {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Method;
     use crate::shader;
     use std::mem::size_of;
 

@@ -1,5 +1,6 @@
 //! `aokit settings`: every setting's range, default and effective value, and docs/settings.md
-//! as the declarations (crates/aokit/src/settings/table.rs) generate it.
+//! as the declarations (crates/aokit/src/settings/table.rs, and each method's in
+//! crates/aokit/src/methods/) generate it.
 
 use crate::common::{aokit, failure, ok};
 

@@ -6,7 +6,7 @@ use std::path::Path;
 use aokit::{AoSettings, Method, Preset};
 use serde_json::Value;
 
-use crate::common::{command, ok, output};
+use crate::common::{aokit, command, failure, ok, output};
 
 /// Runs `aokit tune` on the built-in room, one round at the `low` preset, with `args` added,
 /// in a fresh directory; returns the directory and its tune.json.
@@ -336,4 +336,24 @@ fn the_settings_tune_writes_are_what_it_found_and_render_reads_them() {
         "{}",
         String::from_utf8_lossy(&refused.stderr)
     );
+}
+
+#[test]
+fn tune_refuses_a_held_out_view_and_compare_names_the_script_that_makes_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let tune = [
+        "tune",
+        "--view",
+        "room",
+        "--view",
+        "./scenes/islanddm.obj@palms",
+    ];
+    let error = failure(&aokit(dir.path(), &tune));
+    assert!(error.contains("islanddm.obj, a held-out scene"), "{error}");
+    // Without the fetched meshes, the held-out set says how to make them.
+    let compare = [
+        "compare", "--views", "held-out", "--method", "gtao", "--preset", "low",
+    ];
+    let error = failure(&aokit(dir.path(), &compare));
+    assert!(error.contains("scripts/fetch-scenes.sh"), "{error}");
 }

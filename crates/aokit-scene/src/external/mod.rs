@@ -355,11 +355,11 @@ impl ExternalAo {
             queue,
             &mut encoder,
             &AoInputs {
-                normals: self.normals.as_ref(),
+                normals: self.normals.as_ref().map(Into::into),
                 view_from_world: self.view_from_world,
                 frame_index,
                 reset_history: std::mem::take(&mut self.reset_history),
-                back_depth: self.back_depth.as_ref(),
+                back_depth: self.back_depth.as_ref().map(Into::into),
                 guard_band: self.guard_band,
                 ..AoInputs::new(&self.depth, self.projection)
             },

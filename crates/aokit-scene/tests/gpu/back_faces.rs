@@ -49,7 +49,7 @@ fn step_ao(gpu: &aokit::GpuContext, back: Option<&[f32]>) -> Vec<f32> {
     let settings = step_settings(back.is_some());
     let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
     let inputs = AoInputs {
-        back_depth: back.as_ref(),
+        back_depth: back.as_ref().map(Into::into),
         ..AoInputs::new(&depth, projection)
     };
     encode_frame(gpu, &mut pipeline, &inputs, |outputs| {
@@ -243,7 +243,7 @@ fn missing_or_unusable_back_faces_are_refused_naming_the_problem() {
     assert_eq!(error, AoError::MissingBackDepth);
     assert!(message.contains("vbao.back_faces"), "{message}");
     let rgba = texture(wgpu::TextureFormat::Rgba8Unorm, SIZE);
-    let (message, error) = encode(Some(&rgba)).unwrap();
+    let (message, error) = encode(Some((&rgba).into())).unwrap();
     assert_eq!(
         error,
         AoError::Input(InputError::DepthFormat(
@@ -253,7 +253,7 @@ fn missing_or_unusable_back_faces_are_refused_naming_the_problem() {
     );
     assert!(message.contains("back-face depth"), "{message}");
     let small = texture(wgpu::TextureFormat::Depth32Float, [SIZE[0] / 2, SIZE[1]]);
-    let (_, error) = encode(Some(&small)).unwrap();
+    let (_, error) = encode(Some((&small).into())).unwrap();
     assert_eq!(
         error,
         AoError::Input(InputError::SizeMismatch {

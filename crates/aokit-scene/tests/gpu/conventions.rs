@@ -71,7 +71,7 @@ fn every_depth_convention_scores_alike_against_the_reference() {
         let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
         let mut ao_of = |depth: &wgpu::Texture| {
             let inputs = AoInputs {
-                normals: Some(&gbuffer.normals),
+                normals: Some((&gbuffer.normals).into()),
                 ..AoInputs::new(depth, projection)
             };
             encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
@@ -180,7 +180,7 @@ fn every_depth_convention_scores_alike_against_the_reference() {
                 ..settings
             };
             let inputs = AoInputs {
-                normals: Some(&texture),
+                normals: Some((&texture).into()),
                 view_from_world,
                 ..AoInputs::new(&gbuffer.depth, projection)
             };

@@ -94,7 +94,7 @@ fn bad_bands_are_refused() {
             .map(|outputs| [outputs.ao.width(), outputs.ao.height()])
     };
     let inputs = |band| AoInputs {
-        normals: Some(&gbuffer.normals),
+        normals: Some((&gbuffer.normals).into()),
         guard_band: band,
         ..AoInputs::new(&gbuffer.depth, projection)
     };
@@ -120,7 +120,7 @@ fn bad_bands_are_refused() {
         "{err}"
     );
     let moving = AoInputs {
-        motion_vectors: Some(&gbuffer.motion),
+        motion_vectors: Some((&gbuffer.motion).into()),
         ..inputs(4)
     };
     let err = run(&settings, &moving).unwrap_err();

@@ -41,7 +41,7 @@ fn masked_pixels_keep_ao_1_and_the_others_are_untouched() {
         // A fresh pipeline per run, so that every run sees the same temporal history.
         let mut pipeline = AoPipeline::new(device, queue, &settings).unwrap();
         let inputs = AoInputs {
-            normals: Some(&gbuffer.normals),
+            normals: Some((&gbuffer.normals).into()),
             mask,
             ..AoInputs::new(depth, projection)
         };
@@ -60,7 +60,7 @@ fn masked_pixels_keep_ao_1_and_the_others_are_untouched() {
         .map(|i| [255, 128, 0][third(i)])
         .collect();
     let mask = r8_texture(&gpu, SIZE, &weights);
-    let masked = ao_with(Some(AoMask::Texture(&mask)), &gbuffer.depth);
+    let masked = ao_with(Some(AoMask::Texture((&mask).into())), &gbuffer.depth);
     for (i, (&m, &u)) in masked.iter().zip(&unmasked).enumerate() {
         let expected = match third(i) {
             0 => 1.0,
@@ -83,7 +83,7 @@ fn masked_pixels_keep_ao_1_and_the_others_are_untouched() {
             },
         );
         let mask = AoMask::Stencil {
-            texture: &depth_stencil,
+            texture: (&depth_stencil).into(),
             reference: 0x13,
             read_mask: 0x0f,
         };
@@ -116,13 +116,13 @@ fn masks_the_pipeline_cannot_use_are_refused_naming_the_problem() {
     let projection = aokit::Projection::perspective(1.0, 1.5, 0.1, None);
     let cases = [
         (
-            AoMask::Texture(&rgba),
+            AoMask::Texture((&rgba).into()),
             InputError::MaskFormat(wgpu::TextureFormat::Rgba8Unorm),
             "Rgba8Unorm",
         ),
         (
             AoMask::Stencil {
-                texture: &depth,
+                texture: (&depth).into(),
                 reference: 1,
                 read_mask: 0xff,
             },
@@ -130,7 +130,7 @@ fn masks_the_pipeline_cannot_use_are_refused_naming_the_problem() {
             "stencil",
         ),
         (
-            AoMask::Texture(&small),
+            AoMask::Texture((&small).into()),
             InputError::SizeMismatch {
                 what: "mask",
                 depth: SIZE,

@@ -143,7 +143,7 @@ fn every_depth_resolve_stays_within_the_tolerance() {
             )
             .unwrap();
             let inputs = AoInputs {
-                normals: Some(&normal_texture),
+                normals: Some((&normal_texture).into()),
                 ..AoInputs::new(&depth_texture, projection)
             };
             let ao = encode_frame(&gpu, &mut pipeline, &inputs, |o| {

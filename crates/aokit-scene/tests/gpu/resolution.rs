@@ -59,10 +59,10 @@ struct Output {
 
 fn run(gpu: &GpuContext, pipeline: &mut AoPipeline, inputs: &Inputs, frame_index: u32) -> Output {
     let frame = AoInputs {
-        normals: Some(&inputs.normals),
+        normals: Some((&inputs.normals).into()),
         view_from_world: inputs.frame.view_from_world,
         frame_index,
-        motion_vectors: inputs.motion_vectors.as_ref(),
+        motion_vectors: inputs.motion_vectors.as_ref().map(Into::into),
         ..AoInputs::new(&inputs.depth, inputs.frame.projection)
     };
     encode_frame(gpu, pipeline, &frame, |outputs| {
@@ -389,7 +389,7 @@ fn every_kind_of_depth_is_read_below_full_resolution_without_a_linear_depth_pass
             )
             .unwrap();
         let inputs = AoInputs {
-            normals: Some(&gbuffer.normals),
+            normals: Some((&gbuffer.normals).into()),
             ..AoInputs::new(depth, projection)
         };
         let (ao, linear_depth) = encode_frame(&gpu, &mut pipeline, &inputs, |o| {
@@ -455,7 +455,7 @@ fn a_one_pixel_image_runs_below_full_resolution_as_at_full() {
     let outputs = |settings: AoSettings| {
         let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
         let frame = AoInputs {
-            normals: Some(&inputs.normals),
+            normals: Some((&inputs.normals).into()),
             ..AoInputs::new(&inputs.depth, inputs.frame.projection)
         };
         encode_frame(&gpu, &mut pipeline, &frame, |outputs| {

@@ -96,7 +96,7 @@ fn world_normals_with_a_degenerate_view_from_world_are_refused() {
     for matrix in [glam::Mat4::ZERO, glam::Mat4::NAN] {
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         let inputs = aokit::AoInputs {
-            normals: Some(&normals),
+            normals: Some((&normals).into()),
             view_from_world: matrix,
             ..aokit::AoInputs::new(&depth, Projection::perspective(1.0, 1.0, 0.1, None))
         };

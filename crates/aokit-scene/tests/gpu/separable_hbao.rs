@@ -225,8 +225,8 @@ fn below_full_resolution_the_filters_and_the_mask_follow_as_for_per_pixel_hbao()
     let run = |settings: &AoSettings| {
         let mut pipeline = AoPipeline::new(device, queue, settings).unwrap();
         let inputs = AoInputs {
-            normals: Some(&gbuffer.normals),
-            mask: Some(AoMask::Texture(&mask)),
+            normals: Some((&gbuffer.normals).into()),
+            mask: Some(AoMask::Texture((&mask).into())),
             ..AoInputs::new(&gbuffer.depth, projection)
         };
         encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {

@@ -193,11 +193,11 @@ fn run_frame(
             )
             .map_err(|e| format!("mask upload: {e}"))?;
             let inputs = AoInputs {
-                normals: Some(&gbuffer.normals),
+                normals: Some((&gbuffer.normals).into()),
                 view_from_world: camera.view_from_world(),
                 frame_index: frame,
-                mask: Some(AoMask::Texture(&mask)),
-                back_depth: gbuffer.back_depth.as_ref(),
+                mask: Some(AoMask::Texture((&mask).into())),
+                back_depth: gbuffer.back_depth.as_ref().map(Into::into),
                 ..AoInputs::new(&gbuffer.depth, projection)
             };
             let mut encoder = device.create_command_encoder(&Default::default());

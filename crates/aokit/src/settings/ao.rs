@@ -3,6 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::*;
+use crate::methods::{self, Knob};
 use crate::presets;
 
 /// Everything that shapes the AO a pipeline produces.
@@ -142,11 +143,11 @@ impl AoSettings {
         // The method's tuned values (docs/tuning.md). The bias and angle bias of the methods
         // not chosen come from their own rows, so that switching `method` later keeps them.
         let tuned = presets::preset_values(method, preset);
-        let knob = |owners: &[Method]| {
-            let owner = if owners.contains(&method) {
+        let knob = |knob: Knob, otherwise: Method| {
+            let owner = if methods::spec(method).knob == knob {
                 method
             } else {
-                owners[0]
+                otherwise
             };
             presets::preset_values(owner, preset).knob
         };
@@ -161,13 +162,8 @@ impl AoSettings {
             // shadowing, and samples that far apart miss the texture cache.
             max_radius_px: 256.0,
             min_radius_px: 0.0,
-            bias: knob(&[
-                Method::Ssao,
-                Method::SsaoCrytek,
-                Method::Sao,
-                Method::Ue4Ssao,
-            ]),
-            angle_bias: knob(&[Method::Hbao, Method::HbaoPlus]),
+            bias: knob(Knob::Bias, Method::Ssao),
+            angle_bias: knob(Knob::AngleBias, Method::Hbao),
             step_power: tuned.step_power,
             max_distance: 0.0,
             distance_falloff: 0.0,
@@ -227,22 +223,7 @@ impl AoSettings {
         if method != Method::Vbao {
             return settings;
         }
-        let tuned = presets::vbao_back_faces_values(preset);
-        let [slice_count, steps_per_side] = tuned.split;
-        Self {
-            radius_multiplier: tuned.radius_multiplier,
-            falloff: tuned.falloff,
-            power: tuned.power,
-            step_power: tuned.step_power,
-            vbao: VbaoSettings {
-                slice_count,
-                steps_per_side,
-                thickness: tuned.knob,
-                back_faces: true,
-                ..settings.vbao
-            },
-            ..settings
-        }
+        methods::with_back_faces(settings, preset)
     }
 
     /// Depth samples the AO kernel takes per pixel: the cost that does not depend on the GPU.
@@ -257,25 +238,7 @@ impl AoSettings {
     /// assert_eq!(gtao.samples_per_pixel(), 18);
     /// ```
     pub fn samples_per_pixel(&self) -> u32 {
-        match self.method {
-            Method::SsaoCrytek => self.ssao_crytek.sample_count,
-            Method::Ssao => self.ssao.sample_count,
-            // +-x and +-y.
-            Method::Hbao if self.separable_hbao() => 4 * self.hbao.step_count,
-            Method::Hbao | Method::HbaoPlus => self.hbao.direction_count * self.hbao.step_count,
-            Method::Gtao => 2 * self.gtao.slice_count * self.gtao.steps_per_side,
-            Method::Vbao => 2 * self.vbao.slice_count * self.vbao.steps_per_side,
-            Method::Sao => self.sao.sample_count,
-            Method::Ue4Ssao => 2 * self.ue4_ssao.sample_count,
-            // The working level's; the coarser levels add at most a third.
-            Method::Msvo => self.msvo.sample_count,
-        }
-    }
-
-    /// Whether the pipeline runs `hbao` as its two separable passes ([`HbaoVariant::Separable`])
-    /// rather than one kernel.
-    pub(crate) fn separable_hbao(&self) -> bool {
-        self.method == Method::Hbao && self.hbao.variant == HbaoVariant::Separable
+        (methods::spec(self.method).samples_per_pixel)(self)
     }
 
     /// The largest screen radius the kernel uses, in pixels of the input: [`max_radius_px`],
@@ -300,16 +263,6 @@ impl AoSettings {
     /// assert_eq!(settings.effective_max_radius_px(), 256.0);
     /// ```
     pub fn effective_max_radius_px(&self) -> f32 {
-        if self.separable_hbao() {
-            let apron = (SEPARABLE_HBAO_MAX_RADIUS_PX * self.resolution.scale()) as f32;
-            self.max_radius_px.min(apron)
-        } else if self.method == Method::Msvo {
-            // The coarsest level's disc, in the input's pixels.
-            let disc = MSVO_DISC_RADIUS << (self.msvo.levels.clamp(1, MSVO_MAX_LEVELS) - 1);
-            self.max_radius_px
-                .min((disc * self.resolution.scale()) as f32)
-        } else {
-            self.max_radius_px
-        }
+        (methods::spec(self.method).max_radius_px)(self)
     }
 }

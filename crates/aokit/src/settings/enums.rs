@@ -68,7 +68,7 @@ impl Method {
     /// assert_eq!(slice_methods, [Method::Gtao, Method::Vbao]);
     /// ```
     pub fn has_bent_normals(self) -> bool {
-        matches!(self, Method::Gtao | Method::Vbao)
+        crate::methods::spec(self).bent_normals
     }
 
     /// Whether the method's samples lie in slices (half-planes through the view vector), which
@@ -82,10 +82,7 @@ impl Method {
     /// assert_eq!(marching, [Method::Hbao, Method::HbaoPlus, Method::Gtao, Method::Vbao]);
     /// ```
     pub fn marches_slices(self) -> bool {
-        matches!(
-            self,
-            Method::Hbao | Method::HbaoPlus | Method::Gtao | Method::Vbao
-        )
+        crate::methods::spec(self).marches_slices
     }
 
     /// Whether the method's kernel reads a depth MIP chain, which the pipeline then builds
@@ -101,7 +98,7 @@ impl Method {
     /// assert_eq!(with_chain, [Method::Sao, Method::Ue4Ssao, Method::Msvo]);
     /// ```
     pub fn reads_depth_mips(self) -> bool {
-        matches!(self, Method::Sao | Method::Ue4Ssao | Method::Msvo)
+        crate::methods::spec(self).depth_mips.is_some()
     }
 }
 

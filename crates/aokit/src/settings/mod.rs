@@ -8,7 +8,6 @@
 
 mod ao;
 mod enums;
-mod methods;
 mod named;
 mod spec;
 mod stages;
@@ -17,15 +16,19 @@ mod table;
 mod tests;
 mod validate;
 
+pub use crate::methods::{
+    GtaoSettings, HbaoSettings, MAX_SAMPLE_COUNT, MSVO_MAX_LEVELS, MsvoSettings,
+    SEPARABLE_HBAO_MAX_RADIUS_PX, SsaoSettings, Ue4SsaoSettings, VbaoSettings,
+};
 pub use ao::*;
 pub use enums::*;
-pub use methods::*;
 pub(crate) use named::{find_by_name, named_enum};
-pub(crate) use spec::Field;
+pub(crate) use spec::{Field, Rule};
 pub use spec::{
     FloatRange, IntegerRange, Limit, SetError, SettingKind, SettingSpec, SettingValue,
     find_setting, suggest_setting,
 };
 pub use stages::*;
 pub use table::SETTINGS;
+pub(crate) use table::{at_least, count, integers, names_of, positive, setting, unit};
 pub use validate::*;

@@ -365,11 +365,11 @@ impl Field for f32 {
 
 /// A check between settings that no range states (a method that cannot run a variant).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Rule {
-    pub(super) holds: fn(&AoSettings) -> bool,
+pub(crate) struct Rule {
+    pub(crate) holds: fn(&AoSettings) -> bool,
     /// The value in the error: the setting's and the other one's.
-    pub(super) value: fn(&AoSettings) -> String,
-    pub(super) expected: &'static str,
+    pub(crate) value: fn(&AoSettings) -> String,
+    pub(crate) expected: &'static str,
 }
 
 /// One setting, declared once: its key, the values it takes and its help. Everything that
@@ -404,9 +404,9 @@ pub struct SettingSpec {
     pub help: &'static str,
     /// Where the default needs a word more than its value: shown after it in docs/settings.md.
     pub default_note: Option<&'static str>,
-    pub(super) get: fn(&AoSettings) -> SettingValue,
-    pub(super) set: fn(&mut AoSettings, SettingValue) -> Result<(), String>,
-    pub(super) rule: Option<Rule>,
+    pub(crate) get: fn(&AoSettings) -> SettingValue,
+    pub(crate) set: fn(&mut AoSettings, SettingValue) -> Result<(), String>,
+    pub(crate) rule: Option<Rule>,
 }
 
 impl SettingSpec {

@@ -6,17 +6,18 @@ use std::f32::consts::FRAC_PI_2;
 
 use super::spec::{Field, Rule};
 use super::*;
+use crate::methods::REGISTRY;
 
-const fn integers(min: u32, max: u32, step: u32) -> SettingKind {
+pub(crate) const fn integers(min: u32, max: u32, step: u32) -> SettingKind {
     SettingKind::Integer(IntegerRange { min, max, step })
 }
 
 /// Samples, slices, directions or steps.
-const fn count() -> SettingKind {
+pub(crate) const fn count() -> SettingKind {
     integers(1, MAX_SAMPLE_COUNT, 1)
 }
 
-const fn float(
+pub(crate) const fn float(
     min: f32,
     min_inclusive: bool,
     max: Limit,
@@ -32,7 +33,7 @@ const fn float(
     })
 }
 
-const fn above(min: f32, min_inclusive: bool) -> SettingKind {
+pub(crate) const fn above(min: f32, min_inclusive: bool) -> SettingKind {
     SettingKind::Float(FloatRange {
         min,
         min_inclusive,
@@ -42,28 +43,28 @@ const fn above(min: f32, min_inclusive: bool) -> SettingKind {
     })
 }
 
-const fn positive() -> SettingKind {
+pub(crate) const fn positive() -> SettingKind {
     above(0.0, false)
 }
 
-const fn at_least(min: f32) -> SettingKind {
+pub(crate) const fn at_least(min: f32) -> SettingKind {
     above(min, true)
 }
 
-const fn within(min: f32, max: f32) -> SettingKind {
+pub(crate) const fn within(min: f32, max: f32) -> SettingKind {
     float(min, true, Limit::Value(max), true, None)
 }
 
-const fn unit() -> SettingKind {
+pub(crate) const fn unit() -> SettingKind {
     within(0.0, 1.0)
 }
 
 /// From 0 up to another setting's value.
-const fn up_to(key: &'static str, unless_zero: bool) -> SettingKind {
+pub(crate) const fn up_to(key: &'static str, unless_zero: bool) -> SettingKind {
     float(0.0, true, Limit::Setting { key, unless_zero }, true, None)
 }
 
-const fn names_of<T: Field>(_field: fn(&AoSettings) -> T) -> &'static [&'static str] {
+pub(crate) const fn names_of<T: Field>(_field: fn(&AoSettings) -> T) -> &'static [&'static str] {
     T::NAMES
 }
 
@@ -71,47 +72,39 @@ const fn names_of<T: Field>(_field: fn(&AoSettings) -> T) -> &'static [&'static 
 /// enum, `bool` is a bool; other kinds are given.
 macro_rules! setting {
     ($head:ident $(. $tail:ident)*, choice, $($rest:tt)*) => {
-        setting!(@spec $head $(. $tail)*,
-            SettingKind::Choice(names_of(|s: &AoSettings| s.$head $(. $tail)*)), $($rest)*)
+        $crate::settings::setting!(@spec $head $(. $tail)*,
+            $crate::settings::SettingKind::Choice($crate::settings::names_of(
+                |s: &$crate::settings::AoSettings| s.$head $(. $tail)*
+            )), $($rest)*)
     };
     ($head:ident $(. $tail:ident)*, bool, $($rest:tt)*) => {
-        setting!(@spec $head $(. $tail)*, SettingKind::Bool, $($rest)*)
+        $crate::settings::setting!(@spec $head $(. $tail)*, $crate::settings::SettingKind::Bool, $($rest)*)
     };
     ($head:ident $(. $tail:ident)*, $kind:expr, $($rest:tt)*) => {
-        setting!(@spec $head $(. $tail)*, $kind, $($rest)*)
+        $crate::settings::setting!(@spec $head $(. $tail)*, $kind, $($rest)*)
     };
     (@spec $head:ident $(. $tail:ident)*, $kind:expr, $help:expr
         $(, note = $note:expr)? $(, rule = $rule:expr)? $(,)?) => {
-        SettingSpec {
+        $crate::settings::SettingSpec {
             name: concat!(stringify!($head) $(, ".", stringify!($tail))*),
             kind: $kind,
             help: $help,
-            default_note: setting!(@option $($note)?),
-            get: |s| Field::to_value(s.$head $(. $tail)*),
+            default_note: $crate::settings::setting!(@option $($note)?),
+            get: |s| $crate::settings::Field::to_value(s.$head $(. $tail)*),
             set: |s, value| {
-                s.$head $(. $tail)* = Field::from_value(value)?;
+                s.$head $(. $tail)* = $crate::settings::Field::from_value(value)?;
                 Ok(())
             },
-            rule: setting!(@option $($rule)?),
+            rule: $crate::settings::setting!(@option $($rule)?),
         }
     };
     (@option $value:expr) => { Some($value) };
     (@option) => { None };
 }
+pub(crate) use setting;
 
-/// Every setting of [`AoSettings`], in the order docs/settings.md lists them and
-/// [`AoSettings::validate`] checks them.
-///
-/// ```
-/// use aokit::settings::{SETTINGS, SettingKind};
-/// // The keys a `--set` completion offers, with their ranges.
-/// for spec in SETTINGS {
-///     println!("{} {}", spec.name, spec.kind.range_text());
-/// }
-/// let counts = SETTINGS.iter().filter(|s| matches!(s.kind, SettingKind::Integer(_))).count();
-/// assert!(counts > 10);
-/// ```
-pub static SETTINGS: &[SettingSpec] = &[
+/// The settings before the methods' own.
+const BEFORE_METHODS: &[SettingSpec] = &[
     setting!(method, choice, "the AO method ([methods.md](methods.md))"),
     setting!(
         radius,
@@ -209,130 +202,10 @@ pub static SETTINGS: &[SettingSpec] = &[
             expected: "false, or a method with slices (gtao, vbao)",
         }
     ),
-    setting!(
-        ssao_crytek.sample_count,
-        count(),
-        "points in the sphere per pixel"
-    ),
-    setting!(
-        ssao.sample_count,
-        count(),
-        "points in the hemisphere per pixel"
-    ),
-    setting!(
-        sao.sample_count,
-        count(),
-        "taps on SAO's spiral per pixel (its turns follow from the count: \
-         [methods/sao.md](methods/sao.md))"
-    ),
-    setting!(
-        msvo.sample_count,
-        integers(2, MAX_SAMPLE_COUNT, 2),
-        "depth samples per texel at each level, in mirrored pairs on a disc of 5 texels of the \
-         level; the working level costs this many per pixel, the coarser four together at most a \
-         third more ([methods/msvo.md](methods/msvo.md))"
-    ),
-    setting!(
-        msvo.levels,
-        integers(1, MSVO_MAX_LEVELS, 1),
-        "levels of the depth MIP chain the obscurance is computed at and merged from; the screen \
-         radius stops at `5 * 2^(levels - 1)` working texels (80 with all five)"
-    ),
-    setting!(
-        msvo.thickness,
-        positive(),
-        "Unity's thickness modifier: a sample more than this many sphere chords in front of the \
-         sphere is taken for a thin occluder and rejected; larger darkens creases and adds halos \
-         around objects",
-        note = "Unity's default"
-    ),
-    setting!(
-        ue4_ssao.sample_count,
-        count(),
-        "sample pairs per pixel, each two depth samples mirrored about the pixel: a pixel reads \
-         twice this many depths, so presets give 2, 4, 9 and 27 pairs \
-         ([methods/ue4-ssao.md](methods/ue4-ssao.md))"
-    ),
-    setting!(
-        ue4_ssao.use_normals,
-        bool,
-        "`ue4-ssao`'s normal version, each sample's angle measured from the tangent plane; false: \
-         the depth-only version, the angle between the two samples of a pair with the flat-surface \
-         `bias`"
-    ),
-    setting!(
-        hbao.direction_count,
-        count(),
-        "screen directions over the full circle, rotated per pixel (`hbao`, `hbao-plus`; not read \
-         by `hbao.variant = separable`, which has four)"
-    ),
-    setting!(
-        hbao.step_count,
-        count(),
-        "samples per direction (`hbao`, `hbao-plus`)"
-    ),
-    setting!(
-        hbao.variant,
-        choice,
-        "how `hbao` runs: one kernel per pixel, or two passes over rows and then columns of depth \
-         in workgroup memory, after NVIDIA's compute-shader HBAO: four fixed directions (+-x, \
-         +-y), `4 * step_count` samples, the screen radius stopped at 128 texels of the working \
-         resolution ([methods/hbao.md](methods/hbao.md#separable-hbao-hbaovariant--separable)); \
-         `hbao-plus` accepts only `per-pixel`",
-        rule = Rule {
-            holds: |s| !(s.method == Method::HbaoPlus && s.hbao.variant == HbaoVariant::Separable),
-            value: |s| format!("{} with method {}", s.hbao.variant.name(), s.method.name()),
-            expected: "per-pixel: the separable passes integrate hbao's horizons, which \
-                       hbao-plus does not have",
-        }
-    ),
-    setting!(
-        gtao.slice_count,
-        count(),
-        "slices (screen directions over a half circle) per pixel"
-    ),
-    setting!(
-        gtao.steps_per_side,
-        count(),
-        "depth samples on each side of the pixel per slice"
-    ),
-    setting!(
-        gtao.normalize_slices,
-        bool,
-        "divide by the slices' unoccluded integrals (see \
-         [gtao.md](methods/gtao.md#slices-normalised-by-their-unoccluded-integrals))"
-    ),
-    setting!(
-        gtao.thickness,
-        unit(),
-        "the GTAO paper's thickness heuristic: how far the horizon falls back towards a sample \
-         below it"
-    ),
-    setting!(vbao.slice_count, count(), "slices per pixel"),
-    setting!(
-        vbao.steps_per_side,
-        count(),
-        "depth samples on each side per slice"
-    ),
-    setting!(
-        vbao.thickness,
-        positive(),
-        "thickness of every occluder, as a fraction of the radius"
-    ),
-    setting!(
-        vbao.thickness_growth,
-        at_least(0.0),
-        "extra thickness per unit of the occluder's view depth"
-    ),
-    setting!(
-        vbao.back_faces,
-        bool,
-        "measure each occluder's thickness from `AoInputs::back_depth` (the depth of the back \
-         faces; `aokit ao --back-depth`), `vbao.thickness` then being the least thickness; turning \
-         it on in `--set` or a settings file starts from VBAO's presets tuned with back faces \
-         (`AoSettings::preset_with_back_faces`, \
-         [methods/vbao.md](methods/vbao.md#measured-thickness-vbaoback_faces))"
-    ),
+];
+
+/// The settings after the methods' own.
+const AFTER_METHODS: &[SettingSpec] = &[
     setting!(
         normals.encoding,
         choice,
@@ -517,3 +390,53 @@ pub static SETTINGS: &[SettingSpec] = &[
          ([gtao.md](methods/gtao.md#the-lean-march))"
     ),
 ];
+
+/// Every setting of [`AoSettings`], in the order docs/settings.md lists them and
+/// [`AoSettings::validate`] checks them.
+///
+/// ```
+/// use aokit::settings::{SETTINGS, SettingKind};
+/// // The keys a `--set` completion offers, with their ranges.
+/// for spec in SETTINGS {
+///     println!("{} {}", spec.name, spec.kind.range_text());
+/// }
+/// let counts = SETTINGS.iter().filter(|s| matches!(s.kind, SettingKind::Integer(_))).count();
+/// assert!(counts > 10);
+/// ```
+pub static SETTINGS: &[SettingSpec] = &ALL;
+
+/// How many settings there are: the general ones and every registered method's.
+const LEN: usize = {
+    let mut len = BEFORE_METHODS.len() + AFTER_METHODS.len();
+    let mut i = 0;
+    while i < REGISTRY.len() {
+        len += REGISTRY[i].settings.len();
+        i += 1;
+    }
+    len
+};
+
+/// [`SETTINGS`]' rows: the general ones, then each method's in the registry's order, then the
+/// stages'.
+static ALL: [SettingSpec; LEN] = {
+    let mut all = [BEFORE_METHODS[0]; LEN];
+    let mut at = append(&mut all, 0, BEFORE_METHODS);
+    let mut i = 0;
+    while i < REGISTRY.len() {
+        at = append(&mut all, at, REGISTRY[i].settings);
+        i += 1;
+    }
+    assert!(append(&mut all, at, AFTER_METHODS) == LEN);
+    all
+};
+
+/// Copies `rows` into `all` from `at`, returning where they end.
+const fn append(all: &mut [SettingSpec], mut at: usize, rows: &[SettingSpec]) -> usize {
+    let mut i = 0;
+    while i < rows.len() {
+        all[at] = rows[i];
+        at += 1;
+        i += 1;
+    }
+    at
+}

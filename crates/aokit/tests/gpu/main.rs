@@ -5,3 +5,4 @@ mod device;
 mod noise;
 mod normals;
 mod properties;
+mod views;

@@ -233,7 +233,7 @@ fn the_pipeline_decodes_every_format_to_the_cpu_mirrors_normals() {
                 queue,
                 &mut encoder,
                 &AoInputs {
-                    normals: Some(&normals),
+                    normals: Some((&normals).into()),
                     ..AoInputs::new(&depth, projection())
                 },
             )
@@ -275,7 +275,7 @@ fn a_normal_texture_in_another_format_than_the_encoding_is_refused_naming_both()
     )
     .unwrap();
     let inputs = AoInputs {
-        normals: Some(&normals),
+        normals: Some((&normals).into()),
         ..AoInputs::new(&depth, projection())
     };
     for encoding in NormalEncoding::ALL {
@@ -344,7 +344,7 @@ fn ao_and_normals(
             queue,
             &mut encoder,
             &AoInputs {
-                normals,
+                normals: normals.map(Into::into),
                 ..AoInputs::new(depth, projection())
             },
         )

@@ -217,8 +217,8 @@ fn frame(
         Projection::perspective(case.fov, aspect, 0.1, None)
     };
     let inputs = AoInputs {
-        normals: normals.as_ref(),
-        back_depth: settings.vbao.back_faces.then_some(&back),
+        normals: normals.as_ref().map(Into::into),
+        back_depth: settings.vbao.back_faces.then_some((&back).into()),
         frame_index,
         ..AoInputs::new(&depth, projection)
     };

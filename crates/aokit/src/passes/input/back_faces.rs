@@ -3,6 +3,7 @@
 
 use std::collections::HashMap;
 
+use crate::input_texture::AoTexture;
 use crate::passes::input::linear_depth::DepthInput;
 use crate::passes::{ComputeKernel, PassContext, bind};
 use crate::shader;
@@ -38,7 +39,7 @@ impl BackFacesPass {
         &mut self,
         ctx: &mut PassContext<'_>,
         scale: u32,
-        back_depth: &wgpu::Texture,
+        back_depth: &AoTexture<'_>,
         working_depth: &wgpu::TextureView,
         thickness: &wgpu::TextureView,
     ) {

@@ -3,6 +3,7 @@
 
 use std::collections::HashMap;
 
+use crate::input_texture::AoTexture;
 use crate::passes::{ComputeKernel, PassContext, bind};
 use crate::shader;
 
@@ -28,7 +29,7 @@ pub enum DepthInput {
 
 impl DepthInput {
     /// The kind of `texture`: hardware depth when its format has a depth aspect, else linear.
-    pub fn of(texture: &wgpu::Texture) -> Self {
+    pub fn of(texture: &AoTexture<'_>) -> Self {
         match (
             texture.format().has_depth_aspect(),
             texture.sample_count() > 1,
@@ -55,16 +56,13 @@ impl DepthInput {
         )
     }
 
-    /// A view of `texture` the passes can bind: the depth aspect alone of a depth-stencil
-    /// format.
-    pub fn view(texture: &wgpu::Texture) -> wgpu::TextureView {
-        texture.create_view(&wgpu::TextureViewDescriptor {
-            aspect: if texture.format().has_depth_aspect() {
-                wgpu::TextureAspect::DepthOnly
-            } else {
-                wgpu::TextureAspect::All
-            },
-            ..Default::default()
+    /// A view of `texture` the passes can bind: the caller's view, else the depth aspect
+    /// alone of a depth-stencil format.
+    pub fn view(texture: &AoTexture<'_>) -> wgpu::TextureView {
+        texture.bind(if texture.format().has_depth_aspect() {
+            wgpu::TextureAspect::DepthOnly
+        } else {
+            wgpu::TextureAspect::All
         })
     }
 }
@@ -93,7 +91,7 @@ impl LinearDepthPass {
     pub fn encode(
         &mut self,
         ctx: &mut PassContext<'_>,
-        depth: &wgpu::Texture,
+        depth: &AoTexture<'_>,
         output: &wgpu::TextureView,
     ) {
         let input = DepthInput::of(depth);

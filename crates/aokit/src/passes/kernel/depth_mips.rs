@@ -31,12 +31,7 @@ pub(crate) enum DepthReduction {
 impl DepthReduction {
     /// The reduction `method`'s kernel expects, or `None` for a method that reads no chain.
     pub fn of(method: Method) -> Option<Self> {
-        match method {
-            // MSVO's levels hold real depths too: an average across an edge would occlude.
-            Method::Sao | Method::Msvo => Some(Self::Subsample),
-            Method::Ue4Ssao => Some(Self::Furthest),
-            _ => None,
-        }
+        crate::methods::spec(method).depth_mips
     }
 }
 

@@ -85,13 +85,10 @@ impl MaskPass {
             };
             ComputeKernel::with_constants(ctx.device, &source, &layout, &constants)
         });
-        let mask_view = texture.create_view(&wgpu::TextureViewDescriptor {
-            aspect: if variant.stencil.is_some() {
-                wgpu::TextureAspect::StencilOnly
-            } else {
-                wgpu::TextureAspect::All
-            },
-            ..Default::default()
+        let mask_view = texture.bind(if variant.stencil.is_some() {
+            wgpu::TextureAspect::StencilOnly
+        } else {
+            wgpu::TextureAspect::All
         });
         ctx.dispatch(
             kernel,
