@@ -12,11 +12,12 @@ methods=${1:-all}
 out=target/quality
 rm -rf "$out"
 # The raw-against-denoised table bench/filtered-quality.sh writes, the tuning and held-out
-# tables bench/heldout-quality.sh writes and the ranking bench/ranking.sh writes: kept as they
-# are.
+# tables bench/heldout-quality.sh writes, the ranking bench/ranking.sh writes and the guard-band
+# table bench/guard_band.py writes: kept as they are.
 filtered=$(perl -0ne 'print $1 if /(<!-- filtered -->.*?<!-- \/filtered -->)/s' docs/quality.md)
 heldout=$(perl -0ne 'print $1 if /(<!-- heldout -->.*?<!-- \/heldout -->)/s' docs/quality.md)
 ranking=$(perl -0ne 'print $1 if /(<!-- ranking -->.*?<!-- \/ranking -->)/s' docs/quality.md)
+guard_band=$(perl -0ne 'print $1 if /(<!-- guard-band -->.*?<!-- \/guard-band -->)/s' docs/quality.md)
 compare() { # compare ARGS...: every view at every preset, at the tables' size and ray count
     cargo run --quiet --release -p aokit-cli -- compare \
         --view room --view stairs --view thin --view open \
@@ -121,6 +122,7 @@ RANKING
     # The report's own title goes; its sections move one level down under this page's.
     tail -n +2 "$out/metrics.md" | sed 's/^## /### /'
     echo
+    printf '%s\n\n' "$guard_band"
     echo "## Pictures (high preset)"
     echo
     echo "Error maps: blue = too dark (over-occludes), red = too bright, white = right, grey = no surface; saturated at +-0.25."
