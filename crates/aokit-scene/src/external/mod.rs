@@ -391,6 +391,16 @@ impl ExternalAo {
 }
 
 /// A run of [`ExternalAo::submit`] on the GPU, its outputs not yet read.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+/// #     -> Result<(), aokit_scene::RenderError> {
+/// use aokit_scene::external::SubmittedRun;
+/// let submitted: SubmittedRun = external.submit(gpu, 0, false)?;
+/// // ... upload and submit the next frame ...
+/// let (ao, _) = submitted.wait(gpu)?;
+/// # Ok(()) }
+/// ```
 pub struct SubmittedRun {
     ao: TextureReadback,
     bent_normals: Option<TextureReadback>,
