@@ -160,6 +160,10 @@ class Context:
         from frame to frame (its history starts over at the first); otherwise frame i's AO is
         what `ao(..., frame_index=first_frame + i)` gives for it.
 
+        The GPU is kept busy: each frame is converted and uploaded while the GPU runs the one
+        before it, and read back while it runs the one after (one upload and one read-back per
+        frame, the GIL released from the first conversion to the last read-back).
+
         Returns an N x H x W float32 array when all frames have one size, else a list of
         H x W arrays; with `bent_normals`, a pair `(ao, bent)`. Arguments and errors as `ao`.
         """

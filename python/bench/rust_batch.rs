@@ -1,6 +1,6 @@
 //! The Rust side of `overhead.py`: the frames `ao_batch` runs, run straight on
 //! `aokit_scene::external::ExternalAo` as `Context.ao_batch` runs them (one pipeline, the passes
-//! replaced each frame), timed per batch.
+//! replaced each frame, the next submitted before the last is read), timed per batch.
 //!
 //! `cargo run --example rust_batch -p aokit-python -- DIR FRAMES REPEATS` reads
 //! `DIR/depth_{i}.npy`, `DIR/normal_{i}.npy` and `DIR/camera.json`, runs the batch REPEATS
@@ -61,9 +61,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut run_batch = || -> Result<f32, Box<dyn std::error::Error>> {
         external.reset_history();
         let mut checksum = 0.0;
+        // Each frame uploaded while the GPU runs the one before, and read back while it runs
+        // the one after, as `ao_batch` does.
+        let mut submitted = None;
         for (index, frame) in inputs.iter().enumerate() {
             external.set_passes(&gpu, &passes(frame))?;
-            checksum += external.run(&gpu, index as u32)?[0];
+            let run = external.submit(&gpu, index as u32, false)?;
+            if let Some(previous) = submitted.replace(run) {
+                checksum += previous.wait(&gpu)?.0[0];
+            }
+        }
+        if let Some(last) = submitted {
+            checksum += last.wait(&gpu)?.0[0];
         }
         Ok(checksum)
     };

@@ -92,6 +92,7 @@ impl Camera {
             reverse_z,
             ndc_offset: [ndc_offset.0, ndc_offset.1],
             view_from_world: matrix_rows(view_from_world)?,
+            guard_band: 0,
         };
         Self::checked(file, "camera")
     }
@@ -122,6 +123,7 @@ impl Camera {
             reverse_z,
             ndc_offset: [ndc_offset.0, ndc_offset.1],
             view_from_world: matrix_rows(view_from_world)?,
+            guard_band: 0,
         };
         Self::checked(file, "camera")
     }

@@ -3,7 +3,9 @@
 use aokit::settings::SettingValue;
 use aokit::{AdapterKind, AoSettings, GpuContext, NormalSpace};
 use aokit_scene::RenderError;
-use aokit_scene::external::{DepthKind, ExternalAo, Passes, linear_depth, view_normals};
+use aokit_scene::external::{
+    DepthKind, ExternalAo, Passes, SubmittedRun, linear_depth, view_normals,
+};
 use glam::Vec3;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -22,12 +24,58 @@ pub struct Context {
     external: Option<ExternalAo>,
 }
 
-/// One frame's inputs on the CPU, converted and checked.
-struct Frame {
-    size: [u32; 2],
+/// One frame's inputs as the Python layer hands them in, read without the GIL: the float32
+/// bytes of its depth and normals (immutable `bytes`, kept alive by the caller), the camera,
+/// and the arguments' names for errors.
+struct Frame<'a> {
+    depth: &'a [u8],
+    normals: Option<&'a [u8]>,
     camera: Camera,
-    linear_depth: Vec<f32>,
-    normals: Option<Vec<Vec3>>,
+    names: &'a (String, String),
+}
+
+/// How a batch's frames are converted: the depth kind and the space of the normals.
+#[derive(Clone, Copy)]
+struct Conversion {
+    depth_kind: DepthKind,
+    normal_space: NormalSpace,
+}
+
+/// A frame's linear depth and view-space normals.
+type Converted = (Vec<f32>, Option<Vec<Vec3>>);
+
+impl Frame<'_> {
+    /// The frame's passes as the pipeline takes them, as `aokit ao` reads them.
+    fn convert(&self, conversion: Conversion) -> PyResult<Converted> {
+        let (depth_name, normals_name) = self.names;
+        let size = self.camera.size();
+        let pixels = size[0] as usize * size[1] as usize;
+        let depth = f32_values(self.depth, pixels, depth_name)?;
+        let linear = linear_depth(
+            depth,
+            conversion.depth_kind,
+            &self.camera.projection,
+            size[0],
+        )
+        .map_err(|e| PyValueError::new_err(format!("{depth_name}: {e}")))?;
+        let normals = self
+            .normals
+            .map(|bytes| -> PyResult<Vec<Vec3>> {
+                let values = f32_values(bytes, 3 * pixels, normals_name)?;
+                let normals = values
+                    .chunks_exact(3)
+                    .map(|n| Vec3::new(n[0], n[1], n[2]))
+                    .collect();
+                view_normals(
+                    normals,
+                    conversion.normal_space,
+                    self.camera.view_from_world,
+                )
+                .map_err(|e| PyValueError::new_err(format!("camera: {e}")))
+            })
+            .transpose()?;
+        Ok((linear, normals))
+    }
 }
 
 /// AO of one frame, and its bent normals when asked for.
@@ -56,22 +104,37 @@ fn render_error(error: RenderError) -> PyErr {
     }
 }
 
+/// [`render_error`] for a frame's passes, naming the frame's normals where they are refused
+/// (`normals[2]: ...` in a batch).
+fn passes_error(error: RenderError, frame: &Frame<'_>) -> PyErr {
+    match error {
+        RenderError::Normals(message) => {
+            PyValueError::new_err(format!("{}: {message}", frame.names.1))
+        }
+        other => render_error(other),
+    }
+}
+
 impl Context {
     /// Runs `frames` as one sequence numbered from `first_frame` (the temporal history starts
-    /// over at the first).
+    /// over at the first). Each frame is converted and uploaded while the GPU still runs the
+    /// frame before, and read back while it runs the frame after.
     fn run_frames(
         &mut self,
         settings: &AoSettings,
-        frames: &[Frame],
+        conversion: Conversion,
+        frames: &[Frame<'_>],
         first_frame: u32,
         bent_normals: bool,
-    ) -> Result<Vec<Output>, RenderError> {
+    ) -> PyResult<Vec<Output>> {
         let mut outputs = Vec::with_capacity(frames.len());
+        let mut submitted: Option<SubmittedRun> = None;
         for (index, frame) in frames.iter().enumerate() {
+            let (linear_depth, normals) = frame.convert(conversion)?;
             let passes = Passes {
-                size: frame.size,
-                linear_depth: &frame.linear_depth,
-                normals: frame.normals.as_deref(),
+                size: frame.camera.size(),
+                linear_depth: &linear_depth,
+                normals: normals.as_deref(),
                 back_depth: None,
                 projection: frame.camera.projection,
             };
@@ -79,25 +142,34 @@ impl Context {
                 Some(external) => {
                     if index == 0 {
                         if external.settings() != settings {
-                            external.set_settings(&self.gpu, settings)?;
+                            external
+                                .set_settings(&self.gpu, settings)
+                                .map_err(render_error)?;
                         }
                         external.reset_history();
                     }
-                    external.set_passes(&self.gpu, &passes)?;
+                    external
+                        .set_passes(&self.gpu, &passes)
+                        .map_err(|e| passes_error(e, frame))?;
                     external
                 }
-                None => self
-                    .external
-                    .insert(ExternalAo::new(&self.gpu, settings, &passes)?),
+                None => self.external.insert(
+                    ExternalAo::new(&self.gpu, settings, &passes)
+                        .map_err(|e| passes_error(e, frame))?,
+                ),
             };
             // Where the camera moved since the last frame: the temporal filter reprojects by it.
             external.set_view_from_world(frame.camera.view_from_world);
             let frame_index = first_frame.wrapping_add(index as u32);
-            outputs.push(if bent_normals {
-                external.run_with_bent_normals(&self.gpu, frame_index)?
-            } else {
-                (external.run(&self.gpu, frame_index)?, None)
-            });
+            let run = external
+                .submit(&self.gpu, frame_index, bent_normals)
+                .map_err(render_error)?;
+            if let Some(previous) = submitted.replace(run) {
+                outputs.push(previous.wait(&self.gpu).map_err(render_error)?);
+            }
+        }
+        if let Some(last) = submitted {
+            outputs.push(last.wait(&self.gpu).map_err(render_error)?);
         }
         Ok(outputs)
     }
@@ -177,35 +249,23 @@ impl Context {
         }
         // The normals are turned into view space as they are read, as `aokit ao` does.
         settings.normals.space = NormalSpace::View;
-        let mut prepared = Vec::with_capacity(frames.len());
-        for ((depth, normals, camera), (depth_name, normals_name)) in frames.iter().zip(&names) {
-            let size = camera.size();
-            let pixels = size[0] as usize * size[1] as usize;
-            let depth = f32_values(depth.as_bytes(), pixels, depth_name)?;
-            let linear = linear_depth(depth, depth_kind, &camera.projection, size[0])
-                .map_err(|e| PyValueError::new_err(format!("{depth_name}: {e}")))?;
-            let normals = normals
-                .as_ref()
-                .map(|bytes| -> PyResult<Vec<Vec3>> {
-                    let values = f32_values(bytes.as_bytes(), 3 * pixels, normals_name)?;
-                    let normals = values
-                        .chunks_exact(3)
-                        .map(|n| Vec3::new(n[0], n[1], n[2]))
-                        .collect();
-                    view_normals(normals, resolved.normal_space, camera.view_from_world)
-                        .map_err(|e| PyValueError::new_err(format!("camera: {e}")))
-                })
-                .transpose()?;
-            prepared.push(Frame {
-                size,
+        let conversion = Conversion {
+            depth_kind,
+            normal_space: resolved.normal_space,
+        };
+        let prepared: Vec<Frame<'_>> = frames
+            .iter()
+            .zip(&names)
+            .map(|((depth, normals, camera), names)| Frame {
+                depth: depth.as_bytes(),
+                normals: normals.as_ref().map(|bytes| bytes.as_bytes()),
                 camera: (**camera).clone(),
-                linear_depth: linear,
-                normals,
-            });
-        }
-        let outputs = py
-            .detach(|| self.run_frames(&settings, &prepared, first_frame, bent_normals))
-            .map_err(render_error)?;
+                names,
+            })
+            .collect();
+        let outputs = py.detach(|| {
+            self.run_frames(&settings, conversion, &prepared, first_frame, bent_normals)
+        })?;
         Ok(outputs
             .iter()
             .map(|(ao, bent)| {

@@ -114,6 +114,19 @@ def test_batch_arguments_are_checked(ctx):
         ctx.ao_batch([DEPTH, DEPTH[:4]], cameras=CAM)
 
 
+def test_a_bad_frame_late_in_a_batch_raises_and_the_context_runs_on(ctx):
+    # Frames are converted while the GPU runs the one before: the third frame's normals are
+    # refused after two frames were submitted, and the next call is not disturbed by them.
+    zero = np.zeros_like(NORMALS)
+    with pytest.raises(ValueError, match=r"normals\[2\]: 192 pixels showing a surface have a normal that is zero"):
+        ctx.ao_batch([DEPTH] * 4, [NORMALS, NORMALS, zero, NORMALS], cameras=CAM)
+    with pytest.raises(ValueError, match=r"depths\[2\]: 192 of 192 pixels hold depth outside"):
+        ctx.ao_batch([DEPTH * 0.1] * 2 + [DEPTH], cameras=CAM, depth_kind="ndc")
+    fine = ctx.ao_batch([DEPTH] * 3, [NORMALS] * 3, cameras=CAM)
+    for i in range(3):
+        np.testing.assert_array_equal(fine[i], ctx.ao(DEPTH, NORMALS, camera=CAM, frame_index=i))
+
+
 def test_no_adapter_raises_runtime_error(monkeypatch):
     monkeypatch.setenv("WGPU_ADAPTER_NAME", "no-such-adapter-anywhere")
     with pytest.raises(RuntimeError, match="no-such-adapter-anywhere"):

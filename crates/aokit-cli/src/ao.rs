@@ -55,6 +55,12 @@ pub struct AoArgs {
     /// given (default: view).
     #[arg(long, value_parser = parse_normal_space)]
     pub normal_space: Option<NormalSpace>,
+    /// Pixels of overscan on each side of the depth, normals and back-face depth (a guard
+    /// band): the images are this much larger each way than the camera's width and height, and
+    /// the AO is written for the inner frame alone (default: the `guard_band` camera.json
+    /// records, which `render --gbuffer --guard-band` writes, else 0).
+    #[arg(long, value_name = "PX")]
+    pub guard_band: Option<u32>,
     #[command(flatten)]
     pub settings: SettingsArgs,
     /// Output directory.
@@ -108,8 +114,14 @@ pub fn run(args: &AoArgs) -> Result<()> {
         );
     }
     let normal_space = settings.normals.space;
-    let load =
-        |files: &FrameFiles| passes::load(&files.pass_files(), args.depth_kind, normal_space);
+    let load = |files: &FrameFiles| {
+        passes::load(
+            &files.pass_files(),
+            args.depth_kind,
+            normal_space,
+            args.guard_band,
+        )
+    };
     let first = load(&frames[0])?;
     // The normals were turned into view space as they were read.
     settings.normals.space = NormalSpace::View;
@@ -136,36 +148,34 @@ pub fn run(args: &AoArgs) -> Result<()> {
             external.set_passes(&gpu, &loaded.passes())?;
         }
         external.set_view_from_world(loaded.view_from_world);
+        external.set_guard_band(loaded.guard_band);
         let ao = external.run(&gpu, index as u32)?;
+        let size = loaded.output_size();
         if args.sequence.is_some() {
             let dir = args.out.join("frames");
             create_dir(&dir)?;
             write_exr(
                 &dir.join(format!("ao-{index:03}.exr")),
-                loaded.size,
+                size,
                 &[("Y", ao.clone())],
             )?;
-            write_grey_png(&dir.join(format!("ao-{index:03}.png")), loaded.size, &ao)?;
+            write_grey_png(&dir.join(format!("ao-{index:03}.png")), size, &ao)?;
         }
         last = Some((loaded, ao));
     }
     let (loaded, ao) = last.expect("at least one frame");
-    write_exr(&args.out.join("ao.exr"), loaded.size, &[("Y", ao.clone())])?;
-    write_grey_png(&args.out.join("ao.png"), loaded.size, &ao)?;
+    let size = loaded.output_size();
+    write_exr(&args.out.join("ao.exr"), size, &[("Y", ao.clone())])?;
+    write_grey_png(&args.out.join("ao.png"), size, &ao)?;
     let what = match &args.sequence {
         Some(dir) => format!(
             "{} frames of {} ({}x{}",
             frames.len(),
             dir.display(),
-            loaded.size[0],
-            loaded.size[1]
+            size[0],
+            size[1]
         ),
-        None => format!(
-            "{} ({}x{}",
-            frames[0].depth.display(),
-            loaded.size[0],
-            loaded.size[1]
-        ),
+        None => format!("{} ({}x{}", frames[0].depth.display(), size[0], size[1]),
     };
     outln!(
         "AO of {what}, normals {}) with {} (radius {}{}): wrote {}ao.exr, ao.png to {}",
@@ -213,7 +223,7 @@ fn resolve_settings(args: &AoArgs, recorded: Option<&Recorded>) -> Result<AoSett
 /// [`ao_summary`] over the pixels the depth shows a surface at.
 fn summary(loaded: &LoadedPasses, ao: &[f32]) -> String {
     let depth: Vec<f32> = loaded
-        .linear_depth
+        .output_depth()
         .iter()
         .map(|&d| if d > 0.0 && d.is_finite() { d } else { 0.0 })
         .collect();

@@ -32,6 +32,11 @@ pub struct BenchArgs {
     pub size: [u32; 2],
     #[command(flatten)]
     pub settings: SettingsArgs,
+    /// Pixels of overscan on each side (a guard band): the G-buffer is drawn this much larger
+    /// and the AO computed for the inner --size, as `aokit render --guard-band`; with
+    /// --compare, for timing a band against none.
+    #[arg(long, value_name = "PX", default_value_t = 0)]
+    pub guard_band: u32,
     /// Run a peer instead of an aokit method, NAME=DIR: `xegtao=` a checkout of XeGTAO, or a
     /// folder `aokit peer compile` wrote (docs/peers.md). --preset picks its quality level,
     /// --set spatial.enabled=false turns its denoiser off.
@@ -314,7 +319,8 @@ impl Wanted {
 
 /// The G-buffer the configurations share (one per normal encoding they ask for).
 struct View {
-    gbuffers: HashMap<aokit::NormalEncoding, GBuffer>,
+    /// By normal encoding and guard band.
+    gbuffers: HashMap<(aokit::NormalEncoding, u32), GBuffer>,
     projection: Projection,
     view_from_world: Mat4,
 }
@@ -335,10 +341,17 @@ impl Run {
                 pipeline,
                 untimed,
             } => {
-                let gbuffer = &view.gbuffers[&settings.normals.encoding];
-                let mut measured = submit_frame(pipeline, gpu, view, gbuffer, frame_index)?;
+                let band = self.args.guard_band;
+                let gbuffer = &view.gbuffers[&(settings.normals.encoding, band)];
+                let frame = Frame {
+                    view,
+                    gbuffer,
+                    band,
+                    index: frame_index,
+                };
+                let mut measured = submit_frame(pipeline, gpu, &frame)?;
                 if let Some(untimed) = untimed {
-                    measured = submit_frame(untimed, gpu, view, gbuffer, frame_index)?;
+                    measured = submit_frame(untimed, gpu, &frame)?;
                 }
                 (measured, pipeline.last_pass_times(&gpu.device))
             }
@@ -346,7 +359,7 @@ impl Run {
                 passes, untimed, ..
             } => {
                 // XeGTAO reads aokit's default normals, oct32 (the wrapper decodes them).
-                let gbuffer = &view.gbuffers[&aokit::NormalEncoding::Oct32];
+                let gbuffer = &view.gbuffers[&(aokit::NormalEncoding::Oct32, 0)];
                 let mut measured = submit_peer_frame(passes, gpu, view, gbuffer)?;
                 if let Some(untimed) = untimed {
                     measured = submit_peer_frame(untimed, gpu, view, gbuffer)?;
@@ -527,13 +540,16 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     let mut renderer = Renderer::new(&gpu, &scene, &renderer_settings)?;
     let mut gbuffers = HashMap::new();
     let mut projection = None;
-    for wanted in &all_wanted {
+    for (wanted, (_, config)) in all_wanted.iter().zip(&configurations) {
+        let band = config.guard_band;
         let encoding = match wanted {
             Wanted::Aokit(settings) => settings.normals.encoding,
+            Wanted::Peer(..) if band > 0 => bail!("--guard-band is for aokit's methods, not peers"),
             Wanted::Peer(..) => aokit::NormalEncoding::Oct32,
         };
-        if let Entry::Vacant(slot) = gbuffers.entry(encoding) {
-            let (gbuffer, p) = renderer.render_gbuffer(&gpu, &camera, first.size, encoding)?;
+        if let Entry::Vacant(slot) = gbuffers.entry((encoding, band)) {
+            let (gbuffer, p) = renderer
+                .render_gbuffer_with_guard_band(&gpu, &camera, first.size, encoding, band)?;
             slot.insert(gbuffer);
             projection = Some(p);
         }
@@ -697,14 +713,21 @@ fn submit_peer_frame(
     })
 }
 
-/// Encodes, submits and waits for one frame of `pipeline` on `gbuffer`.
+/// One frame's inputs: the G-buffer of `band` pixels of overscan.
+struct Frame<'a> {
+    view: &'a View,
+    gbuffer: &'a GBuffer,
+    band: u32,
+    index: u32,
+}
+
+/// Encodes, submits and waits for one frame of `pipeline`.
 fn submit_frame(
     pipeline: &mut AoPipeline,
     gpu: &GpuContext,
-    view: &View,
-    gbuffer: &GBuffer,
-    frame_index: u32,
+    frame: &Frame<'_>,
 ) -> Result<(f64, f64)> {
+    let gbuffer = frame.gbuffer;
     timed_frame(gpu, |encoder| {
         pipeline.encode(
             &gpu.device,
@@ -712,11 +735,13 @@ fn submit_frame(
             encoder,
             &AoInputs {
                 normals: Some((&gbuffer.normals).into()),
-                view_from_world: view.view_from_world,
-                frame_index,
-                motion_vectors: Some((&gbuffer.motion).into()),
+                view_from_world: frame.view.view_from_world,
+                frame_index: frame.index,
+                // Refused with a band; only the temporal filter reads them.
+                motion_vectors: (frame.band == 0).then_some((&gbuffer.motion).into()),
                 back_depth: gbuffer.back_depth.as_ref().map(Into::into),
-                ..AoInputs::new(&gbuffer.depth, view.projection)
+                guard_band: frame.band,
+                ..AoInputs::new(&gbuffer.depth, frame.view.projection)
             },
         )?;
         Ok(())

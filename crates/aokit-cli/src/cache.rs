@@ -10,7 +10,7 @@ use aokit_eval::{
     FloatImage, read_depth, read_normals, read_scalar_exr, write_exr, write_grey_png,
 };
 use aokit_reference::{AoOptions, ReferenceImage};
-use aokit_scene::{Camera, Lens, Scene};
+use aokit_scene::{Camera, CameraFile, Lens, Scene};
 use glam::Vec3;
 
 use crate::export::{create_dir, write_gbuffer, write_json};
@@ -134,8 +134,7 @@ pub fn reference(
         size,
         &image.linear_depth,
         &image.normals,
-        &projection,
-        camera.view_from_world(),
+        &CameraFile::new(&projection, camera.view_from_world(), size),
     )?;
     // Written last: its presence marks a complete entry.
     write_json(

@@ -562,7 +562,16 @@ fn score_inputs(
         },
         DepthKind::Linear,
         NormalSpace::View,
+        None,
     )?;
+    if loaded.guard_band > 0 {
+        bail!(
+            "{}: passes with a guard band ({} px) are scored by `aokit ao` and the band-free \
+             reference, not --inputs",
+            dir.display(),
+            loaded.guard_band
+        );
+    }
     let reference_path = dir.join("reference.exr");
     let reference_ao = read_scalar_exr(&reference_path)?;
     // One NaN makes every metric NaN, which the report prints as "n/a": refuse it here.

@@ -5,21 +5,20 @@
 use std::path::Path;
 
 use anyhow::{Context, Result, bail};
-use aokit::Projection;
 use aokit_eval::write_exr;
 use aokit_scene::CameraFile;
-use glam::{Mat4, Vec3};
+use glam::Vec3;
 
 /// Writes the three files into `out` and returns their names: depth.exr, normal.exr and
 /// camera.json, each name with `suffix` before its extension (`-007` for a sequence's frame).
+/// The images are `size`: `camera`'s, or with its [`CameraFile::guard_band`] the overscan.
 pub fn write_gbuffer(
     out: &Path,
     suffix: &str,
     size: [u32; 2],
     linear_depth: &[f32],
     normals: &[Vec3],
-    projection: &Projection,
-    view_from_world: Mat4,
+    camera: &CameraFile,
 ) -> Result<[String; 3]> {
     let names = [
         format!("depth{suffix}.exr"),
@@ -33,10 +32,7 @@ pub fn write_gbuffer(
         size,
         &[("R", channel(0)), ("G", channel(1)), ("B", channel(2))],
     )?;
-    write_json(
-        &out.join(&names[2]),
-        &CameraFile::new(projection, view_from_world, size),
-    )?;
+    write_json(&out.join(&names[2]), camera)?;
     Ok(names)
 }
 

@@ -23,8 +23,12 @@ pub fn depth_kind_parser() -> impl clap::builder::TypedValueParser<Value = Depth
 /// Passes ready for the AO pipeline.
 #[derive(Clone)]
 pub struct LoadedPasses {
+    /// The images' size: the output's and the guard band on each side.
     pub size: [u32; 2],
+    /// The camera's projection, the inner frame's.
     pub projection: Projection,
+    /// Pixels of overscan on each side of the images.
+    pub guard_band: u32,
     /// The camera's world-to-view transform.
     pub view_from_world: Mat4,
     /// Linear view depth; non-positive or non-finite where there is no surface.
@@ -36,6 +40,26 @@ pub struct LoadedPasses {
 }
 
 impl LoadedPasses {
+    /// The AO's size: the images' less the guard band on each side.
+    pub fn output_size(&self) -> [u32; 2] {
+        self.size.map(|side| side - 2 * self.guard_band)
+    }
+
+    /// The linear depth of the output's pixels, the band cut off.
+    pub fn output_depth(&self) -> Vec<f32> {
+        let [width, _] = self.size;
+        let [inner_width, inner_height] = self.output_size();
+        let band = self.guard_band as usize;
+        (0..inner_height as usize)
+            .flat_map(|y| {
+                let row = (y + band) * width as usize + band;
+                self.linear_depth[row..row + inner_width as usize]
+                    .iter()
+                    .copied()
+            })
+            .collect()
+    }
+
     pub fn passes(&self) -> aokit_scene::external::Passes<'_> {
         aokit_scene::external::Passes {
             size: self.size,
@@ -68,10 +92,13 @@ fn warn(warning: Option<String>) {
     }
 }
 
+/// Reads the passes of `files`; `guard_band`, when given, overrides the band camera.json
+/// records (0 when it records none).
 pub fn load(
     files: &PassFiles<'_>,
     depth_kind: DepthKind,
     normal_space: NormalSpace,
+    guard_band: Option<u32>,
 ) -> Result<LoadedPasses> {
     let PassFiles {
         depth: depth_path,
@@ -89,12 +116,21 @@ pub fn load(
         view_normals(Vec::new(), normal_space, view_from_world)
             .map_err(|e| anyhow!("{}: {e} (--normal-space world)", camera_path.display()))?;
     }
-    let size = [camera.width, camera.height];
+    let band = guard_band.unwrap_or(camera.guard_band);
+    let size =
+        [camera.width, camera.height].map(|side| side.saturating_add(band.saturating_mul(2)));
+    // The images were drawn through the frustum widened by the band.
+    let camera_projection = projection;
+    let projection = projection.with_guard_band([camera.width, camera.height], band);
     let read_linear = |path: &Path| -> Result<Vec<f32>> {
         let depth = read_depth(path)?;
         if [depth.width, depth.height] != size {
+            let with_band = match band {
+                0 => String::new(),
+                _ => format!(" with a guard band of {band} px on each side"),
+            };
             bail!(
-                "{} is {}x{} but {} describes {}x{}",
+                "{} is {}x{} but {} describes {}x{}{with_band}",
                 path.display(),
                 depth.width,
                 depth.height,
@@ -147,7 +183,8 @@ pub fn load(
         .transpose()?;
     Ok(LoadedPasses {
         size,
-        projection,
+        projection: camera_projection,
+        guard_band: band,
         view_from_world,
         linear_depth,
         normals,

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, anyhow};
 use aokit_eval::{write_exr, write_grey_png};
 use aokit_reference::{AoOptions, Falloff, ReferenceImage, Tracer};
-use aokit_scene::{Camera, Scene};
+use aokit_scene::{Camera, CameraFile, Scene};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::{Deserialize, Serialize};
@@ -218,8 +218,7 @@ pub fn run(args: &ReferenceArgs) -> Result<()> {
         image.size,
         &image.linear_depth,
         &image.normals,
-        &projection,
-        camera.view_from_world(),
+        &CameraFile::new(&projection, camera.view_from_world(), image.size),
     )?;
     let back = write_back_depth(out, "", image.size, &back_depth)?;
     let info = ReferenceInfo::new(&scene, &camera, image.size, &options);

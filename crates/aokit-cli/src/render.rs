@@ -5,8 +5,9 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, bail};
 use aokit::debug::DebugView;
 use aokit::{AdapterKind, GpuContext};
-use aokit_scene::{CameraPath, Frame, Renderer, Scene};
+use aokit_scene::{Camera, CameraFile, CameraPath, Frame, Renderer, Scene};
 use clap::Args;
+use glam::Vec3;
 
 use aokit_eval::{grey_to_rgba, write_exr, write_gif, write_grey_png, write_rgba_png};
 
@@ -36,6 +37,14 @@ pub struct RenderArgs {
     /// frames/depth-NNN.exr and so on, for `aokit ao --sequence`.
     #[arg(long)]
     pub gbuffer: bool,
+    /// Pixels of overscan on each side that the AO reads (a guard band): the G-buffer for the
+    /// AO is drawn this much larger through a widened frustum, and the AO computed for the
+    /// image of --size alone, so that occluders just off screen count at its edges. A
+    /// multiple of the resolution's scale below full resolution. docs/integration.md gives
+    /// the size to choose. With --gbuffer the overscan G-buffer is written, its camera.json
+    /// recording the band, for `aokit ao`.
+    #[arg(long, value_name = "PX", default_value_t = 0)]
+    pub guard_band: u32,
     #[command(flatten)]
     pub lighting: LightingArgs,
     /// Render a sequence of this many frames along --path, each reprojecting the last (the
@@ -117,6 +126,12 @@ pub fn open_gpu_with(features: wgpu::Features) -> Result<GpuContext> {
 
 pub fn run(args: &RenderArgs) -> Result<()> {
     check_out_dir(&args.out)?;
+    if args.guard_band > 0 && args.gbuffer && args.frames > 1 {
+        bail!(
+            "--guard-band with --gbuffer writes the overscan G-buffer of a single frame; drop \
+             --frames, or --gbuffer"
+        );
+    }
     let scene = Scene::open(&args.scene)?;
     for note in &scene.notes {
         eprintln!("note: {}: {note}", scene.name);
@@ -131,6 +146,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     };
     let gpu = open_gpu()?;
     let mut renderer = Renderer::new(&gpu, &scene, &settings)?;
+    renderer.guard_band = args.guard_band;
     args.lighting
         .apply(&mut renderer.lighting, settings.method)?;
     for note in
@@ -212,8 +228,19 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         write_gif(&out.join("lit.gif"), frame.size, &previews.1, 33)?;
         written.extend(["frames/", "ao.gif", "lit.gif"].map(String::from));
     }
-    if args.gbuffer {
+    if args.gbuffer && args.guard_band > 0 {
+        let camera = args.path.at(&camera, 0.0);
+        let overscan = Overscan {
+            renderer: &mut renderer,
+            gpu: &gpu,
+            camera: &camera,
+            band: args.guard_band,
+        };
+        written.extend(overscan.write(out, &frame)?);
+    } else if args.gbuffer {
         written.extend(write_frame_gbuffer(out, "", &frame)?);
+    }
+    if args.gbuffer {
         let preset = args.settings.preset()?;
         written.push(crate::recorded::write(out, preset, &settings)?.into());
         if args.frames > 1 {
@@ -244,14 +271,73 @@ fn write_frame_gbuffer(dir: &Path, suffix: &str, frame: &Frame) -> Result<Vec<St
         frame.size,
         &frame.linear_depth,
         &frame.normals,
-        &frame.projection,
-        frame.view_from_world,
+        &CameraFile::new(&frame.projection, frame.view_from_world, frame.size),
     )?
     .into();
     if let Some(back_depth) = &frame.back_depth {
         written.push(write_back_depth(dir, suffix, frame.size, back_depth)?);
     }
     Ok(written)
+}
+
+/// The overscan G-buffer of a frame rendered with a guard band.
+struct Overscan<'a> {
+    renderer: &'a mut Renderer,
+    gpu: &'a GpuContext,
+    camera: &'a Camera,
+    band: u32,
+}
+
+impl Overscan<'_> {
+    /// Draws the G-buffer the AO of `frame` read (the scene at rest) and writes it into `dir`
+    /// with the camera's inner frame and the band in camera.json, as `aokit ao` reads it back;
+    /// returns the files' names.
+    fn write(self, dir: &Path, frame: &Frame) -> Result<Vec<String>> {
+        let (gbuffer, projection) = self.renderer.render_gbuffer_with_guard_band(
+            self.gpu,
+            self.camera,
+            frame.size,
+            aokit::NormalEncoding::Oct32,
+            self.band,
+        )?;
+        let widened = projection.with_guard_band(frame.size, self.band);
+        let (device, queue) = (&self.gpu.device, &self.gpu.queue);
+        let linear = |texture| -> Result<Vec<f32>> {
+            let ndc = aokit::gpu::read_texture_f32(device, queue, texture)?;
+            Ok(ndc.iter().map(|&d| widened.surface_depth(d)).collect())
+        };
+        let depth = linear(&gbuffer.depth)?;
+        let packed: Vec<u32> = bytemuck::pod_collect_to_vec(&aokit::gpu::read_texture(
+            device,
+            queue,
+            &gbuffer.normals,
+        )?);
+        let normals: Vec<Vec3> = packed
+            .iter()
+            .zip(&depth)
+            .map(|(&bits, &d)| match d > 0.0 {
+                true => aokit::normals::unpack_oct32(bits),
+                false => Vec3::ZERO,
+            })
+            .collect();
+        let mut written: Vec<String> = write_gbuffer(
+            dir,
+            "",
+            gbuffer.size,
+            &depth,
+            &normals,
+            // The camera's inner frame, and the band the images add to it.
+            &CameraFile {
+                guard_band: self.band,
+                ..CameraFile::new(&projection, frame.view_from_world, frame.size)
+            },
+        )?
+        .into();
+        if let (Some(_), Some(back)) = (&frame.back_depth, &gbuffer.back_depth) {
+            written.push(write_back_depth(dir, "", gbuffer.size, &linear(back)?)?);
+        }
+        Ok(written)
+    }
 }
 
 /// Mean and minimum AO over the pixels that show a surface.

@@ -312,6 +312,18 @@ pub struct CameraFile {
     /// World-to-view matrix, row-major (`view_from_world[row][column]`).
     #[serde(deserialize_with = "matrix_entries")]
     pub view_from_world: [[f32; 4]; 4],
+    /// Pixels of overscan on each side of the images beside it (`aokit render --gbuffer
+    /// --guard-band`): the depth and normals are `width + 2 * guard_band` by `height + 2 *
+    /// guard_band`, drawn through the widened frustum
+    /// ([`Projection::with_guard_band`](aokit::Projection::with_guard_band)), while `width`,
+    /// `height` and the projection stay the camera's, the inner frame's. Written only when not
+    /// zero; absent reads as zero.
+    #[serde(default, skip_serializing_if = "is_zero_band")]
+    pub guard_band: u32,
+}
+
+fn is_zero_band(band: &u32) -> bool {
+    *band == 0
 }
 
 /// `ndc_offset` as a list checked for length: serde_json reports a fixed-size array with an
@@ -380,6 +392,7 @@ impl CameraFile {
             reverse_z: projection.reverse_z,
             ndc_offset: projection.ndc_offset.to_array(),
             view_from_world: view_from_world.transpose().to_cols_array_2d(),
+            guard_band: 0,
         }
     }
 

@@ -147,6 +147,12 @@ pub struct Renderer {
     pub use_motion_vectors: bool,
     /// Debug views to draw with every frame into [`Frame::debug`].
     pub debug_views: Vec<DebugView>,
+    /// Pixels of overscan the AO reads on each side ([`AoInputs::guard_band`]): with more
+    /// than 0 each frame also draws a G-buffer that much larger, through the widened frustum
+    /// ([`Projection::with_guard_band`](aokit::Projection::with_guard_band)), for the AO
+    /// pipeline; the frame's images and the lit composite stay the camera's own. The temporal
+    /// filter then reprojects by depth and the camera alone (no motion vectors with a band).
+    pub guard_band: u32,
     /// Compiled the first time a debug view is asked for.
     debug: Option<AoDebug>,
     /// Start the temporal history over at the next frame.
@@ -191,6 +197,7 @@ impl Renderer {
             lighting,
             use_motion_vectors: true,
             debug_views: Vec::new(),
+            guard_band: 0,
             debug: None,
             reset_history: false,
             previous: None,
@@ -340,6 +347,17 @@ impl Renderer {
         camera: &Camera,
         size: [u32; 2],
     ) -> Result<Projection, RenderError> {
+        self.checked_size(gpu, size)?;
+        camera.validate().map_err(RenderError::Camera)?;
+        let projection = self.projection(camera, size);
+        projection
+            .validate()
+            .map_err(|e| RenderError::Camera(format!("camera `{}`: {e}", camera.name)))?;
+        Ok(projection)
+    }
+
+    /// Checks that an image of `size` fits the device and the pixel budget.
+    fn checked_size(&self, gpu: &GpuContext, size: [u32; 2]) -> Result<(), RenderError> {
         let max = gpu.device.limits().max_texture_dimension_2d;
         let [width, height] = size;
         if width == 0 || height == 0 || width > max || height > max {
@@ -355,13 +373,7 @@ impl Renderer {
             width,
             height,
             reason: e.to_string(),
-        })?;
-        camera.validate().map_err(RenderError::Camera)?;
-        let projection = self.projection(camera, size);
-        projection
-            .validate()
-            .map_err(|e| RenderError::Camera(format!("camera `{}`: {e}", camera.name)))?;
-        Ok(projection)
+        })
     }
 
     /// Records the G-buffer of the mesh as placed, seen by `camera`, into a new [`GBuffer`].
@@ -417,21 +429,57 @@ impl Renderer {
         size: [u32; 2],
         encoding: aokit::NormalEncoding,
     ) -> Result<(GBuffer, Projection), RenderError> {
+        self.render_gbuffer_with_guard_band(gpu, camera, size, encoding, 0)
+    }
+
+    /// [`Renderer::render_gbuffer`] with `band` pixels of overscan on each side: the G-buffer
+    /// is `size` plus twice `band` each way, drawn through the frustum widened so that its
+    /// inner `size` pixels are the camera's image, as [`AoInputs::guard_band`] reads it. The
+    /// projection returned is the camera's, for [`AoInputs::projection`].
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, renderer: &mut aokit_scene::Renderer,
+    /// #      camera: &aokit_scene::Camera) -> Result<(), Box<dyn std::error::Error>> {
+    /// use aokit::{AoInputs, AoPipeline, AoSettings, NormalEncoding};
+    /// let (gbuffer, projection) = renderer.render_gbuffer_with_guard_band(
+    ///     gpu, camera, [1280, 720], NormalEncoding::Oct32, 32)?;
+    /// assert_eq!(gbuffer.size, [1344, 784]);
+    /// let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?;
+    /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    /// let outputs = pipeline.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
+    ///     normals: Some(&gbuffer.normals),
+    ///     guard_band: 32,
+    ///     ..AoInputs::new(&gbuffer.depth, projection)
+    /// })?;
+    /// assert_eq!(outputs.ao.width(), 1280);
+    /// # Ok(()) }
+    /// ```
+    pub fn render_gbuffer_with_guard_band(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        size: [u32; 2],
+        encoding: aokit::NormalEncoding,
+        band: u32,
+    ) -> Result<(GBuffer, Projection), RenderError> {
         let projection = self.checked_projection(gpu, camera, size)?;
+        let full = overscan_size(size, band);
+        self.checked_size(gpu, full)?;
+        let widened = projection.with_guard_band(size, band);
         let view_from_world = camera.view_from_world();
         // Standing still: the previous frame is this one.
-        let previous_clip_from_world = projection.clip_from_view() * view_from_world;
+        let previous_clip_from_world = widened.clip_from_view() * view_from_world;
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         self.mesh.place(&gpu.queue, 0.0, 0.0);
         let gbuffer = self.draw_gbuffer(
             gpu,
             &mut encoder,
-            size,
+            full,
             encoding,
             true,
             &GBufferCamera {
                 view_from_world,
-                projection: &projection,
+                projection: &widened,
                 previous_clip_from_world,
             },
         );
@@ -569,17 +617,42 @@ impl Renderer {
                 previous_clip_from_world,
             },
         );
+        // With a guard band the AO reads a G-buffer of its own, drawn larger through the
+        // widened frustum; the composite and the frame's images keep the camera's.
+        let band = self.guard_band;
+        let overscan = if band > 0 {
+            let full = overscan_size(size, band);
+            self.checked_size(gpu, full)?;
+            let widened = projection.with_guard_band(size, band);
+            Some(self.draw_gbuffer(
+                gpu,
+                &mut encoder,
+                full,
+                self.settings.normals.encoding,
+                back_faces(&wanted) || second.as_ref().is_some_and(|p| back_faces(p.settings())),
+                &GBufferCamera {
+                    view_from_world,
+                    projection: &widened,
+                    previous_clip_from_world: widened.clip_from_view() * view_from_world,
+                },
+            ))
+        } else {
+            None
+        };
         let sun = SunView::new(self.lighting.sun_direction, &self.bounds);
         self.shadow_pass
             .encode(queue, &mut encoder, &self.mesh, &sun);
+        let ao_gbuffer = overscan.as_ref().unwrap_or(&gbuffer);
         let inputs = AoInputs {
-            normals: Some((&gbuffer.normals).into()),
+            normals: Some((&ao_gbuffer.normals).into()),
             view_from_world,
             frame_index,
-            motion_vectors: self.use_motion_vectors.then_some((&gbuffer.motion).into()),
+            motion_vectors: (self.use_motion_vectors && band == 0)
+                .then_some((&gbuffer.motion).into()),
             reset_history,
-            back_depth: gbuffer.back_depth.as_ref().map(Into::into),
-            ..AoInputs::new(&gbuffer.depth, projection)
+            back_depth: ao_gbuffer.back_depth.as_ref().map(Into::into),
+            guard_band: band,
+            ..AoInputs::new(&ao_gbuffer.depth, projection)
         };
         let shading = Shading {
             gpu,
@@ -663,6 +736,11 @@ impl Renderer {
         let second_frame = side.into_frame(frame.clone());
         Ok((frame, Some(second_frame)))
     }
+}
+
+/// `size` with `band` pixels more on each side, saturating (the size check then refuses it).
+fn overscan_size(size: [u32; 2], band: u32) -> [u32; 2] {
+    size.map(|side| side.saturating_add(band.saturating_mul(2)))
 }
 
 /// What differs between two AO pipelines' frames of the same G-buffer.

@@ -686,22 +686,185 @@ fn depth_to_float(
     copy
 }
 
-/// Maps `slice` of a `MAP_READ` buffer, blocking until the GPU has finished with it.
+/// Maps `slice` of a `MAP_READ` buffer, blocking until the GPU has finished with it: with
+/// all submitted work (`submission` `None`), or with that submission and those before it, so
+/// that later submissions keep running meanwhile.
 pub(crate) fn map_for_reading(
     device: &wgpu::Device,
     slice: &wgpu::BufferSlice<'_>,
+    submission: Option<wgpu::SubmissionIndex>,
 ) -> Result<(), GpuError> {
     let (sender, receiver) = std::sync::mpsc::channel();
     slice.map_async(wgpu::MapMode::Read, move |result| {
         let _ = sender.send(result);
     });
     device
-        .poll(wgpu::PollType::wait_indefinitely())
+        .poll(wgpu::PollType::Wait {
+            submission_index: submission,
+            timeout: None,
+        })
         .map_err(|e| GpuError::Readback(e.to_string()))?;
     receiver
         .recv()
         .map_err(|e| GpuError::Readback(e.to_string()))?
         .map_err(|e| GpuError::Readback(e.to_string()))
+}
+
+/// A texture's copy on its way to the CPU: recorded into the commands that write the texture,
+/// read once they have run. Recording it with a frame's work and reading it after the next
+/// frame is submitted keeps the GPU busy while the CPU waits; [`read_texture`] does both at
+/// once.
+///
+/// ```no_run
+/// # fn f(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture)
+/// #     -> Result<(), aokit::GpuError> {
+/// use aokit::gpu::TextureReadback;
+/// let mut encoder = device.create_command_encoder(&Default::default());
+/// // ... the passes that write `texture` ...
+/// let readback = TextureReadback::encode(device, &mut encoder, texture)?;
+/// let submission = queue.submit([encoder.finish()]);
+/// // ... submit the next frame here: the GPU runs it while this one is read ...
+/// let texels: Vec<f32> = readback.f32_texels(device, Some(submission))?;
+/// # Ok(()) }
+/// ```
+pub struct TextureReadback {
+    buffer: wgpu::Buffer,
+    format: wgpu::TextureFormat,
+    /// Bytes of one row of texels, and of one row in the buffer (padded for the copy).
+    row: u32,
+    padded_row: u32,
+}
+
+impl TextureReadback {
+    /// Records a copy of mip level 0 of the 2D `texture` (its depth aspect for a depth
+    /// texture) into a new buffer; `texture` needs `COPY_SRC` usage.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder,
+    /// #      ao: &wgpu::Texture) -> Result<(), aokit::GpuError> {
+    /// let readback = aokit::gpu::TextureReadback::encode(device, encoder, ao)?;
+    /// # Ok(()) }
+    /// ```
+    pub fn encode(
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        texture: &wgpu::Texture,
+    ) -> Result<Self, GpuError> {
+        let texel = texel_size(texture.format())?;
+        let (width, height) = (texture.width(), texture.height());
+        let row = width * texel;
+        let padded_row =
+            row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("aokit readback"),
+            size: u64::from(padded_row) * u64::from(height),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let aspect = if texture.format().is_depth_stencil_format() {
+            wgpu::TextureAspect::DepthOnly
+        } else {
+            wgpu::TextureAspect::All
+        };
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(padded_row),
+                    rows_per_image: Some(height),
+                },
+            },
+            wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
+        );
+        Ok(Self {
+            buffer,
+            format: texture.format(),
+            row,
+            padded_row,
+        })
+    }
+
+    /// The texels' bytes, tightly packed row by row, once `submission` (the one holding the
+    /// copy; `None`: all work submitted so far) has run. Blocks until then.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, readback: aokit::gpu::TextureReadback)
+    /// #     -> Result<(), aokit::GpuError> {
+    /// let bytes = readback.bytes(device, None)?;
+    /// # Ok(()) }
+    /// ```
+    pub fn bytes(
+        self,
+        device: &wgpu::Device,
+        submission: Option<wgpu::SubmissionIndex>,
+    ) -> Result<Vec<u8>, GpuError> {
+        let slice = self.buffer.slice(..);
+        map_for_reading(device, &slice, submission)?;
+        let mapped = slice
+            .get_mapped_range()
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        let mut out =
+            Vec::with_capacity(mapped.len() / self.padded_row as usize * self.row as usize);
+        for chunk in mapped.chunks(self.padded_row as usize) {
+            out.extend_from_slice(&chunk[..self.row as usize]);
+        }
+        drop(mapped);
+        self.buffer.unmap();
+        Ok(out)
+    }
+
+    /// [`TextureReadback::bytes`] of a single-channel float texture (`R32Float`, `R16Float`
+    /// or `Depth32Float`) as `f32` texels, as [`read_texture_f32`] reads them.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, readback: aokit::gpu::TextureReadback,
+    /// #      submission: wgpu::SubmissionIndex) -> Result<(), aokit::GpuError> {
+    /// let ao: Vec<f32> = readback.f32_texels(device, Some(submission))?;
+    /// # Ok(()) }
+    /// ```
+    pub fn f32_texels(
+        self,
+        device: &wgpu::Device,
+        submission: Option<wgpu::SubmissionIndex>,
+    ) -> Result<Vec<f32>, GpuError> {
+        let format = self.format;
+        f32_texels(format, &self.bytes(device, submission)?)
+    }
+
+    /// [`TextureReadback::bytes`] of an `Rgba16Float` texture (the bent normals) as `f32`
+    /// texels, as [`read_texture_rgba16f`] reads them.
+    ///
+    /// ```no_run
+    /// # fn f(device: &wgpu::Device, readback: aokit::gpu::TextureReadback)
+    /// #     -> Result<(), aokit::GpuError> {
+    /// for [x, y, z, ao] in readback.rgba16f_texels(device, None)? {
+    ///     // The mean unoccluded direction, and the kernel's AO alongside.
+    /// }
+    /// # Ok(()) }
+    /// ```
+    pub fn rgba16f_texels(
+        self,
+        device: &wgpu::Device,
+        submission: Option<wgpu::SubmissionIndex>,
+    ) -> Result<Vec<[f32; 4]>, GpuError> {
+        let format = self.format;
+        half_texels(
+            format,
+            wgpu::TextureFormat::Rgba16Float,
+            &self.bytes(device, submission)?,
+        )
+    }
 }
 
 /// Copies mip level 0 of a 2D texture to the CPU, tightly packed, row by row.
@@ -723,22 +886,6 @@ pub fn read_texture(
     queue: &wgpu::Queue,
     texture: &wgpu::Texture,
 ) -> Result<Vec<u8>, GpuError> {
-    let texel = texel_size(texture.format())?;
-    let (width, height) = (texture.width(), texture.height());
-    let row = width * texel;
-    let padded_row =
-        row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("aokit readback"),
-        size: u64::from(padded_row) * u64::from(height),
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
-    let aspect = if texture.format().is_depth_stencil_format() {
-        wgpu::TextureAspect::DepthOnly
-    } else {
-        wgpu::TextureAspect::All
-    };
     // A copy the device refuses is an error of this call, not a panic in wgpu's default
     // handler; wgpu's GL backend refuses depth textures, whose f32 depth a compute pass then
     // copies into an R32Float texture first.
@@ -746,27 +893,7 @@ pub fn read_texture(
     let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
         label: Some("aokit readback"),
     });
-    encoder.copy_texture_to_buffer(
-        wgpu::TexelCopyTextureInfo {
-            texture,
-            mip_level: 0,
-            origin: wgpu::Origin3d::ZERO,
-            aspect,
-        },
-        wgpu::TexelCopyBufferInfo {
-            buffer: &buffer,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(padded_row),
-                rows_per_image: Some(height),
-            },
-        },
-        wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        },
-    );
+    let readback = TextureReadback::encode(device, &mut encoder, texture);
     let commands = encoder.finish();
     if let Some(error) = pollster::block_on(scope.pop()) {
         let float_depth = matches!(
@@ -785,19 +912,9 @@ pub fn read_texture(
             texture.format()
         )));
     }
-    queue.submit([commands]);
-    let slice = buffer.slice(..);
-    map_for_reading(device, &slice)?;
-    let mapped = slice
-        .get_mapped_range()
-        .map_err(|e| GpuError::Readback(e.to_string()))?;
-    let mut out = Vec::with_capacity((row * height) as usize);
-    for chunk in mapped.chunks(padded_row as usize) {
-        out.extend_from_slice(&chunk[..row as usize]);
-    }
-    drop(mapped);
-    buffer.unmap();
-    Ok(out)
+    let readback = readback?;
+    let submission = queue.submit([commands]);
+    readback.bytes(device, Some(submission))
 }
 
 /// Reads back a single-channel float texture (`R32Float`, `R16Float` or `Depth32Float`) as
@@ -816,21 +933,24 @@ pub fn read_texture_f32(
     queue: &wgpu::Queue,
     texture: &wgpu::Texture,
 ) -> Result<Vec<f32>, GpuError> {
-    match texture.format() {
-        wgpu::TextureFormat::R32Float | wgpu::TextureFormat::Depth32Float => {}
+    f32_texels(texture.format(), &read_texture(device, queue, texture)?)
+}
+
+/// Single-channel float texels of `format` (`R32Float`, `R16Float` or `Depth32Float`) from
+/// their bytes.
+fn f32_texels(format: wgpu::TextureFormat, bytes: &[u8]) -> Result<Vec<f32>, GpuError> {
+    match format {
+        wgpu::TextureFormat::R32Float | wgpu::TextureFormat::Depth32Float => {
+            Ok(bytemuck::pod_collect_to_vec(bytes))
+        }
         wgpu::TextureFormat::R16Float => {
-            let texels: Vec<[f32; 1]> =
-                read_half_texels(device, queue, texture, wgpu::TextureFormat::R16Float)?;
-            return Ok(texels.into_iter().map(|[x]| x).collect());
+            let texels: Vec<[f32; 1]> = half_texels(format, format, bytes)?;
+            Ok(texels.into_iter().map(|[x]| x).collect())
         }
-        other => {
-            return Err(GpuError::Readback(format!(
-                "expected an R32Float, R16Float or Depth32Float texture, got {other:?}"
-            )));
-        }
+        other => Err(GpuError::Readback(format!(
+            "expected an R32Float, R16Float or Depth32Float texture, got {other:?}"
+        ))),
     }
-    let bytes = read_texture(device, queue, texture)?;
-    Ok(bytemuck::pod_collect_to_vec(&bytes))
 }
 
 /// Reads back an `Rgba16Float` texture (the bent normals) as `f32` texels.
@@ -879,14 +999,25 @@ fn read_half_texels<const N: usize>(
     texture: &wgpu::Texture,
     format: wgpu::TextureFormat,
 ) -> Result<Vec<[f32; N]>, GpuError> {
-    if texture.format() != format {
+    half_texels(
+        texture.format(),
+        format,
+        &read_texture(device, queue, texture)?,
+    )
+}
+
+/// Texels of `N` half floats from the bytes of a texture in `actual`, which must be `format`.
+fn half_texels<const N: usize>(
+    actual: wgpu::TextureFormat,
+    format: wgpu::TextureFormat,
+    bytes: &[u8],
+) -> Result<Vec<[f32; N]>, GpuError> {
+    if actual != format {
         return Err(GpuError::Readback(format!(
-            "expected an {format:?} texture, got {:?}",
-            texture.format()
+            "expected an {format:?} texture, got {actual:?}"
         )));
     }
-    let bytes = read_texture(device, queue, texture)?;
-    let halves: Vec<u16> = bytemuck::pod_collect_to_vec(&bytes);
+    let halves: Vec<u16> = bytemuck::pod_collect_to_vec(bytes);
     Ok(halves
         .chunks_exact(N)
         .map(|t| std::array::from_fn(|i| f16_to_f32(t[i])))

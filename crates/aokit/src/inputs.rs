@@ -27,6 +27,7 @@ use crate::settings::NormalEncoding;
 ///     reset_history: camera_cut,
 ///     mask: None,
 ///     back_depth: None,
+///     guard_band: 0,
 /// };
 /// let outputs = pipeline.encode(device, queue, encoder, &inputs)?;
 /// // ... the second player's lighting pass binds `outputs.ao_view` ...
@@ -97,6 +98,30 @@ pub struct AoInputs<'a> {
     /// # }
     /// ```
     pub back_depth: Option<AoTexture<'a>>,
+    /// Pixels of overscan on each side of the depth, normals and back-face depth: the
+    /// renderer drew them `2 * guard_band` pixels wider and taller than the output, with
+    /// [`Projection::with_guard_band`], so that samples near the output's edges find the
+    /// geometry just off screen. [`AoInputs::projection`] is the output's (the camera's) and
+    /// the outputs cover only the inner frame; the kernel reads the band but computes AO for
+    /// the inner frame alone (docs/integration.md measures what a band buys). The mask is of
+    /// the output's size; motion vectors are refused with a band. Below full resolution the
+    /// band must be a multiple of the resolution's scale, so that the working grids of the
+    /// input and of the inner frame line up. 0 is no band.
+    ///
+    /// ```no_run
+    /// # fn f(depth: &wgpu::Texture, normals: &wgpu::Texture, camera: aokit::Projection) {
+    /// // The G-buffer was drawn 32 px larger on each side, with the widened frustum.
+    /// let band = 32;
+    /// let _overscan = camera.with_guard_band([1920, 1080], band);
+    /// let inputs = aokit::AoInputs {
+    ///     normals: Some(normals.into()),
+    ///     guard_band: band,
+    ///     ..aokit::AoInputs::new(depth, camera)
+    /// };
+    /// // AO comes back 1920x1080.
+    /// # }
+    /// ```
+    pub guard_band: u32,
 }
 
 /// Where [`AoInputs::mask`] takes the pixels that receive no AO from. Multisampled masks are
@@ -193,6 +218,7 @@ impl<'a> AoInputs<'a> {
             reset_history: false,
             mask: None,
             back_depth: None,
+            guard_band: 0,
         }
     }
 }
@@ -279,6 +305,39 @@ pub enum InputError {
     /// An [`AoMask::Texture`] is not single-channel `R8Unorm`, `R16Float` or `R32Float`.
     #[error("mask texture format {0:?} is none of R8Unorm, R16Float and R32Float")]
     MaskFormat(wgpu::TextureFormat),
+    /// [`AoInputs::guard_band`] leaves no inner frame: the band on both sides covers the depth.
+    #[error(
+        "a guard band of {band} px on each side leaves nothing of the {}x{} depth; the depth \
+         must be larger than the output by twice the band",
+        depth[0],
+        depth[1]
+    )]
+    GuardBandTooWide {
+        /// The band, in pixels on each side.
+        band: u32,
+        /// The depth's size.
+        depth: [u32; 2],
+    },
+    /// A [`AoInputs::guard_band`] below full resolution that is not a multiple of the
+    /// resolution's scale (or leaves an inner frame of one texel): the working grids of the
+    /// input and of the inner frame would not line up.
+    #[error(
+        "a guard band of {band} px does not fit the working resolution: below full resolution \
+         it must be a multiple of the scale ({scale}) and leave more than one pixel each way"
+    )]
+    GuardBandResolution {
+        /// The band, in pixels on each side.
+        band: u32,
+        /// The resolution's scale.
+        scale: u32,
+    },
+    /// Motion vectors with a [`AoInputs::guard_band`], which the temporal filter cannot yet
+    /// read at the band's offset.
+    #[error(
+        "motion vectors with a guard band are not supported; pass them without a band (the \
+         temporal filter reprojects by depth and the camera alone when they are absent)"
+    )]
+    GuardBandMotionVectors,
     /// An [`AoMask::Stencil`] texture has no stencil aspect.
     #[error("mask texture format {0:?} has no stencil aspect to compare with the reference")]
     MaskNoStencil(wgpu::TextureFormat),
@@ -310,8 +369,8 @@ pub enum InputError {
 }
 
 impl AoInputs<'_> {
-    /// The resolution the inputs describe, after checking formats (the normals' against
-    /// `encoding`), usages and sizes.
+    /// The output's resolution (the depth's, less [`AoInputs::guard_band`] on each side),
+    /// after checking formats (the normals' against `encoding`), usages and sizes.
     ///
     /// ```no_run
     /// # fn f(inputs: &aokit::AoInputs<'_>, settings: &aokit::AoSettings) {
@@ -333,6 +392,7 @@ impl AoInputs<'_> {
         check_depth("depth", depth)?;
         let size = depth.size();
         check_size(size)?;
+        let output = self.output_size()?;
         if let Some(back) = self.back_depth {
             check_depth("back-face depth", back)?;
             same_size("back-face depth", size, back)?;
@@ -348,6 +408,9 @@ impl AoInputs<'_> {
             same_size("normals", size, normals)?;
         }
         if let Some(motion) = self.motion_vectors {
+            if self.guard_band > 0 {
+                return Err(InputError::GuardBandMotionVectors);
+            }
             if !MOTION_VECTOR_FORMATS.contains(&motion.format()) {
                 return Err(InputError::MotionVectorFormat(motion.format()));
             }
@@ -366,9 +429,29 @@ impl AoInputs<'_> {
                 _ => {}
             }
             mask.texture().check("mask")?;
-            same_size("mask", size, mask.texture())?;
+            same_size("mask", output, mask.texture())?;
         }
-        Ok(size)
+        Ok(output)
+    }
+
+    /// The output's size: the depth's less [`AoInputs::guard_band`] on each side, or
+    /// [`InputError::GuardBandTooWide`] when nothing is left.
+    ///
+    /// ```no_run
+    /// # fn f(depth: &wgpu::Texture, camera: aokit::Projection) -> Result<(), aokit::InputError> {
+    /// // A 1984x1144 overscan depth with a 32 px band holds a 1920x1080 frame.
+    /// let inputs = aokit::AoInputs { guard_band: 32, ..aokit::AoInputs::new(depth, camera) };
+    /// assert_eq!(inputs.output_size()?, [depth.width() - 64, depth.height() - 64]);
+    /// # Ok(()) }
+    /// ```
+    pub fn output_size(&self) -> Result<[u32; 2], InputError> {
+        let depth = self.depth.size();
+        let band = self.guard_band;
+        let inner = depth.map(|side| side.saturating_sub(band.saturating_mul(2)));
+        if inner.contains(&0) {
+            return Err(InputError::GuardBandTooWide { band, depth });
+        }
+        Ok(inner)
     }
 }
 

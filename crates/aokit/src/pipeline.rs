@@ -7,7 +7,7 @@ use crate::inputs::{AoInputs, InputError};
 use crate::passes::PassContext;
 use crate::passes::input::linear_depth::DepthInput;
 use crate::passes::kernel::depth_mips::atlas_format;
-use crate::plan::{At, FrameInputs, FramePlan, Pass, Target};
+use crate::plan::{At, FrameInputs, FramePlan, Kernel, Pass, Target};
 use crate::record::{Passes, Views};
 use crate::settings::{AoSettings, NormalSpace};
 use crate::targets::{Layout, Targets};
@@ -56,7 +56,7 @@ fn check_inputs(
     Ok(size)
 }
 
-/// What the plan needs to know of `inputs`, whose depth is `size` pixels.
+/// What the plan needs to know of `inputs`, planned at `size` pixels.
 fn describe(inputs: &AoInputs<'_>, size: [u32; 2]) -> FrameInputs {
     FrameInputs {
         size,
@@ -64,11 +64,80 @@ fn describe(inputs: &AoInputs<'_>, size: [u32; 2]) -> FrameInputs {
         motion_vectors: inputs.motion_vectors.is_some(),
         mask: inputs.mask.is_some(),
         orthographic: inputs.projection.is_orthographic(),
+        guard_band: inputs.guard_band > 0,
+    }
+}
+
+/// With a guard band, the plan of the whole input, whose steps through the kernel run; `plan`
+/// is the inner frame's, whose steps after the kernel run. Both grids must line up.
+fn plan_band(
+    settings: &AoSettings,
+    inputs: &AoInputs<'_>,
+    plan: &FramePlan,
+) -> Result<Option<FramePlan>, AoError> {
+    let band = inputs.guard_band;
+    if band == 0 {
+        return Ok(None);
+    }
+    let full = inputs.depth.size();
+    let front = FramePlan::new(settings, &describe(inputs, full));
+    if front.scale != plan.scale || !band.is_multiple_of(front.scale) {
+        let scale = settings.resolution.scale();
+        return Err(InputError::GuardBandResolution { band, scale }.into());
+    }
+    Ok(Some(front))
+}
+
+/// Copies the inner frame of each texture the steps after the kernel read from the whole
+/// input's targets (`front`) into the inner frame's (`back`).
+fn crop(
+    encoder: &mut wgpu::CommandEncoder,
+    front: &Targets,
+    back: &Targets,
+    plan: &FramePlan,
+    band: u32,
+) {
+    let working = [
+        Target::Ao,
+        Target::BentNormals,
+        Target::WorkingLinearDepth,
+        Target::WorkingNormals,
+    ];
+    let input = [Target::LinearDepth, Target::Normals];
+    let cuts = working
+        .map(|t| (t, band / plan.scale, plan.working))
+        .into_iter()
+        .chain(input.map(|t| (t, band, plan.size)));
+    for (target, offset, [width, height]) in cuts {
+        let (Some(from), Some(to)) = (front.get(target), back.get(target)) else {
+            continue;
+        };
+        encoder.copy_texture_to_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &from.0,
+                mip_level: 0,
+                origin: wgpu::Origin3d {
+                    x: offset,
+                    y: offset,
+                    z: 0,
+                },
+                aspect: wgpu::TextureAspect::All,
+            },
+            to.0.as_image_copy(),
+            wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
+        );
     }
 }
 
 /// What [`AoPipeline::encode`] produced. Each texture says its size: the input's, or
-/// [`AoOutputs::working_size`] for what the kernel wrote before the upsample.
+/// [`AoOutputs::working_size`] for what the kernel wrote before the upsample. With an
+/// [`AoInputs::guard_band`], "the input's size" is the inner frame's, the output: every
+/// texture here covers the inner frame, except the depth MIP chains, which the kernel read
+/// over the whole input.
 ///
 /// The textures are the same from one `encode` to the next unless the pipeline had to make new
 /// ones: for a new input size or [`AoSettings::resolution`], for settings that add or drop a
@@ -194,6 +263,11 @@ pub struct AoPipeline {
     /// the kernels read them as they are.
     input_normals_view: Option<wgpu::TextureView>,
     targets: Option<Targets>,
+    /// With a guard band: the view uniforms and the targets of the steps through the kernel,
+    /// which run on the whole input; `targets` then holds the inner frame's.
+    band_view_uniforms: wgpu::Buffer,
+    band_working_view_uniforms: wgpu::Buffer,
+    front_targets: Option<Targets>,
     timer: Option<PassTimer>,
     /// Filled by the device's lost callback.
     loss: DeviceLoss,
@@ -239,9 +313,18 @@ impl AoPipeline {
                     device,
                     "aokit working view",
                 ),
+                band_view_uniforms: create_uniform_buffer::<ViewUniforms>(
+                    device,
+                    "aokit band view",
+                ),
+                band_working_view_uniforms: create_uniform_buffer::<ViewUniforms>(
+                    device,
+                    "aokit band working view",
+                ),
                 passes: Passes::new(device, queue, settings),
                 input_normals_view: None,
                 targets: None,
+                front_targets: None,
                 timer: None,
                 loss,
             },
@@ -405,20 +488,36 @@ impl AoPipeline {
         let settings = self.settings;
         let size = check_inputs(device, &settings, inputs)?;
         let plan = FramePlan::new(&settings, &describe(inputs, size));
+        let front_plan = plan_band(&settings, inputs, &plan)?;
         let layout = Layout::of(&plan);
-        if self.targets.as_ref().map(|t| t.layout) != Some(layout) {
+        let (layout, front_layout) = match &front_plan {
+            Some(front) => (
+                layout.after_kernel(),
+                Some(Layout::of(front).through_kernel()),
+            ),
+            None => (layout, None),
+        };
+        let pair = self.passes.pair;
+        if self.targets.as_ref().map(|t| t.layout) != Some(layout)
+            || self.front_targets.as_ref().map(|t| t.layout) != front_layout
+        {
             // The old textures go first, so that they do not count against the new ones.
             self.targets = None;
+            self.front_targets = None;
             let what = || {
                 format!(
                     "the intermediate textures of a {}x{} frame",
                     size[0], size[1]
                 )
             };
-            let pair = self.passes.pair;
             self.targets = Some(allocating(device, what, || {
                 Targets::new(device, layout, pair)
             })?);
+            if let Some(front_layout) = front_layout {
+                self.front_targets = Some(allocating(device, what, || {
+                    Targets::new(device, front_layout, pair)
+                })?);
+            }
         }
         let targets = self.targets.as_ref().expect("targets were just made");
         let (projection, frame_index) = (&inputs.projection, inputs.frame_index);
@@ -432,9 +531,10 @@ impl AoPipeline {
         let whole = wgpu::TextureAspect::All;
         self.input_normals_view = inputs.normals.map(|n| n.bind(whole));
         let motion_vectors = inputs.motion_vectors.map(|t| t.bind(whole));
+        let input_depth = DepthInput::view(&inputs.depth);
         let mut views = Views {
             targets,
-            input_depth: &DepthInput::view(&inputs.depth),
+            input_depth: &input_depth,
             input_normals: self.input_normals_view.as_ref(),
             motion_vectors: motion_vectors.as_ref(),
             history: None,
@@ -449,7 +549,46 @@ impl AoPipeline {
             size,
             timer: self.timer.as_mut(),
         };
-        for step in &plan.steps {
+        let mut steps = &plan.steps[..];
+        if let Some(front) = &front_plan {
+            // The steps through the kernel on the whole input, with the widened projection;
+            // the per-pixel kernels shade the inner frame only (`kernel_offset`), the others
+            // all of it. Then the inner frame of what the later steps read is cut out.
+            let band = inputs.guard_band;
+            let widened = projection.with_guard_band(size, band);
+            let uniforms = ViewUniforms::new(&widened, front.size, frame_index);
+            queue.write_buffer(&self.band_view_uniforms, 0, bytemuck::bytes_of(&uniforms));
+            let mut scaled = ViewUniforms::scaled(&widened, front.size, front.scale, frame_index);
+            scaled.kernel_offset = [band / front.scale; 2];
+            let working = &self.band_working_view_uniforms;
+            queue.write_buffer(working, 0, bytemuck::bytes_of(&scaled));
+            let front_targets = self.front_targets.as_ref().expect("made with the targets");
+            let front_views = Views {
+                targets: front_targets,
+                ..views
+            };
+            for step in &front.steps[..front.through_kernel()] {
+                (ctx.size, ctx.view_uniforms) = match step.pass {
+                    Pass::Kernel {
+                        kernel: Kernel::Method { .. },
+                        ..
+                    } => (plan.working, working),
+                    _ => match step.at {
+                        At::Input => (front.size, &self.band_view_uniforms),
+                        At::Working => (front.working, working),
+                    },
+                };
+                self.passes
+                    .record(&mut ctx, queue, &settings, inputs, step, &front_views);
+            }
+            views = Views {
+                targets,
+                ..front_views
+            };
+            crop(ctx.encoder, front_targets, targets, &plan, band);
+            steps = &plan.steps[plan.through_kernel()..];
+        }
+        for step in steps {
             (ctx.size, ctx.view_uniforms) = match step.at {
                 At::Input => (size, &self.view_uniforms),
                 At::Working => (plan.working, &self.working_view_uniforms),
@@ -495,7 +634,9 @@ impl AoPipeline {
             target => (&made(target).0, &made(target).1),
         };
         let bent_normals = plan.bent_normals.map(made);
-        let optional = |target| targets.get(target).map(|(texture, _)| texture);
+        // With a guard band the kernel's depth chains cover the whole input.
+        let kernel_targets = self.front_targets.as_ref().unwrap_or(targets);
+        let optional = |target| kernel_targets.get(target).map(|(texture, _)| texture);
         AoOutputs {
             ao: &ao.0,
             ao_view: &ao.1,

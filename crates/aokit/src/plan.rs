@@ -21,6 +21,10 @@ pub(crate) struct FrameInputs {
     pub mask: bool,
     /// Whether the projection is orthographic.
     pub orthographic: bool,
+    /// Whether the depth has a guard band ([`AoInputs::guard_band`](crate::AoInputs::guard_band)):
+    /// the passes after the kernel then read copies of the inner frame of aokit's own linear
+    /// depth and normals, so both are made even where the renderer's would do.
+    pub guard_band: bool,
 }
 
 /// A texture a pass reads or writes: the inputs, and the pipeline's intermediate textures.
@@ -207,12 +211,13 @@ impl FramePlan {
         let buffer_normals = inputs.normals && settings.normals.source == NormalSource::Buffer;
         let world = settings.normals.space == NormalSpace::World;
         let encoding = settings.normals.encoding;
-        let decode = buffer_normals && (encoding != NormalEncoding::Oct32 || world);
+        let band = inputs.guard_band;
+        let decode = buffer_normals && (encoding != NormalEncoding::Oct32 || world || band);
         // The linear depth pass runs at full resolution, and where normals are reconstructed
         // from its output (the decode falls back to them where a texel holds no normal).
         // Otherwise the downsample and the upsample read the renderer's depth themselves, and
         // the upsample writes the full-resolution linear depth: one pass less.
-        let linear_pass = !below_full || !buffer_normals || decode;
+        let linear_pass = !below_full || !buffer_normals || decode || band;
         let depth = if linear_pass {
             step(At::Input, Pass::LinearDepth);
             Target::LinearDepth
@@ -391,6 +396,17 @@ impl FramePlan {
             spatial_size: spatial.then_some(if filter_full { size } else { working }),
             depth_mip_atlas,
         }
+    }
+
+    /// How many steps come before those after the kernel: with a guard band, the steps up to
+    /// the kernel run on the whole input and the rest on the inner frame.
+    pub fn through_kernel(&self) -> usize {
+        let kernel = self
+            .steps
+            .iter()
+            .position(|step| matches!(step.pass, Pass::Kernel { .. }))
+            .expect("every plan runs a kernel");
+        kernel + 1
     }
 
     /// Whether a step writes `target`.

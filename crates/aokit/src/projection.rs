@@ -294,6 +294,43 @@ impl Projection {
         self.with_ndc_offset(self.ndc_offset + pixels * per_pixel)
     }
 
+    /// The projection of the same camera drawn `band` pixels larger on each side of an image of
+    /// `size` pixels: the frustum widened so that the inner `size` pixels see exactly what this
+    /// projection sees, as a renderer draws the overscan of [`AoInputs::guard_band`]. The view
+    /// axis stays where it was in the image (a jitter or an off-centre offset keeps its pixels).
+    ///
+    /// [`AoInputs::guard_band`]: crate::AoInputs::guard_band
+    ///
+    /// ```
+    /// use aokit::Projection;
+    /// use aokit::projection::pixel_to_ndc;
+    /// use glam::Vec2;
+    /// let camera = Projection::perspective(1.0, 16.0 / 9.0, 0.1, None);
+    /// let overscan = camera.with_guard_band([160, 90], 8);
+    /// // Pixel (0, 0) of the output is pixel (8, 8) of the overscan image: the same ray.
+    /// let inner = camera.view_position_from_linear(pixel_to_ndc(Vec2::ZERO, Vec2::new(160.0, 90.0)), 2.0);
+    /// let outer = overscan.view_position_from_linear(pixel_to_ndc(Vec2::splat(8.0), Vec2::new(176.0, 106.0)), 2.0);
+    /// assert!((inner - outer).length() < 1e-5);
+    /// ```
+    pub fn with_guard_band(self, size: [u32; 2], band: u32) -> Self {
+        let [w, h] = size.map(|side| side as f32);
+        let grow = Vec2::new(w + 2.0 * band as f32, h + 2.0 * band as f32) / Vec2::new(w, h);
+        let kind = match self.kind {
+            ProjectionKind::Perspective { fov_y } => ProjectionKind::Perspective {
+                fov_y: 2.0 * ((0.5 * fov_y).tan() * grow.y).atan(),
+            },
+            ProjectionKind::Orthographic { height } => ProjectionKind::Orthographic {
+                height: height * grow.y,
+            },
+        };
+        Self {
+            kind,
+            aspect: self.aspect * grow.x / grow.y,
+            ndc_offset: self.ndc_offset / grow,
+            ..self
+        }
+    }
+
     /// Checks every parameter, naming the first one that is unusable.
     ///
     /// ```

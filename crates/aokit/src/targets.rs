@@ -60,6 +60,30 @@ impl Layout {
     }
 }
 
+impl Layout {
+    /// With a guard band, the textures of the steps through the kernel, which run on the whole
+    /// input: none of the filters' or the mask's.
+    pub fn through_kernel(self) -> Self {
+        Self {
+            spatial: None,
+            spatial_packed: false,
+            mask: false,
+            ..self
+        }
+    }
+
+    /// With a guard band, the textures of the steps after the kernel, which run on the inner
+    /// frame: none of the kernel's depth chains or back-face thickness.
+    pub fn after_kernel(self) -> Self {
+        Self {
+            depth_mips: false,
+            depth_mip_atlas: None,
+            back_faces: false,
+            ..self
+        }
+    }
+}
+
 /// The intermediate textures.
 pub(crate) struct Targets {
     pub layout: Layout,
@@ -107,9 +131,12 @@ struct SpatialTargets {
 
 impl Targets {
     pub fn new(device: &wgpu::Device, layout: Layout, pair: PairFormat) -> Self {
+        // COPY_DST: with a guard band the inner frame's targets are copies cut from the
+        // input's.
         let usage = wgpu::TextureUsages::STORAGE_BINDING
             | wgpu::TextureUsages::TEXTURE_BINDING
-            | wgpu::TextureUsages::COPY_SRC;
+            | wgpu::TextureUsages::COPY_SRC
+            | wgpu::TextureUsages::COPY_DST;
         let make = |label, size, format| {
             let texture = create_texture_2d(device, label, size, format, usage);
             let view = texture.create_view(&Default::default());

@@ -178,7 +178,7 @@ impl PassTimer {
             return Ok(Vec::new());
         }
         let slice = self.readback.slice(..count * 8);
-        map_for_reading(device, &slice)?;
+        map_for_reading(device, &slice, None)?;
         let ticks: Vec<u64> = {
             let mapped = slice
                 .get_mapped_range()

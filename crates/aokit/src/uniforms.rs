@@ -22,8 +22,9 @@ pub(crate) struct ViewUniforms {
     pub frame_index: u32,
     pub uv_per_pixel: [f32; 2],
     pub ndc_offset: [f32; 2],
-    /// WGSL rounds the struct up to its 16-byte alignment (`linearize`).
-    pub _pad: [u32; 2],
+    /// The per-pixel kernel's first texel: the guard band, in texels of the grid. The kernel
+    /// dispatches over the grid less this on each side and adds it to its thread's position.
+    pub kernel_offset: [u32; 2],
 }
 
 impl ViewUniforms {
@@ -62,7 +63,7 @@ impl ViewUniforms {
             frame_index,
             uv_per_pixel: extent.recip().to_array(),
             ndc_offset: projection.ndc_offset.to_array(),
-            _pad: [0; 2],
+            kernel_offset: [0; 2],
         }
     }
 }
@@ -340,6 +341,7 @@ mod tests {
             frame_index,
             uv_per_pixel,
             ndc_offset,
+            kernel_offset,
         });
         shader::check_layout(
             &shader::LINEAR_DEPTH[0],

@@ -294,3 +294,78 @@ fn ao_on_a_rendered_sequence_is_render_frame_by_frame() {
         "{stderr}"
     );
 }
+
+#[test]
+fn a_guard_band_round_trips_through_camera_json_and_reaches_the_border() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // VBAO with back faces: the back-face depth is written with the band too.
+    let settings = ["--method", "vbao", "--set", "vbao.back_faces=true"];
+    let render = |band: &str, out: &str| {
+        let mut args = vec!["render", "--scene", "room", "--size", "64x40", "--gbuffer"];
+        args.extend(settings);
+        args.extend(["--guard-band", band, "--out", out]);
+        run(d, &args)
+    };
+    render("0", "plain");
+    render("8", "g");
+    let depth = aokit_eval::read_depth(&d.join("g/depth.exr")).unwrap();
+    assert_eq!([depth.width, depth.height], [80, 56]);
+    let back = aokit_eval::read_depth(&d.join("g/back_depth.exr")).unwrap();
+    assert_eq!([back.width, back.height], [80, 56]);
+    let camera = std::fs::read_to_string(d.join("g/camera.json")).unwrap();
+    assert!(camera.contains("\"guard_band\": 8"), "{camera}");
+    assert!(camera.contains("\"width\": 64"), "{camera}");
+    let plain_camera = std::fs::read_to_string(d.join("plain/camera.json")).unwrap();
+    assert!(!plain_camera.contains("guard_band"), "{plain_camera}");
+    let files = [
+        "ao",
+        "--depth",
+        "g/depth.exr",
+        "--normals",
+        "g/normal.exr",
+        "--back-depth",
+        "g/back_depth.exr",
+        "--camera-json",
+        "g/camera.json",
+    ];
+    let mut ao = files.to_vec();
+    ao.extend(["--out", "a"]);
+    run(d, &ao);
+    for file in ["ao.exr", "ao.png"] {
+        assert!(
+            bytes(&d.join("g").join(file)) == bytes(&d.join("a").join(file)),
+            "{file} differs between render and ao with a guard band"
+        );
+    }
+    // The band reaches the border: the AO there differs from the AO without one.
+    let (banded, plain) = (exr(&d.join("a/ao.exr")), exr(&d.join("plain/ao.exr")));
+    assert_eq!(banded.len(), 64 * 40);
+    let changed = banded.iter().zip(&plain).filter(|(a, b)| a != b).count();
+    assert!(changed > 0, "a guard band changed no pixel");
+
+    // A band the images do not have is refused, naming the sizes.
+    let mut wrong = files.to_vec();
+    wrong.extend(["--guard-band", "4", "--out", "w"]);
+    let out = aokit(d, &wrong);
+    assert!(!out.status.success());
+    let stderr = text(&out.stderr);
+    assert!(
+        stderr.contains("80x56") && stderr.contains("72x48 with a guard band of 4 px"),
+        "{stderr}"
+    );
+    // Half resolution needs an even band.
+    let mut odd = vec!["render", "--scene", "room", "--size", "64x40"];
+    odd.extend([
+        "--set",
+        "resolution=half",
+        "--guard-band",
+        "3",
+        "--out",
+        "o",
+    ]);
+    let out = aokit(d, &odd);
+    assert!(!out.status.success());
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("multiple of the scale (2)"), "{stderr}");
+}

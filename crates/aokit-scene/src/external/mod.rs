@@ -4,7 +4,7 @@ mod convert;
 
 pub use convert::{DepthKind, linear_depth, view_normals};
 
-use aokit::gpu::{read_texture_f32, read_texture_rgba16f, upload_texture_2d};
+use aokit::gpu::{TextureReadback, upload_texture_2d};
 use aokit::normals::encode_texels;
 use aokit::{
     AoInputs, AoPipeline, AoSettings, GpuContext, GpuError, NormalEncoding, PassTime, Projection,
@@ -76,6 +76,8 @@ pub struct ExternalAo {
     pipeline: AoPipeline,
     /// Start the temporal history over at the next run.
     reset_history: bool,
+    /// Pixels of overscan on each side of the passes ([`AoInputs::guard_band`]).
+    guard_band: u32,
 }
 
 impl ExternalAo {
@@ -108,9 +110,31 @@ impl ExternalAo {
             view_from_world: Mat4::IDENTITY,
             pipeline: AoPipeline::new(&gpu.device, &gpu.queue, settings)?,
             reset_history: false,
+            guard_band: 0,
         };
         external.upload_normals(gpu, settings.normals.encoding)?;
         Ok(external)
+    }
+
+    /// Reads the passes as an overscan of `band` pixels on each side ([`AoInputs::guard_band`]):
+    /// [`Passes::projection`] is then the inner frame's, and the AO comes back for the inner
+    /// frame only, `2 * band` pixels narrower and shorter than the passes. 0, the default,
+    /// is no band.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, passes: &aokit_scene::external::Passes<'_>)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::AoSettings;
+    /// use aokit_scene::external::ExternalAo;
+    /// // Passes exported 16 px larger on each side than the image they light.
+    /// let mut external = ExternalAo::new(gpu, &AoSettings::default(), passes)?;
+    /// external.set_guard_band(16);
+    /// let ao = external.run(gpu, 0)?;
+    /// assert_eq!(ao.len() as u32, (passes.size[0] - 32) * (passes.size[1] - 32));
+    /// # Ok(()) }
+    /// ```
+    pub fn set_guard_band(&mut self, band: u32) {
+        self.guard_band = band;
     }
 
     /// Replaces the passes with `passes` (of any size), keeping the compiled pipeline and, for
@@ -324,6 +348,41 @@ impl ExternalAo {
         frame_index: u32,
         bent: bool,
     ) -> Result<(Vec<f32>, Option<Vec<[f32; 4]>>), RenderError> {
+        self.submit(gpu, frame_index, bent)?.wait(gpu)
+    }
+
+    /// Submits a run ([`ExternalAo::run`]; with `bent_normals`,
+    /// [`ExternalAo::run_with_bent_normals`]) with the copies of its outputs to the CPU, and
+    /// returns without waiting for the GPU. The pipeline may take the next frame's passes and
+    /// submit it before this run is read: the GPU works through the frames back to back while
+    /// the CPU prepares the next and reads the last, and each frame's AO is the one `run` gives.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, frames: &[aokit_scene::external::Passes<'_>])
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// use aokit::AoSettings;
+    /// use aokit_scene::external::ExternalAo;
+    /// let mut external = ExternalAo::new(gpu, &AoSettings::default(), &frames[0])?;
+    /// let mut pending = None;
+    /// for (index, passes) in frames.iter().enumerate() {
+    ///     // Uploaded while the GPU still runs the frame before.
+    ///     external.set_passes(gpu, passes)?;
+    ///     let submitted = external.submit(gpu, index as u32, false)?;
+    ///     if let Some(previous) = pending.replace(submitted) {
+    ///         let (ao, _) = previous.wait(gpu)?;
+    ///     }
+    /// }
+    /// if let Some(last) = pending {
+    ///     let (ao, _) = last.wait(gpu)?;
+    /// }
+    /// # Ok(()) }
+    /// ```
+    pub fn submit(
+        &mut self,
+        gpu: &GpuContext,
+        frame_index: u32,
+        bent_normals: bool,
+    ) -> Result<SubmittedRun, RenderError> {
         let (device, queue) = (&gpu.device, &gpu.queue);
         let mut encoder = device.create_command_encoder(&Default::default());
         let outputs = self.pipeline.encode(
@@ -336,15 +395,61 @@ impl ExternalAo {
                 frame_index,
                 reset_history: std::mem::take(&mut self.reset_history),
                 back_depth: self.back_depth.as_ref().map(Into::into),
+                guard_band: self.guard_band,
                 ..AoInputs::new(&self.depth, self.projection)
             },
         )?;
-        queue.submit([encoder.finish()]);
-        let ao = read_texture_f32(device, queue, outputs.ao)?;
-        let bent_normals = match (bent, outputs.bent_normals) {
-            (true, Some(texture)) => Some(read_texture_rgba16f(device, queue, texture)?),
+        // The copies run in the same submission as the passes, so the next frame's passes,
+        // which write the same output textures, cannot overwrite them first.
+        let ao = TextureReadback::encode(device, &mut encoder, outputs.ao)?;
+        let bent_normals = match (bent_normals, outputs.bent_normals) {
+            (true, Some(texture)) => Some(TextureReadback::encode(device, &mut encoder, texture)?),
             _ => None,
         };
+        let submission = queue.submit([encoder.finish()]);
+        Ok(SubmittedRun {
+            ao,
+            bent_normals,
+            submission,
+        })
+    }
+}
+
+/// A run of [`ExternalAo::submit`] on the GPU, its outputs not yet read.
+///
+/// ```no_run
+/// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+/// #     -> Result<(), aokit_scene::RenderError> {
+/// use aokit_scene::external::SubmittedRun;
+/// let submitted: SubmittedRun = external.submit(gpu, 0, false)?;
+/// // ... upload and submit the next frame ...
+/// let (ao, _) = submitted.wait(gpu)?;
+/// # Ok(()) }
+/// ```
+pub struct SubmittedRun {
+    ao: TextureReadback,
+    bent_normals: Option<TextureReadback>,
+    submission: wgpu::SubmissionIndex,
+}
+
+impl SubmittedRun {
+    /// Waits for the run (not for runs submitted after it) and reads its AO back, with the
+    /// bent normals where they were asked for and the settings compute them.
+    ///
+    /// ```no_run
+    /// # fn f(gpu: &aokit::GpuContext, external: &mut aokit_scene::external::ExternalAo)
+    /// #     -> Result<(), aokit_scene::RenderError> {
+    /// let (ao, bent) = external.submit(gpu, 0, true)?.wait(gpu)?;
+    /// # Ok(()) }
+    /// ```
+    #[allow(clippy::type_complexity)]
+    pub fn wait(self, gpu: &GpuContext) -> Result<(Vec<f32>, Option<Vec<[f32; 4]>>), RenderError> {
+        let device = &gpu.device;
+        let ao = self.ao.f32_texels(device, Some(self.submission.clone()))?;
+        let bent_normals = self
+            .bent_normals
+            .map(|bent| bent.rgba16f_texels(device, Some(self.submission)))
+            .transpose()?;
         Ok((ao, bent_normals))
     }
 }

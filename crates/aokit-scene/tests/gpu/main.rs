@@ -10,6 +10,7 @@ mod backends;
 mod conventions;
 mod debug_views;
 mod depth_mips;
+mod guard_band;
 mod load;
 mod mask;
 mod methods;

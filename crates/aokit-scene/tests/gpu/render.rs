@@ -3,7 +3,7 @@
 use crate::common;
 
 use aokit::{AoSettings, GpuContext, Preset, Projection};
-use aokit_scene::external::{self, Passes};
+use aokit_scene::external::{self, ExternalAo, Passes};
 use aokit_scene::{Builtin, Camera, Frame, Lens, Renderer, Scene};
 use common::{gpu, mean_abs_difference};
 use glam::{Vec2, Vec3};
@@ -294,6 +294,62 @@ fn passes_from_the_cpu_give_the_same_ao_as_the_raster() {
             scene.name
         );
     }
+}
+
+/// Frames submitted before the one before them is read back ([`ExternalAo::submit`], as
+/// Python's `ao_batch` runs them) give each frame the AO and bent normals that running it alone
+/// gives: each run's outputs are copied before the next run writes them.
+#[test]
+fn frames_submitted_ahead_read_back_what_each_run_gives() {
+    let gpu = gpu();
+    let frames: Vec<Frame> = [(Builtin::Room, SIZE), (Builtin::Thin, [96, 64])]
+        .into_iter()
+        .map(|(builtin, size)| {
+            let scene = builtin.build();
+            let mut renderer = Renderer::new(&gpu, &scene, &settings_for(&scene)).unwrap();
+            renderer.render(&gpu, &scene.cameras[0], size, 0).unwrap()
+        })
+        .collect();
+    let passes: Vec<Passes<'_>> = frames
+        .iter()
+        .map(|frame| Passes {
+            size: frame.size,
+            linear_depth: &frame.linear_depth,
+            normals: Some(&frame.normals),
+            back_depth: None,
+            projection: frame.projection,
+        })
+        .collect();
+    let settings = AoSettings {
+        bent_normals: true,
+        ..settings_for(&Builtin::Room.build())
+    };
+    let alone: Vec<_> = passes
+        .iter()
+        .enumerate()
+        .map(|(index, passes)| {
+            ExternalAo::new(&gpu, &settings, passes)
+                .unwrap()
+                .run_with_bent_normals(&gpu, index as u32)
+                .unwrap()
+        })
+        .collect();
+    let mut external = ExternalAo::new(&gpu, &settings, &passes[0]).unwrap();
+    let first = external.submit(&gpu, 0, true).unwrap();
+    external.set_passes(&gpu, &passes[1]).unwrap();
+    let second = external.submit(&gpu, 1, true).unwrap();
+    let ahead = [first.wait(&gpu).unwrap(), second.wait(&gpu).unwrap()];
+    for (index, ((ao, bent), (ao_alone, bent_alone))) in ahead.iter().zip(&alone).enumerate() {
+        assert_eq!(ao.len(), frames[index].linear_depth.len(), "frame {index}");
+        assert!(
+            ao == ao_alone,
+            "frame {index}: the AO differs from its run alone"
+        );
+        assert!(bent.is_some(), "frame {index}: no bent normals");
+        assert!(bent == bent_alone, "frame {index}: the bent normals differ");
+    }
+    // The frames differ, so a read-back of the wrong run could not pass.
+    assert!(ahead[0].0[..ahead[1].0.len()] != ahead[1].0[..]);
 }
 
 /// Reconstructs normals from the frame's depth and reads them back.

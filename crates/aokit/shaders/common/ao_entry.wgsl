@@ -23,10 +23,11 @@ override NOISE_TEMPORAL: u32;
 // other passes gained nothing from it.
 @compute @workgroup_size(16, 16)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if any(id.xy >= vec2<u32>(view.size)) {
+    // With a guard band the dispatch covers the inner frame: the band is read, never shaded.
+    if any(id.xy + 2u * view.kernel_offset >= vec2<u32>(view.size)) {
         return;
     }
-    let surface = load_surface(id.xy);
+    let surface = load_surface(id.xy + view.kernel_offset);
     if nothing_to_sample(surface) {
         store_unoccluded(surface);
         return;

@@ -23,6 +23,9 @@ struct ViewUniforms {
     // Where the view axis meets the image in NDC (Projection::ndc_offset): 0, or the frame's
     // jitter, or an off-centre frustum's shift.
     ndc_offset: vec2<f32>,
+    // The guard band in texels of the grid (AoInputs::guard_band): the per-pixel kernel
+    // dispatches over the inner frame and shades texel `id + kernel_offset`; 0 without a band.
+    kernel_offset: vec2<u32>,
 }
 
 @group(0) @binding(0) var<uniform> view: ViewUniforms;

@@ -10,6 +10,7 @@ const INPUTS: FrameInputs = FrameInputs {
     motion_vectors: true,
     mask: false,
     orthographic: false,
+    guard_band: false,
 };
 
 fn plan(settings: AoSettings) -> FramePlan {
@@ -660,4 +661,47 @@ fn reads(pass: &Pass) -> Vec<Target> {
         Pass::Spatial { ao, depth, .. } | Pass::Temporal { ao, depth, .. } => vec![ao, depth],
         Pass::Mask { ao } => vec![ao],
     }
+}
+
+#[test]
+fn a_guard_band_makes_its_own_linear_depth_and_normals_for_the_inner_frame_to_copy() {
+    let band = FrameInputs {
+        guard_band: true,
+        motion_vectors: false,
+        ..INPUTS
+    };
+    // Below full resolution with oct32 view-space normals the renderer's textures would do
+    // (the test above); with a band the steps after the kernel read copies of the inner
+    // frame, which can only be cut from aokit's own targets.
+    let settings = half(raw());
+    let plan = FramePlan::new(&settings, &band);
+    assert_eq!(
+        names(&plan),
+        [
+            "linear_depth@i",
+            "decode_normals@i",
+            "downsample@w",
+            "method@w",
+            "upsample@i"
+        ]
+    );
+    assert_eq!(plan.normals, Target::Normals);
+    assert_eq!(
+        step(&plan, "upsample").pass,
+        Pass::Upsample {
+            depth: Target::LinearDepth,
+            normals: Target::Normals,
+            ao: Target::Ao,
+            bent_normals: false,
+            write_linear_depth: false
+        }
+    );
+    // The steps through the kernel run on the whole input, the rest on the inner frame.
+    assert_eq!(plan.through_kernel(), 4);
+    let full = FramePlan::new(&raw(), &band);
+    assert_eq!(
+        names(&full),
+        ["linear_depth@i", "decode_normals@i", "method@w"]
+    );
+    assert_eq!(full.through_kernel(), 3);
 }

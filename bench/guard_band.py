@@ -1,0 +1,187 @@
+"""Error in the border band against the guard band's size, and its cost (docs/quality.md,
+"Guard band"). For each tuning view at 480x270, GTAO `high` with its default filtering is
+rendered with guard bands of 0, 8, 16 and 32 px and of the kernel's radius in pixels (the
+median over the border band's pixels of the AO radius projected at their depth, clamped to
+`max_radius_px`), and scored against the 512-ray reference that `aokit compare` caches: RMSE
+over the pixels showing a surface within 12 px of the image's edge, and over the whole image.
+Then `aokit bench` times each band against none, interleaved, on room and Sponza's atrium.
+
+    python3 bench/guard_band.py [AOKIT]    # AOKIT: the binary, default target/release/aokit
+
+Prints two markdown tables. About 10 minutes on 2 cores with the references cached.
+"""
+
+import glob
+import json
+import math
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+import zlib
+
+import numpy as np
+
+SIZE = (480, 270)
+BORDER = 12
+BANDS = [0, 8, 16, 32]
+VIEWS = [
+    ("room", "front"),
+    ("stairs", "side"),
+    ("thin", "front"),
+    ("scenes/sponza.obj", "atrium"),
+    ("scenes/sponza.obj", "arcade"),
+    ("scenes/sponza.obj", "gallery"),
+    ("scenes/sponza.obj", "floor"),
+]
+SETTINGS = ["--method", "gtao", "--preset", "high"]
+
+
+def read_exr(path):
+    """The channels of an EXR as aokit writes it: scanlines, f32, uncompressed or ZIP."""
+    data = open(path, "rb").read()
+    if struct.unpack_from("<I", data, 0)[0] != 20000630:
+        sys.exit(f"{path} is not an EXR")
+    pos, attrs = 8, {}
+    while data[pos] != 0:
+        end = data.index(b"\0", pos)
+        name = data[pos:end].decode()
+        pos = end + 1
+        end = data.index(b"\0", pos)
+        pos = end + 1
+        size = struct.unpack_from("<i", data, pos)[0]
+        attrs[name] = data[pos + 4 : pos + 4 + size]
+        pos += 4 + size
+    pos += 1
+    listed, channels, p = attrs["channels"], [], 0
+    while listed[p] != 0:
+        end = listed.index(b"\0", p)
+        channels.append(listed[p:end].decode())
+        p = end + 1 + 16
+    x0, y0, x1, y1 = struct.unpack("<iiii", attrs["dataWindow"])
+    width, height = x1 - x0 + 1, y1 - y0 + 1
+    compression = attrs["compression"][0]
+    if compression not in (0, 2, 3):
+        sys.exit(f"{path}: EXR compression {compression} is not read here")
+    lines = 16 if compression == 3 else 1
+    chunks = (height + lines - 1) // lines
+    offsets = struct.unpack_from(f"<{chunks}Q", data, pos)
+    out = {name: np.zeros((height, width), np.float32) for name in channels}
+    for offset in offsets:
+        y, size = struct.unpack_from("<ii", data, offset)
+        raw = data[offset + 8 : offset + 8 + size]
+        rows = min(lines, y1 + 1 - y)
+        if compression != 0 and size < rows * width * 4 * len(channels):
+            # ZIP: deflate, then undo the byte predictor and the split into two halves.
+            a = np.frombuffer(zlib.decompress(raw), np.uint8).astype(np.int64)
+            a = (np.cumsum(np.concatenate([a[:1], a[1:] - 128])) & 0xFF).astype(np.uint8)
+            half = (len(a) + 1) // 2
+            b = np.empty_like(a)
+            b[0::2], b[1::2] = a[:half], a[half:]
+            raw = b.tobytes()
+        block = np.frombuffer(raw, "<f4").reshape(rows, len(channels), width)
+        for i, name in enumerate(channels):
+            out[name][y - y0 : y - y0 + rows] = block[:, i]
+    return out
+
+
+def run(aokit, *args):
+    return subprocess.run([aokit, *args], check=True, capture_output=True, text=True).stdout
+
+
+def reference_dir(aokit, scene, camera, work):
+    """The cached reference of the view at SIZE and 512 rays, traced by `aokit compare` if
+    missing."""
+    cache = os.environ.get("AOKIT_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "aokit"
+    )
+    stem = os.path.splitext(os.path.basename(scene))[0]
+    pattern = f"{cache}/references/{stem}-{camera}-{SIZE[0]}x{SIZE[1]}-r*-spp512-seed0-none-*"
+    if not glob.glob(pattern):
+        run(aokit, "compare", "--view", f"{scene}@{camera}", *SETTINGS,
+            "--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", "512", "--timing-frames", "1",
+            "--out", os.path.join(work, "compare"))
+    found = sorted(glob.glob(pattern))
+    if not found:
+        sys.exit(f"no reference for {scene}@{camera} under {pattern}")
+    return found[-1]
+
+
+def radius_px(reference, border, settings):
+    """The kernel's radius in pixels over the border band: the median of the radius projected
+    at each pixel's depth, clamped to max_radius_px."""
+    camera = json.load(open(f"{reference}/camera.json"))
+    radius = json.load(open(f"{reference}/reference.json"))["radius"]
+    depth = read_exr(f"{reference}/depth.exr")["Z"]
+    per_unit = 0.5 * SIZE[1] / math.tan(math.radians(camera["fov_y_deg"]) / 2)
+    world = radius * settings["radius_multiplier"]
+    px = np.minimum(world * per_unit / depth[border], settings["max_radius_px"])
+    return int(math.ceil(np.median(px)))
+
+
+def main():
+    aokit = sys.argv[1] if len(sys.argv) > 1 else "target/release/aokit"
+    work = tempfile.mkdtemp(prefix="guard-band-")
+    y, x = np.mgrid[0 : SIZE[1], 0 : SIZE[0]]
+    edge = np.minimum(np.minimum(x, SIZE[0] - 1 - x), np.minimum(y, SIZE[1] - 1 - y)) < BORDER
+    settings = {}
+    listed = run(aokit, "settings", *SETTINGS)
+    for line in listed.splitlines():
+        words = line.split()
+        if len(words) >= 4 and words[0] in ("radius_multiplier", "max_radius_px"):
+            # Columns: key, type, default, value the flags give.
+            settings[words[0]] = float(words[3])
+    rows, kernel_bands = [], {}
+    for scene, camera in VIEWS:
+        reference = reference_dir(aokit, scene, camera, work)
+        truth = read_exr(f"{reference}/reference.exr")["Y"]
+        depth = read_exr(f"{reference}/depth.exr")["Z"]
+        surface = depth > 0
+        border = surface & edge
+        kernel = radius_px(reference, border, settings)
+        kernel_bands[f"{scene}@{camera}"] = kernel
+        errors = []
+        for band in BANDS + [kernel]:
+            out = os.path.join(work, f"{os.path.basename(scene)}-{camera}-{band}")
+            run(aokit, "render", "--scene", scene, "--camera", camera, *SETTINGS,
+                "--size", f"{SIZE[0]}x{SIZE[1]}", "--guard-band", str(band), "--out", out)
+            ao = read_exr(f"{out}/ao.exr")["Y"]
+            rmse = lambda mask: float(np.sqrt(np.mean((ao[mask] - truth[mask]) ** 2)))
+            errors.append((rmse(border), rmse(surface)))
+        rows.append((f"{os.path.basename(scene)}@{camera}", kernel, errors))
+
+    print(f"Border band ({BORDER} px) RMSE / whole-image RMSE, GTAO high, {SIZE[0]}x{SIZE[1]}:\n")
+    heads = [f"{b} px" for b in BANDS] + ["kernel radius"]
+    print("| view | kernel radius (px) | " + " | ".join(heads) + " | border change at the radius |")
+    print("|---|---:|" + "---:|" * len(heads) + "---:|")
+    means = np.zeros((len(heads), 2))
+    for name, kernel, errors in rows:
+        cells = [f"{b:.4f} / {w:.4f}" for b, w in errors]
+        change = errors[-1][0] / errors[0][0] - 1
+        print(f"| {name} | {kernel} | " + " | ".join(cells) + f" | {change:+.0%} |")
+        means += np.array(errors) / len(rows)
+    change = means[-1][0] / means[0][0] - 1
+    cells = [f"{b:.4f} / {w:.4f}" for b, w in means]
+    print("| **mean** | | " + " | ".join(cells) + f" | {change:+.0%} |")
+
+    print("\nCost: wall time of `aokit bench` with the band against none, interleaved:\n")
+    print("| view | band (px) | extra pixels | wall-time ratio |")
+    print("|---|---:|---:|---:|")
+    for scene, camera in [("room", "front"), ("scenes/sponza.obj", "atrium")]:
+        kernel = kernel_bands[f"{scene}@{camera}"]
+        bands = sorted(set(BANDS[1:] + [kernel]))
+        configurations = [f"--guard-band {b}" for b in [0] + bands]
+        report = json.loads(run(aokit, "bench", "--scene", scene, "--camera", camera, *SETTINGS,
+                                "--size", f"{SIZE[0]}x{SIZE[1]}", "--timing-frames", "60",
+                                "--warmup", "3", "--json", "--compare", *configurations))
+        base = report[0]["wall_ms"]["median"]
+        for band, entry in zip(bands, report[1:]):
+            extra = (SIZE[0] + 2 * band) * (SIZE[1] + 2 * band) / (SIZE[0] * SIZE[1])
+            ratio = entry["wall_ms"]["median"] / base
+            name = f"{os.path.basename(scene)}@{camera}"
+            print(f"| {name} | {band} | {extra:.2f}x | {ratio:.2f}x |")
+
+
+if __name__ == "__main__":
+    main()
