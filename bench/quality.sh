@@ -64,10 +64,10 @@ full report with every image and error map, and copies a few of them here.
 
 What the spatial filter (the `edges` kind, on in every preset) does to each method's error at
 its default preset. It lowers the mean error of every method but `ue4-ssao` (whose AO is
-smooth already: +0.0002), by 11 to 13% for `ssao`, `hbao`, `gtao`, `vbao` and `sao`; the per-view
+smooth already: +0.0002), by 10 to 13% for `ssao`, `hbao`, `gtao`, `vbao` and `sao`; the per-view
 tables further down are the raw AO, the kernels' own error. Until 2026-11-27 the defaults
 gave the raw column, with GTAO's and HBAO's `high` presets as tuned on raw AO (mean 0.0875
-and 0.0776, against 0.0738 and 0.0657 now).
+and 0.0776, against 0.0773 and 0.0693 now).
 
 HEAD
     printf '%s\n\n' "$filtered"

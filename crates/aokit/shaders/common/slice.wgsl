@@ -71,7 +71,7 @@ fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f3
 // What a sample that lands off screen reads (AoSettings::offscreen_samples), compiled into
 // each kernel like NEAREST_DEPTH: true continues the surface at the screen's edge
 // (edge_plane_sample), false drops the sample, as if the scene were open beyond the edge.
-override EXTEND_OFFSCREEN: bool = true;
+override EXTEND_OFFSCREEN: bool = false;
 
 // Distance in pixels from `center` along the screen direction `dir` to the last texel centre
 // on screen: where a slice leaving the screen last sees the scene.

@@ -394,7 +394,8 @@ const AFTER_METHODS: &[SettingSpec] = &[
         choice,
         "what `gtao`, `vbao`, `hbao` and `hbao-plus` take for a sample off screen: the surface at \
          the screen's edge continued (the plane of the last texel on screen along the slice), or \
-         nothing, as if the scene were open beyond the edge \
+         nothing, as if the scene were open beyond the edge; `extend` lowers the error within 12 px \
+         of the edges by 11 to 20% for 1.22 to 1.26 times GTAO `high`'s frame time on lavapipe \
          ([quality.md](quality.md#off-screen-samples-and-silhouettes))"
     ),
 ];

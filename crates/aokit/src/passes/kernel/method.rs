@@ -361,9 +361,9 @@ mod tests {
                 .map(|(_, value)| value)
         };
         let mut settings = AoSettings::preset(Method::Gtao, crate::Preset::High);
-        assert_eq!(extend(&settings), Some(1.0));
-        settings.offscreen_samples = OffscreenSamples::Unoccluded;
         assert_eq!(extend(&settings), Some(0.0));
+        settings.offscreen_samples = OffscreenSamples::Extend;
+        assert_eq!(extend(&settings), Some(1.0));
         settings.method = Method::Ssao;
         assert_eq!(extend(&settings), None);
     }
