@@ -447,7 +447,7 @@ impl Renderer {
     /// let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &AoSettings::default())?;
     /// let mut encoder = gpu.device.create_command_encoder(&Default::default());
     /// let outputs = pipeline.encode(&gpu.device, &gpu.queue, &mut encoder, &AoInputs {
-    ///     normals: Some(&gbuffer.normals),
+    ///     normals: Some((&gbuffer.normals).into()),
     ///     guard_band: 32,
     ///     ..AoInputs::new(&gbuffer.depth, projection)
     /// })?;
