@@ -20,14 +20,14 @@ import glob
 import json
 import os
 import re
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
 
 import numpy as np
 from PIL import Image
+
+from aokit_files import cache_dir, read_exr
 
 AOKIT = os.environ.get("AOKIT", "target/release/aokit")
 SIZE = (480, 270)
@@ -37,39 +37,6 @@ EDGE_RADIUS = 2
 BANDS = ["border", "edges", "elsewhere", "all"]
 
 
-def read_exr(path):
-    """The one float channel of a single-channel scanline EXR, uncompressed or ZIP, as aokit's
-    reference cache writes it."""
-    data = open(path, "rb").read()
-    pos, header = 8, {}
-    while data[pos] != 0:
-        name_end = data.index(b"\0", pos)
-        type_end = data.index(b"\0", name_end + 1)
-        size = struct.unpack_from("<i", data, type_end + 1)[0]
-        header[data[pos:name_end].decode()] = data[type_end + 5 : type_end + 5 + size]
-        pos = type_end + 5 + size
-    pos += 1
-    x0, y0, x1, y1 = struct.unpack("<4i", header["dataWindow"])
-    width, height = x1 - x0 + 1, y1 - y0 + 1
-    compression = header["compression"][0]
-    lines = {0: 1, 2: 1, 3: 16}[compression]
-    chunks = (height + lines - 1) // lines
-    image = np.zeros((height, width), np.float32)
-    for offset in struct.unpack_from(f"<{chunks}Q", data, pos):
-        y, size = struct.unpack_from("<2i", data, offset)
-        raw = data[offset + 8 : offset + 8 + size]
-        rows = min(lines, y1 + 1 - y)
-        if compression != 0 and size < rows * width * 4:
-            # ZIP: inflate, undo the delta predictor, then interleave the two halves again.
-            b = np.frombuffer(zlib.decompress(raw), np.uint8).astype(np.int32)
-            b[1:] -= 128
-            b = (np.cumsum(b) & 0xFF).astype(np.uint8)
-            half = (len(b) + 1) // 2
-            raw = np.empty_like(b)
-            raw[0::2], raw[1::2] = b[:half], b[half:]
-            raw = raw.tobytes()
-        image[y - y0 : y - y0 + rows] = np.frombuffer(raw, "<f4").reshape(rows, width)
-    return image
 
 
 def edge_mask(depth):
@@ -114,10 +81,6 @@ def bands(depth):
     }
 
 
-def cache_dir():
-    return os.environ.get("AOKIT_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "aokit"
-    )
 
 
 def reference_dir(view):
@@ -152,8 +115,8 @@ def main():
         print("|---|" + "--:|" * len(BANDS))
         for row in results:
             reference = reference_dir(row["view"])
-            truth = read_exr(f"{reference}/reference.exr")
-            masks = bands(read_exr(f"{reference}/depth.exr"))
+            truth = read_exr(f"{reference}/reference.exr")["Y"]
+            masks = bands(read_exr(f"{reference}/depth.exr")["Z"])
             png = f"{out}/images/{slug(row['view'])}-{method}-high.png"
             ao = np.asarray(Image.open(png), np.float32) / 255.0
             squared = (ao - truth) ** 2
