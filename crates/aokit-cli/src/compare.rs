@@ -564,14 +564,6 @@ fn score_inputs(
         NormalSpace::View,
         None,
     )?;
-    if loaded.guard_band > 0 {
-        bail!(
-            "{}: passes with a guard band ({} px) are scored by `aokit ao` and the band-free \
-             reference, not --inputs",
-            dir.display(),
-            loaded.guard_band
-        );
-    }
     let reference_path = dir.join("reference.exr");
     let reference_ao = read_scalar_exr(&reference_path)?;
     // One NaN makes every metric NaN, which the report prints as "n/a": refuse it here.
@@ -584,25 +576,37 @@ fn score_inputs(
             reference_ao.data.len()
         );
     }
-    if [reference_ao.width, reference_ao.height] != loaded.size {
+    // With a guard band the passes are larger than the frame the reference was traced for.
+    let size = loaded.output_size();
+    if [reference_ao.width, reference_ao.height] != size {
         bail!(
-            "{}: reference.exr and depth.exr differ in size",
-            dir.display()
+            "{}: reference.exr is {}x{}, but the frame of depth.exr is {}x{}{}",
+            dir.display(),
+            reference_ao.width,
+            reference_ao.height,
+            size[0],
+            size[1],
+            if loaded.guard_band > 0 {
+                format!(" (its {} px guard band cut off)", loaded.guard_band)
+            } else {
+                String::new()
+            }
         );
     }
     let info = ReferenceInfo::read(dir);
     if let Ok(ReferenceInfo {
         size: Some(traced), ..
     }) = &info
-        && *traced != loaded.size
+        && *traced != size
     {
         bail!(
-            "{}: reference.json says the reference was traced at {}x{}, but the passes are {}x{}",
+            "{}: reference.json says the reference was traced at {}x{}, but the passes' frame is \
+             {}x{}",
             dir.display(),
             traced[0],
             traced[1],
-            loaded.size[0],
-            loaded.size[1]
+            size[0],
+            size[1]
         );
     }
     let radius = match args.radius {
@@ -613,14 +617,18 @@ fn score_inputs(
         }
     };
     let reference = ReferenceImage {
-        size: loaded.size,
+        size,
         ao: reference_ao.data,
         linear_depth: loaded
-            .linear_depth
+            .output_depth()
             .iter()
             .map(|&d| if d.is_finite() && d > 0.0 { d } else { 0.0 })
             .collect(),
-        normals: loaded.normals.clone().unwrap_or_default(),
+        normals: loaded
+            .normals
+            .as_deref()
+            .map(|n| loaded.crop_to_output(n))
+            .unwrap_or_default(),
     };
     let grazing = grazing(&reference, &loaded.projection);
     if args.peer.is_some() {
@@ -634,6 +642,7 @@ fn score_inputs(
     }
     let runs = inputs_settings(args, methods, &camera, radius)?;
     let mut external = ExternalAo::new(gpu, &runs[0].1, &loaded.passes())?;
+    external.set_guard_band(loaded.guard_band);
     let timed = external.enable_timing(gpu);
     let mut results = Vec::new();
     for (preset, settings) in runs {

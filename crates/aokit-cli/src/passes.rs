@@ -47,15 +47,18 @@ impl LoadedPasses {
 
     /// The linear depth of the output's pixels, the band cut off.
     pub fn output_depth(&self) -> Vec<f32> {
+        self.crop_to_output(&self.linear_depth)
+    }
+
+    /// The output's pixels of an image the size of the passes: the band cut off.
+    pub fn crop_to_output<T: Copy>(&self, image: &[T]) -> Vec<T> {
         let [width, _] = self.size;
         let [inner_width, inner_height] = self.output_size();
         let band = self.guard_band as usize;
         (0..inner_height as usize)
             .flat_map(|y| {
                 let row = (y + band) * width as usize + band;
-                self.linear_depth[row..row + inner_width as usize]
-                    .iter()
-                    .copied()
+                image[row..row + inner_width as usize].iter().copied()
             })
             .collect()
     }

@@ -108,3 +108,74 @@ fn compare_on_inputs_runs_the_recorded_settings_and_the_flags_go_over_them() {
         "{message}"
     );
 }
+
+#[test]
+fn compare_on_inputs_with_a_guard_band_scores_the_inner_frame_as_ao_writes_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let view = ["--scene", "room", "--size", "48x32"];
+    let render = [
+        "render",
+        "--gbuffer",
+        "--method",
+        "gtao",
+        "--preset",
+        "low",
+        "--guard-band",
+        "8",
+        "--out",
+        "g",
+    ];
+    ok(&aokit(d, &[&render[..], &view[..]].concat()));
+    // The reference is the camera's frame, band-free: traced beside the export, then copied
+    // into it (tracing into the export would replace its overscan passes).
+    let reference = ["reference", "--spp", "8", "--out", "r"];
+    ok(&aokit(d, &[&reference[..], &view[..]].concat()));
+    for file in ["reference.exr", "reference.json"] {
+        std::fs::copy(d.join("r").join(file), d.join("g").join(file)).unwrap();
+    }
+    ok(&aokit(d, &["compare", "--inputs", "g", "--out", "c"]));
+    // Scored over the frame's surface pixels, those of the band-free traced depth.
+    let traced = aokit_eval::read_depth(&d.join("r/depth.exr")).unwrap();
+    let surface = traced
+        .data
+        .iter()
+        .filter(|z| z.is_finite() && **z > 0.0)
+        .count();
+    let metrics = json(&d.join("c/metrics.json"));
+    assert_eq!(metrics["results"][0]["all"]["pixels"], surface, "{metrics}");
+    // The AO scored is `aokit ao`'s on the overscan passes, the band read from camera.json.
+    let ao = [
+        "ao",
+        "--depth",
+        "g/depth.exr",
+        "--normals",
+        "g/normal.exr",
+        "--camera-json",
+        "g/camera.json",
+        "--out",
+        "a",
+    ];
+    ok(&aokit(d, &ao));
+    assert!(bytes(&d.join("a/ao.png")) == bytes(&d.join("c/images/g-gtao-low.png")));
+
+    // A reference of another size is refused, naming the band cut off.
+    let reference = [
+        "reference",
+        "--scene",
+        "room",
+        "--size",
+        "64x48",
+        "--spp",
+        "2",
+        "--out",
+        "r2",
+    ];
+    ok(&aokit(d, &reference));
+    std::fs::copy(d.join("r2/reference.exr"), d.join("g/reference.exr")).unwrap();
+    let message = failure(&aokit(d, &["compare", "--inputs", "g", "--out", "c2"]));
+    assert!(
+        message.contains("reference.exr is 64x48, but the frame of depth.exr is 48x32 (its 8 px guard band cut off)"),
+        "{message}"
+    );
+}
