@@ -150,8 +150,8 @@ pub struct Renderer {
     /// Pixels of overscan the AO reads on each side ([`AoInputs::guard_band`]): with more
     /// than 0 each frame also draws a G-buffer that much larger, through the widened frustum
     /// ([`Projection::with_guard_band`](aokit::Projection::with_guard_band)), for the AO
-    /// pipeline; the frame's images and the lit composite stay the camera's own. The temporal
-    /// filter then reprojects by depth and the camera alone (no motion vectors with a band).
+    /// pipeline (its motion vectors too); the frame's images and the lit composite stay the
+    /// camera's own.
     pub guard_band: u32,
     /// Compiled the first time a debug view is asked for.
     debug: Option<AoDebug>,
@@ -624,6 +624,11 @@ impl Renderer {
             let full = overscan_size(size, band);
             self.checked_size(gpu, full)?;
             let widened = projection.with_guard_band(size, band);
+            // The widened frustum scales clip x and y by the frame's size over the overscan's
+            // (Projection::with_guard_band), last frame's camera as this one's, so that the
+            // overscan's motion vectors are the frame's, shifted by the band.
+            let [frame, overscan] = [size, full].map(|s| Vec2::new(s[0] as f32, s[1] as f32));
+            let to_overscan = Mat4::from_scale((frame / overscan).extend(1.0));
             Some(self.draw_gbuffer(
                 gpu,
                 &mut encoder,
@@ -633,7 +638,7 @@ impl Renderer {
                 &GBufferCamera {
                     view_from_world,
                     projection: &widened,
-                    previous_clip_from_world: widened.clip_from_view() * view_from_world,
+                    previous_clip_from_world: to_overscan * previous_clip_from_world,
                 },
             ))
         } else {
@@ -647,8 +652,9 @@ impl Renderer {
             normals: Some((&ao_gbuffer.normals).into()),
             view_from_world,
             frame_index,
-            motion_vectors: (self.use_motion_vectors && band == 0)
-                .then_some((&gbuffer.motion).into()),
+            motion_vectors: self
+                .use_motion_vectors
+                .then_some((&ao_gbuffer.motion).into()),
             reset_history,
             back_depth: ao_gbuffer.back_depth.as_ref().map(Into::into),
             guard_band: band,

@@ -98,15 +98,15 @@ pub struct AoInputs<'a> {
     /// # }
     /// ```
     pub back_depth: Option<AoTexture<'a>>,
-    /// Pixels of overscan on each side of the depth, normals and back-face depth: the
-    /// renderer drew them `2 * guard_band` pixels wider and taller than the output, with
-    /// [`Projection::with_guard_band`], so that samples near the output's edges find the
+    /// Pixels of overscan on each side of the depth, normals, motion vectors and back-face
+    /// depth: the renderer drew them `2 * guard_band` pixels wider and taller than the output,
+    /// with [`Projection::with_guard_band`], so that samples near the output's edges find the
     /// geometry just off screen. [`AoInputs::projection`] is the output's (the camera's) and
     /// the outputs cover only the inner frame; the kernel reads the band but computes AO for
-    /// the inner frame alone (docs/integration.md measures what a band buys). The mask is of
-    /// the output's size; motion vectors are refused with a band. Below full resolution the
-    /// band must be a multiple of the resolution's scale, so that the working grids of the
-    /// input and of the inner frame line up. 0 is no band.
+    /// the inner frame alone (docs/integration.md measures what a band buys), and the temporal
+    /// filter reads the motion vectors' inner frame. The mask is of the output's size. Below
+    /// full resolution the band must be a multiple of the resolution's scale, so that the
+    /// working grids of the input and of the inner frame line up. 0 is no band.
     ///
     /// ```no_run
     /// # fn f(depth: &wgpu::Texture, normals: &wgpu::Texture, camera: aokit::Projection) {
@@ -331,13 +331,6 @@ pub enum InputError {
         /// The resolution's scale.
         scale: u32,
     },
-    /// Motion vectors with a [`AoInputs::guard_band`], which the temporal filter cannot yet
-    /// read at the band's offset.
-    #[error(
-        "motion vectors with a guard band are not supported; pass them without a band (the \
-         temporal filter reprojects by depth and the camera alone when they are absent)"
-    )]
-    GuardBandMotionVectors,
     /// An [`AoMask::Stencil`] texture has no stencil aspect.
     #[error("mask texture format {0:?} has no stencil aspect to compare with the reference")]
     MaskNoStencil(wgpu::TextureFormat),
@@ -408,9 +401,6 @@ impl AoInputs<'_> {
             same_size("normals", size, normals)?;
         }
         if let Some(motion) = self.motion_vectors {
-            if self.guard_band > 0 {
-                return Err(InputError::GuardBandMotionVectors);
-            }
             if !MOTION_VECTOR_FORMATS.contains(&motion.format()) {
                 return Err(InputError::MotionVectorFormat(motion.format()));
             }

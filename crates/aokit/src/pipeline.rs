@@ -102,6 +102,7 @@ fn crop(
         Target::BentNormals,
         Target::WorkingLinearDepth,
         Target::WorkingNormals,
+        Target::WorkingMotionVectors,
     ];
     let input = [Target::LinearDepth, Target::Normals];
     let cuts = working

@@ -274,7 +274,15 @@ impl Passes {
                 let motion = FrameMotion {
                     view_from_world: frame.view_from_world,
                     projection: frame.projection,
-                    motion_vectors: motion_vectors.map(view),
+                    // The input's motion vectors cover the guard band too; the working
+                    // ones were cut to the frame.
+                    motion_vectors: motion_vectors.map(|target| {
+                        let offset = match target {
+                            Target::InputMotionVectors => frame.guard_band,
+                            _ => 0,
+                        };
+                        (view(target), offset)
+                    }),
                     reset: frame.reset_history,
                 };
                 temporal.encode(ctx, queue, history, &motion, input);

@@ -259,7 +259,10 @@ pub(crate) struct TemporalUniforms {
     pub variance_gamma: f32,
     pub depth_threshold: f32,
     pub flags: u32,
-    pub _pad: [u32; 3],
+    pub _pad: u32,
+    /// Where the frame's pixel (0, 0) lies in the motion vectors: the guard band when they are
+    /// the input's overscan, 0 when cropped or downsampled to the frame.
+    pub motion_offset: [i32; 2],
 }
 
 /// `TemporalUniforms::flags` bits, mirrored as constants in `temporal_filter.wgsl`.
@@ -274,18 +277,19 @@ pub(crate) mod temporal_flags {
 
 impl TemporalUniforms {
     /// `previous`: the transform from this frame's view space to the previous frame's, and the
-    /// previous projection; `None` starts the history over.
+    /// previous projection; `None` starts the history over. `motion_offset`: the frame's origin
+    /// in the motion vectors, when there are some.
     pub fn new(
         settings: &crate::settings::TemporalSettings,
         previous: Option<(glam::Mat4, Projection)>,
-        motion_vectors: bool,
+        motion_offset: Option<u32>,
     ) -> Self {
         let (transform, projection) = previous.unzip();
         let mut flags = 0;
         if previous.is_some() {
             flags |= temporal_flags::HISTORY;
         }
-        if motion_vectors {
+        if motion_offset.is_some() {
             flags |= temporal_flags::MOTION_VECTORS;
         }
         if settings.filter_current {
@@ -300,7 +304,9 @@ impl TemporalUniforms {
             variance_gamma: settings.variance_gamma,
             depth_threshold: settings.depth_threshold,
             flags,
-            _pad: [0; 3],
+            _pad: 0,
+            // A band is at most the input's size, which wgpu caps far below i32::MAX.
+            motion_offset: [motion_offset.unwrap_or(0) as i32; 2],
         }
     }
 }
@@ -491,6 +497,7 @@ mod tests {
             variance_gamma,
             depth_threshold,
             flags,
+            motion_offset,
         });
         shader::check_layout(
             &shader::TEMPORAL_FILTER[0],
@@ -513,7 +520,7 @@ mod tests {
         let previous = projection.with_jitter(Vec2::new(0.5, -0.5), [300, 200]);
         let settings = crate::settings::TemporalSettings::default();
         let uniforms =
-            TemporalUniforms::new(&settings, Some((glam::Mat4::IDENTITY, previous)), false);
+            TemporalUniforms::new(&settings, Some((glam::Mat4::IDENTITY, previous)), None);
         assert_eq!(uniforms.prev_ndc_offset, previous.ndc_offset.to_array());
         let current = projection.with_jitter(Vec2::new(-0.5, 0.5), [300, 200]);
         assert_eq!(

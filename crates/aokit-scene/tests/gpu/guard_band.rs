@@ -1,14 +1,16 @@
 //! The guard band (`AoInputs::guard_band`): the AO of the inner frame from an overscan
 //! G-buffer. Away from the border it is the AO without a band; in the border band it is closer
-//! to the reference; at half resolution too; and bad bands are refused by name.
+//! to the reference; at half resolution too; motion vectors are read at the band's offset;
+//! and bad bands are refused by name.
 
 use crate::common;
 
+use aokit::gpu::{read_texture_f32, upload_texture_2d};
 use aokit::{
     AoError, AoInputs, AoPipeline, InputError, Method, NormalEncoding, Preset, Resolution,
 };
 use aokit_scene::{Builtin, Renderer};
-use common::{gpu, rmse, scene_settings, trace};
+use common::{encode_frame, gpu, rmse, scene_settings, trace};
 
 const SIZE: [u32; 2] = [160, 90];
 const BAND: u32 = 16;
@@ -119,13 +121,74 @@ fn bad_bands_are_refused() {
         err.to_string().contains("multiple of the scale (4)"),
         "{err}"
     );
-    let moving = AoInputs {
-        motion_vectors: Some((&gbuffer.motion).into()),
-        ..inputs(4)
+}
+
+/// With a band the temporal filter reads each pixel's motion at the band's offset in the
+/// overscan's motion vectors (at full resolution) or in their downsample cut to the frame
+/// (below it): motion vectors of 3 px in the frame and nonsense in the band give the AO of 3 px
+/// everywhere, and another AO than 0 px (they are read at all).
+#[test]
+fn motion_vectors_are_read_at_the_bands_offset() {
+    let gpu = gpu();
+    let scene = Builtin::Room.build();
+    let (size, band) = ([48, 32], 8);
+    let full = size.map(|side| side + 2 * band);
+    let low = scene_settings(&scene, Method::Gtao, Preset::Low);
+    let mut renderer = Renderer::new(&gpu, &scene, &low).unwrap();
+    let (gbuffer, projection) = renderer
+        .render_gbuffer_with_guard_band(&gpu, &scene.cameras[0], size, NormalEncoding::Oct32, band)
+        .unwrap();
+    let motion = |in_frame: f32, in_band: f32| {
+        let texels: Vec<[f32; 2]> = (0..full[0] * full[1])
+            .map(|i| {
+                let (x, y) = (i % full[0], i / full[0]);
+                let inside =
+                    (band..band + size[0]).contains(&x) && (band..band + size[1]).contains(&y);
+                [if inside { in_frame } else { in_band }, 0.0]
+            })
+            .collect();
+        upload_texture_2d(
+            &gpu.device,
+            &gpu.queue,
+            "motion",
+            full,
+            wgpu::TextureFormat::Rg32Float,
+            bytemuck::cast_slice(&texels),
+        )
+        .unwrap()
     };
-    let err = run(&settings, &moving).unwrap_err();
-    assert!(
-        matches!(err, AoError::Input(InputError::GuardBandMotionVectors)),
-        "{err}"
-    );
+    let (moved, nonsense, still) = (motion(3.0, 3.0), motion(3.0, 1000.0), motion(0.0, 0.0));
+    for resolution in [Resolution::Full, Resolution::Half] {
+        let mut settings = aokit::AoSettings { resolution, ..low };
+        settings.temporal.enabled = true;
+        let run = |motion: &wgpu::Texture| {
+            let mut pipeline = AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
+            // The second frame reprojects the first: its noise differs, so the history counts.
+            (0..2)
+                .map(|frame_index| {
+                    let inputs = AoInputs {
+                        normals: Some((&gbuffer.normals).into()),
+                        motion_vectors: Some(motion.into()),
+                        frame_index,
+                        guard_band: band,
+                        ..AoInputs::new(&gbuffer.depth, projection)
+                    };
+                    encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
+                        read_texture_f32(&gpu.device, &gpu.queue, outputs.ao).unwrap()
+                    })
+                })
+                .last()
+                .unwrap()
+        };
+        let expected = run(&moved);
+        assert_eq!(expected.len(), (size[0] * size[1]) as usize);
+        assert!(
+            run(&nonsense) == expected,
+            "{resolution:?}: the band's motion vectors reached the frame"
+        );
+        assert!(
+            run(&still) != expected,
+            "{resolution:?}: the frame's motion vectors were not read"
+        );
+    }
 }

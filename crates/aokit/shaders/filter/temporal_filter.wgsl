@@ -31,6 +31,9 @@ struct TemporalUniforms {
     // Relative depth difference above which two depths are different surfaces.
     depth_threshold: f32,
     flags: u32,
+    // Where this frame's pixel (0, 0) lies in the motion vectors: the guard band when they are
+    // the renderer's overscan, 0 when cropped or downsampled to the frame.
+    motion_offset: vec2<i32>,
 }
 
 const FLAG_HISTORY: u32 = 1u;
@@ -143,7 +146,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let expected = -previous.z;
     var q: vec2<f32>;
     if (temporal.flags & FLAG_MOTION_VECTORS) != 0u {
-        q = center + textureLoad(motion_vectors, pixel, 0).xy;
+        q = center + textureLoad(motion_vectors, pixel + temporal.motion_offset, 0).xy;
     } else {
         let scale = mix(expected, 1.0, temporal.prev_orthographic);
         let ndc = previous.xy / (temporal.prev_ndc_to_view * scale) + temporal.prev_ndc_offset;

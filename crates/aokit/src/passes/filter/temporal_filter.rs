@@ -77,8 +77,9 @@ pub struct FrameMotion<'a> {
     pub view_from_world: Mat4,
     /// Projection of this frame.
     pub projection: Projection,
-    /// Per-pixel motion to the previous frame, when the renderer has it.
-    pub motion_vectors: Option<&'a wgpu::TextureView>,
+    /// Per-pixel motion to the previous frame, when the renderer has it, and where the frame's
+    /// pixel (0, 0) lies in it (a guard band's width, or 0).
+    pub motion_vectors: Option<(&'a wgpu::TextureView, u32)>,
     /// Start over: the history shows something else (a camera cut, a teleport).
     pub reset: bool,
 }
@@ -185,7 +186,7 @@ impl TemporalFilterPass {
             previous.map(|(view, projection)| {
                 (prev_view_from_view(view, frame.view_from_world), projection)
             }),
-            frame.motion_vectors.is_some(),
+            frame.motion_vectors.map(|(_, offset)| offset),
         );
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
         let (read, write) = (history.latest, 1 - history.latest);
@@ -202,7 +203,9 @@ impl TemporalFilterPass {
                 wgpu::BindingResource::TextureView(linear_depth),
                 wgpu::BindingResource::TextureView(&history.textures[read].1),
                 wgpu::BindingResource::TextureView(
-                    frame.motion_vectors.unwrap_or(&self.motion_placeholder),
+                    frame
+                        .motion_vectors
+                        .map_or(&self.motion_placeholder, |(view, _)| view),
                 ),
                 wgpu::BindingResource::Sampler(&self.point_clamp),
                 wgpu::BindingResource::TextureView(&history.output.1),
