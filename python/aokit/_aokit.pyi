@@ -22,10 +22,12 @@ class Camera:
         reverse_z: bool = True,
         view_from_world: Optional[_Matrix] = None,
         ndc_offset: Tuple[float, float] = (0.0, 0.0),
+        guard_band: int = 0,
     ) -> "Camera":
         """A pinhole camera: full vertical field of view in degrees, image size in pixels,
-        near and far planes (far None: infinite), the depth convention, and the world-to-view
-        matrix (4 x 4, row-major, translation in the last column; identity when None).
+        near and far planes (far None: infinite), the depth convention, the world-to-view
+        matrix (4 x 4, row-major, translation in the last column; identity when None), and
+        the pixels of overscan the depth and normals hold on each side (docs/python.md).
         Raises ValueError for an unusable projection or a non-finite matrix."""
     @staticmethod
     def orthographic(
@@ -37,6 +39,7 @@ class Camera:
         reverse_z: bool = True,
         view_from_world: Optional[_Matrix] = None,
         ndc_offset: Tuple[float, float] = (0.0, 0.0),
+        guard_band: int = 0,
     ) -> "Camera":
         """A parallel projection `view_height` world units tall; otherwise as `perspective`."""
     @staticmethod
@@ -52,6 +55,9 @@ class Camera:
     @property
     def height(self) -> int:
         """Image height in pixels."""
+    @property
+    def guard_band(self) -> int:
+        """Pixels of overscan on each side of the depth and normals; the AO is width x height."""
     @property
     def projection(self) -> str:
         """`"perspective"` or `"orthographic"`."""

@@ -98,7 +98,8 @@ class Context:
         """Ambient occlusion of one view, as `aokit ao` computes it.
 
         depth: H x W (or H x W x 1) float16/32/64 array, C or Fortran order, of the size
-            `camera` gives. Linear view depth (`depth_kind="linear"`; 0, negative, NaN or inf
+            `camera` gives, with its `guard_band` on each side (the AO is of the frame
+            inside). Linear view depth (`depth_kind="linear"`; 0, negative, NaN or inf
             where there is no surface) or depth-buffer values in [0, 1] (`"ndc"`, in the
             camera's convention; the far-plane value is background).
         normals: H x W x 3 unit normals in `normal_space` ("view": x right, y up, camera
@@ -229,7 +230,8 @@ class Context:
                     f"{'cameras[%d]' % i if batch else 'camera'}: expected an aokit.Camera, "
                     f"not {type(camera).__name__}"
                 )
-            h, w = camera.height, camera.width
+            # The depth and normals hold the frame and its guard band on each side.
+            h, w = (side + 2 * camera.guard_band for side in (camera.height, camera.width))
             depth_name = f"depths[{i}]" if batch else "depth"
             normals_name = f"normals[{i}]" if batch else "normals"
             depth_bytes, _ = float32_bytes(depth, depth_name, (h, w))

@@ -36,9 +36,27 @@ impl Camera {
         })
     }
 
-    /// Width and height in pixels.
+    /// Width and height in pixels: the frame's, which the AO covers.
     pub fn size(&self) -> [u32; 2] {
         [self.file.width, self.file.height]
+    }
+
+    /// Pixels of overscan on each side of the depth and normals (camera.json's `guard_band`).
+    pub fn guard_band(&self) -> u32 {
+        self.file.guard_band
+    }
+
+    /// The size of the depth and normals: the frame's and the guard band on each side.
+    pub fn input_size(&self) -> [u32; 2] {
+        let band = self.file.guard_band.saturating_mul(2);
+        self.size().map(|side| side.saturating_add(band))
+    }
+
+    /// The projection the depth and normals were drawn with: the camera's, widened by the
+    /// guard band.
+    pub fn input_projection(&self) -> Projection {
+        self.projection
+            .with_guard_band(self.size(), self.file.guard_band)
     }
 }
 
@@ -69,7 +87,7 @@ impl Camera {
     /// A pinhole camera with a vertical field of view in degrees.
     #[staticmethod]
     #[pyo3(signature = (fov_y_deg, width, height, near = 0.1, far = None, reverse_z = true,
-                        view_from_world = None, ndc_offset = (0.0, 0.0)))]
+                        view_from_world = None, ndc_offset = (0.0, 0.0), guard_band = 0))]
     #[allow(clippy::too_many_arguments)]
     fn perspective(
         fov_y_deg: f32,
@@ -80,6 +98,7 @@ impl Camera {
         reverse_z: bool,
         view_from_world: Option<&Bound<'_, PyAny>>,
         ndc_offset: (f32, f32),
+        guard_band: u32,
     ) -> PyResult<Self> {
         let file = CameraFile {
             width,
@@ -92,7 +111,7 @@ impl Camera {
             reverse_z,
             ndc_offset: [ndc_offset.0, ndc_offset.1],
             view_from_world: matrix_rows(view_from_world)?,
-            guard_band: 0,
+            guard_band,
         };
         Self::checked(file, "camera")
     }
@@ -100,7 +119,7 @@ impl Camera {
     /// A parallel projection `view_height` world units tall.
     #[staticmethod]
     #[pyo3(signature = (view_height, width, height, near = 0.1, far = 1000.0, reverse_z = true,
-                        view_from_world = None, ndc_offset = (0.0, 0.0)))]
+                        view_from_world = None, ndc_offset = (0.0, 0.0), guard_band = 0))]
     #[allow(clippy::too_many_arguments)]
     fn orthographic(
         view_height: f32,
@@ -111,6 +130,7 @@ impl Camera {
         reverse_z: bool,
         view_from_world: Option<&Bound<'_, PyAny>>,
         ndc_offset: (f32, f32),
+        guard_band: u32,
     ) -> PyResult<Self> {
         let file = CameraFile {
             width,
@@ -123,7 +143,7 @@ impl Camera {
             reverse_z,
             ndc_offset: [ndc_offset.0, ndc_offset.1],
             view_from_world: matrix_rows(view_from_world)?,
-            guard_band: 0,
+            guard_band,
         };
         Self::checked(file, "camera")
     }
@@ -165,6 +185,12 @@ impl Camera {
     #[getter]
     fn height(&self) -> u32 {
         self.file.height
+    }
+
+    /// Pixels of overscan on each side of the depth and normals; the AO is `width` x `height`.
+    #[getter(guard_band)]
+    fn guard_band_px(&self) -> u32 {
+        self.file.guard_band
     }
 
     /// `"perspective"` or `"orthographic"`.
@@ -226,8 +252,12 @@ impl Camera {
             (_, Some(h)) => format!("orthographic ortho_height={h}"),
             _ => self.file.projection.clone(),
         };
+        let band = match self.file.guard_band {
+            0 => String::new(),
+            band => format!(", guard_band={band}"),
+        };
         format!(
-            "Camera({}x{}, {lens}, near={}, far={:?}, reverse_z={})",
+            "Camera({}x{}, {lens}, near={}, far={:?}, reverse_z={}{band})",
             self.file.width, self.file.height, self.file.near, self.file.far, self.file.reverse_z
         )
     }

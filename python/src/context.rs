@@ -48,13 +48,13 @@ impl Frame<'_> {
     /// The frame's passes as the pipeline takes them, as `aokit ao` reads them.
     fn convert(&self, conversion: Conversion) -> PyResult<Converted> {
         let (depth_name, normals_name) = self.names;
-        let size = self.camera.size();
+        let size = self.camera.input_size();
         let pixels = size[0] as usize * size[1] as usize;
         let depth = f32_values(self.depth, pixels, depth_name)?;
         let linear = linear_depth(
             depth,
             conversion.depth_kind,
-            &self.camera.projection,
+            &self.camera.input_projection(),
             size[0],
         )
         .map_err(|e| PyValueError::new_err(format!("{depth_name}: {e}")))?;
@@ -132,7 +132,7 @@ impl Context {
         for (index, frame) in frames.iter().enumerate() {
             let (linear_depth, normals) = frame.convert(conversion)?;
             let passes = Passes {
-                size: frame.camera.size(),
+                size: frame.camera.input_size(),
                 linear_depth: &linear_depth,
                 normals: normals.as_deref(),
                 back_depth: None,
@@ -160,6 +160,7 @@ impl Context {
             };
             // Where the camera moved since the last frame: the temporal filter reprojects by it.
             external.set_view_from_world(frame.camera.view_from_world);
+            external.set_guard_band(frame.camera.guard_band());
             let frame_index = first_frame.wrapping_add(index as u32);
             let run = external
                 .submit(&self.gpu, frame_index, bent_normals)

@@ -146,3 +146,30 @@ def test_a_moving_sequence_with_the_temporal_filter_matches_ao_sequence(ctx, cli
         np.stack(depths), np.stack(normals), cameras=[cameras[0]] * 3, settings=settings
     )
     assert np.abs(still[2] - ao[2]).max() > 1e-3
+
+
+def test_a_guard_band_matches_the_cli(ctx, cli, tmp_path):
+    cli("render", "--scene", "stairs", "--size", "48x32", "--gbuffer", "--guard-band", "8",
+        "--out", "g", cwd=tmp_path)
+    g = tmp_path / "g"
+    (g / "ao-settings.json").unlink()
+    camera = aokit.Camera.from_json(g / "camera.json")
+    assert (camera.width, camera.height, camera.guard_band) == (48, 32, 8)
+    depth, normals = aokit.read_depth(g / "depth.exr"), aokit.read_normals(g / "normal.exr")
+    assert depth.shape == (48, 64)
+    ao = ctx.ao(depth, normals, camera=camera)
+    assert ao.shape == (32, 48)
+    files = ["--depth", str(g / "depth.exr"), "--normals", str(g / "normal.exr")]
+    cli("ao", *files, "--camera-json", str(g / "camera.json"), "--out", "a", cwd=tmp_path)
+    np.testing.assert_array_equal(ao, aokit.read_depth(tmp_path / "a" / "ao.exr"))
+    # The band reaches the border: the inner frame's passes alone give other AO there.
+    c = camera.to_dict()
+    plain = aokit.Camera.perspective(c["fov_y_deg"], 48, 32, near=c["near"], far=c["far"],
+                                     view_from_world=c["view_from_world"])
+    cropped = ctx.ao(depth[8:-8, 8:-8], normals[8:-8, 8:-8], camera=plain)
+    assert np.abs(cropped - ao).max() > 0.01
+    built = aokit.Camera.perspective(c["fov_y_deg"], 48, 32, near=c["near"], far=c["far"],
+                                     view_from_world=c["view_from_world"], guard_band=8)
+    assert built == camera and "guard_band=8" in repr(built)
+    with pytest.raises(ValueError, match="depth: expected shape 48 x 64"):
+        ctx.ao(depth[8:-8, 8:-8], camera=camera)
