@@ -50,6 +50,8 @@ pub struct Start {
     pub window_size: [u32; 2],
     /// Internal render scale; `None`: 1 on a GPU, [`SOFTWARE_SCALE`] on a software adapter.
     pub scale: Option<f32>,
+    /// Pixels of overscan the AO reads on each side.
+    pub guard_band: u32,
     /// Show the side panel.
     pub panel: bool,
     /// Exit after this many frames.
@@ -269,6 +271,7 @@ impl Running {
             split: start.split,
             mode: start.mode,
             scale,
+            guard_band: start.guard_band,
             multi_bounce: renderer.lighting.multi_bounce,
             specular_occlusion: renderer.lighting.specular_occlusion,
             panel: start.panel,
@@ -625,6 +628,7 @@ impl Running {
         self.renderer.debug_views = self.view.mode.debug_view().into_iter().collect();
         self.renderer.lighting.multi_bounce = self.view.multi_bounce;
         self.renderer.lighting.specular_occlusion = self.view.specular_occlusion;
+        self.renderer.guard_band = self.view.guard_band;
         // The frame after the last one rendered, while the motion plays (the panel names the
         // frame on screen).
         if self.frame_index > 0 && self.view.motion.advance() {

@@ -56,6 +56,11 @@ pub struct ViewArgs {
     /// on a software adapter).
     #[arg(long, value_name = "S", value_parser = parse_scale)]
     pub scale: Option<f32>,
+    /// Pixels of overscan the AO reads on each side, as `aokit render --guard-band`: the
+    /// G-buffer is drawn that much larger, and the AO near the view's edges sees what lies just
+    /// beyond them (docs/integration.md#a-guard-band). The panel changes it.
+    #[arg(long, value_name = "PX", default_value_t = 0)]
+    pub guard_band: u32,
     /// Start with the side panel hidden (Tab shows it).
     #[arg(long)]
     pub no_panel: bool,
@@ -226,6 +231,7 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         mode: args.mode,
         window_size: args.window_size,
         scale: args.scale,
+        guard_band: args.guard_band,
         panel: !args.no_panel,
         frames,
         screenshot: args.screenshot.clone(),

@@ -30,6 +30,8 @@ pub struct ViewState {
     pub mode: DisplayMode,
     /// Internal render scale.
     pub scale: f32,
+    /// Pixels of overscan the AO reads on each side.
+    pub guard_band: u32,
     /// How the lit composite turns the AO into the occlusion of ambient diffuse light.
     pub multi_bounce: MultiBounce,
     /// How the lit composite occludes the ambient specular term.
@@ -366,6 +368,15 @@ fn side_panel(ui: &mut egui::Ui, view: &mut ViewState, actions: &mut Vec<Action>
         .on_hover_text("how the lit image occludes ambient reflections (--specular-occlusion)");
     ui.add(egui::Slider::new(&mut view.scale, 0.1..=2.0).text("internal scale"))
         .on_hover_text("fraction of the view's pixels rendered, then stretched to the view");
+    // Steps of 4: below full resolution the band must be a multiple of the scale (2 or 4).
+    ui.add(
+        egui::Slider::new(&mut view.guard_band, 0..=128)
+            .step_by(4.0)
+            .text("guard band (px)"),
+    )
+    .on_hover_text(
+        "overscan the AO reads beyond the view's edges, drawn but not shaded (--guard-band)",
+    );
     ui.label(format!(
         "rendering {}x{}{}",
         view.render_size[0],

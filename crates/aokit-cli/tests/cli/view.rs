@@ -494,6 +494,36 @@ fn the_reference_error_and_rmse_match_aokit_compare() {
     }
 }
 
+/// `--guard-band`: the viewer draws the overscan, and its AO is closer to the reference (as
+/// `aokit render --guard-band`, docs/quality.md#guard-band): 0.048 to 0.042 here.
+#[test]
+fn a_guard_band_lowers_the_error_against_the_reference() {
+    if !have_xvfb() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let rmse = |band: &str| -> f64 {
+        let shot = format!("band-{band}.png");
+        #[rustfmt::skip]
+        let out = aokit_in_xvfb(dir.path(), &[
+            "view", "--scene", "room", "--mode", "ao", "--no-panel", "--window-size", "320x180",
+            "--scale", "0.5", "--reference", "--reference-spp", "16", "--guard-band", band,
+            "--screenshot", &shot,
+        ]);
+        let stdout = ok(&out);
+        let line = stdout
+            .lines()
+            .find(|line| line.starts_with("rmse A "))
+            .unwrap_or_else(|| panic!("no RMSE: {stdout}"));
+        line.split(' ').nth(2).unwrap().parse().unwrap()
+    };
+    let (without, with) = (rmse("0"), rmse("32"));
+    assert!(
+        with < 0.95 * without,
+        "RMSE {with} with a 32 px band, {without} without"
+    );
+}
+
 /// `--animate --path orbit`: the fourth frame of an eight-frame loop is the fourth frame of
 /// `aokit render --frames 8 --path orbit --animate` (the sphere rolled, the camera turned), not
 /// its neighbours.
