@@ -3,7 +3,8 @@
 # and new kernel, raw and with each denoiser, against XeGTAO High with and without its denoiser
 # by naga and by passthrough SPIR-V, interleaved in one `aokit bench --compare` run per view and
 # size: `room` and Sponza's atrium at 1920x1080 and 3840x2160. Then, time left, the per-pass set
-# of bench/performance.sh. Builds nothing: the GPU machine runs the release binary and the
+# of bench/performance.sh, with the two options whose cost only a GPU tells (docs/quality.md):
+# `offscreen_samples=extend` and a 32 px guard band. Builds nothing: the GPU machine runs the release binary and the
 # peer's SPIR-V compiled beforehand on a machine without a GPU:
 #
 #   cargo build --release -p aokit-cli
@@ -73,6 +74,8 @@ passes=(
     "--set spatial.enabled=true --set temporal.enabled=true"
     "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true"
     "--set bent_normals=true"
+    "--set offscreen_samples=extend"
+    "--guard-band 32"
 )
 set_view sponza-atrium
 for size in "${sizes[@]}"; do

@@ -40,6 +40,8 @@ LABELS = {
     "--set resolution=half --set downsample=checkerboard --set upsample=nearest-depth":
         "half, `checkerboard` + `nearest-depth`",
     "--set bent_normals=true": "`bent_normals=true`",
+    "--set offscreen_samples=extend": "`offscreen_samples=extend`",
+    "--guard-band 32": "a 32 px guard band (`--guard-band 32`)",
     "--set normals.encoding=oct16": "`normals.encoding=oct16` (decode pass)",
     "--set normals.source=depth-5tap": "`normals.source=depth-5tap`",
 }
