@@ -15,7 +15,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
 use aokit::{AoInputs, AoPipeline, AoSettings, GpuContext, Method, NormalEncoding, Preset};
-use aokit_eval::{compare as score, surface_mask};
+use aokit_eval::{rmse, surface_mask};
 use aokit_reference::{AoOptions, Falloff, ReferenceImage};
 use aokit_scene::Renderer;
 use aokit_scene::gbuffer::GBuffer;
@@ -408,7 +408,7 @@ impl Evaluator<'_> {
             return Ok(scored.clone());
         }
         let (device, queue) = (&self.gpu.device, &self.gpu.queue);
-        let mut rmse = Vec::with_capacity(self.views.len());
+        let mut scores = Vec::with_capacity(self.views.len());
         for view in &self.views {
             let settings = candidate.apply(base, view.radius);
             self.pipeline.set_settings(device, queue, &settings)?;
@@ -432,14 +432,18 @@ impl Evaluator<'_> {
                     view.name
                 );
             }
-            let metrics = score(view.reference.size, &ao, &view.reference.ao, &view.surface);
-            rmse.push(metrics.rmse);
+            scores.push(rmse(
+                view.reference.size,
+                &ao,
+                &view.reference.ao,
+                &view.surface,
+            ));
         }
-        let mse = Fit::of(&rmse, None).mse;
+        let mse = Fit::of(&scores, None).mse;
         self.log
             .push((base.method, back_faces, preset, *candidate, mse));
-        self.scores.insert(key, rmse.clone());
-        Ok(rmse)
+        self.scores.insert(key, scores.clone());
+        Ok(scores)
     }
 }
 

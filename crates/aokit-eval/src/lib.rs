@@ -50,5 +50,5 @@ pub use float_image::FloatImage;
 pub use gif_io::{grey_to_rgba, write_gif};
 pub use inputs::{parse_depth, parse_normals, read_depth, read_normals};
 pub use masks::{depth_edge_mask, grazing_mask, surface_mask};
-pub use metrics::{Metrics, SequenceMetrics, compare};
+pub use metrics::{Metrics, SequenceMetrics, compare, rmse};
 pub use png_io::{encode_png_grey, encode_png_rgb, write_grey_png, write_rgba_png};

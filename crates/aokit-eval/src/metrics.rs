@@ -55,32 +55,16 @@ pub struct SequenceMetrics {
 /// All three slices hold `size[0] * size[1]` values, row-major from the top-left. With no masked
 /// pixels, or slices of another length, the result is [`Metrics::EMPTY`].
 pub fn compare(size: [u32; 2], ao: &[f32], reference: &[f32], mask: &[bool]) -> Metrics {
-    let n = (size[0] as usize).checked_mul(size[1] as usize);
-    if n.is_none()
-        || [ao.len(), reference.len(), mask.len()]
-            .iter()
-            .any(|&len| Some(len) != n)
-    {
+    let Some(sums) = error_sums(size, ao, reference, mask) else {
         return Metrics::EMPTY;
-    }
-    let (mut count, mut abs, mut sq, mut signed) = (0usize, 0.0f64, 0.0f64, 0.0f64);
-    for ((&a, &r), _) in ao.iter().zip(reference).zip(mask).filter(|(_, m)| **m) {
-        let e = f64::from(a) - f64::from(r);
-        count += 1;
-        abs += e.abs();
-        sq += e * e;
-        signed += e;
-    }
-    if count == 0 {
-        return Metrics::EMPTY;
-    }
-    let n = count as f64;
-    let mse = sq / n;
+    };
+    let n = sums.count as f64;
+    let mse = sums.squared / n;
     Metrics {
-        pixels: count,
-        mae: abs / n,
+        pixels: sums.count,
+        mae: sums.absolute / n,
         rmse: mse.sqrt(),
-        bias: signed / n,
+        bias: sums.signed / n,
         psnr: if mse == 0.0 {
             f64::INFINITY
         } else {
@@ -88,4 +72,52 @@ pub fn compare(size: [u32; 2], ao: &[f32], reference: &[f32], mask: &[bool]) -> 
         },
         ssim: masked_ssim(size, ao, reference, mask),
     }
+}
+
+/// [`compare`]'s RMSE alone, for a search that scores many candidates: the SSIM is most of
+/// `compare`'s time. NaN where `compare` gives [`Metrics::EMPTY`].
+///
+/// ```
+/// let ao = [0.5, 1.0, 0.0];
+/// let reference = [0.25, 1.0, 1.0];
+/// let rmse = aokit_eval::rmse([3, 1], &ao, &reference, &[true, true, false]);
+/// assert_eq!(rmse, aokit_eval::compare([3, 1], &ao, &reference, &[true, true, false]).rmse);
+/// assert!((rmse - (0.0625f64 / 2.0).sqrt()).abs() < 1e-12);
+/// ```
+pub fn rmse(size: [u32; 2], ao: &[f32], reference: &[f32], mask: &[bool]) -> f64 {
+    error_sums(size, ao, reference, mask).map_or(f64::NAN, |s| (s.squared / s.count as f64).sqrt())
+}
+
+/// The sums the statistics are made of, over the masked pixels of `ao - reference`.
+struct ErrorSums {
+    count: usize,
+    absolute: f64,
+    squared: f64,
+    signed: f64,
+}
+
+/// [`ErrorSums`] of the masked pixels; `None` with none masked or slices of another length
+/// than `size` holds.
+fn error_sums(size: [u32; 2], ao: &[f32], reference: &[f32], mask: &[bool]) -> Option<ErrorSums> {
+    let n = (size[0] as usize).checked_mul(size[1] as usize)?;
+    if [ao.len(), reference.len(), mask.len()]
+        .iter()
+        .any(|&len| len != n)
+    {
+        return None;
+    }
+    let mut sums = ErrorSums {
+        count: 0,
+        absolute: 0.0,
+        squared: 0.0,
+        signed: 0.0,
+    };
+    for ((&a, &r), _) in ao.iter().zip(reference).zip(mask).filter(|(_, m)| **m) {
+        let e = f64::from(a) - f64::from(r);
+        sums.count += 1;
+        sums.absolute += e.abs();
+        sums.squared += e * e;
+        sums.signed += e;
+    }
+    (sums.count > 0).then_some(sums)
 }
