@@ -103,6 +103,12 @@ pub struct CompareArgs {
     /// sets its passes.
     #[arg(long, value_name = "NAME=DIR")]
     pub peer: Option<PeerSpec>,
+    /// Pixels of overscan on each side (a guard band) for aokit's methods on scene views: the
+    /// G-buffer is drawn this much larger, as `aokit render --guard-band`, and the AO of the
+    /// camera's frame is scored against its reference (docs/quality.md#guard-band). The passes
+    /// of --inputs carry their band in camera.json.
+    #[arg(long, value_name = "PX", default_value_t = 0, conflicts_with_all = ["inputs", "peer"])]
+    pub guard_band: u32,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "aokit-compare")]
     pub out: PathBuf,
@@ -343,6 +349,7 @@ fn score_scene_view(
     let grazing = grazing(&references[last], &sequence_frames[last].projection);
     let first = settings_for(args, methods[0], args.presets()[0], radius)?;
     let mut renderer = Renderer::new(gpu, scene, &first)?;
+    renderer.guard_band = args.guard_band;
     let timed = renderer.enable_timing(gpu);
     let mut results = Vec::new();
     // Scoring every method at every preset takes as long as the trace on lavapipe: a bar, as

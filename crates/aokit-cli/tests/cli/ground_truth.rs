@@ -666,3 +666,37 @@ fn ao_measures_vbao_occluders_from_a_back_face_depth_file() {
         "mean AO {measured} with deep back faces, {assumed} with the assumed thickness"
     );
 }
+
+#[test]
+fn compare_with_a_guard_band_scores_the_frame_closer_to_the_reference() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let rmse = |band: &str| -> f64 {
+        let out = format!("band-{band}");
+        #[rustfmt::skip]
+        ok(d, &[
+            "compare", "--scene", "room", "--size", "96x54", "--spp", "32", "--method", "gtao",
+            "--preset", "high", "--timing-frames", "0", "--cache", "cache", "--guard-band", band,
+            "--out", &out,
+        ]);
+        let json: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(d.join(out).join("metrics.json")).unwrap(),
+        )
+        .unwrap();
+        json["results"][0]["all"]["rmse"].as_f64().unwrap()
+    };
+    // Room's walls run out of the frame: a 16 px band shows the kernel what lies beyond.
+    let (without, with) = (rmse("0"), rmse("16"));
+    assert!(
+        with < 0.95 * without,
+        "RMSE {with} with a 16 px band, {without} without"
+    );
+    // The passes of --inputs carry their own band.
+    let out = aokit(d, &["compare", "--inputs", "p", "--guard-band", "8"]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("'--inputs <DIR>' cannot be used with '--guard-band <PX>'"),
+        "{stderr}"
+    );
+}
