@@ -145,16 +145,10 @@ fn compare_on_inputs_with_a_guard_band_scores_the_inner_frame_as_ao_writes_it() 
     let metrics = json(&d.join("c/metrics.json"));
     assert_eq!(metrics["results"][0]["all"]["pixels"], surface, "{metrics}");
     // The AO scored is `aokit ao`'s on the overscan passes, the band read from camera.json.
+    #[rustfmt::skip]
     let ao = [
-        "ao",
-        "--depth",
-        "g/depth.exr",
-        "--normals",
-        "g/normal.exr",
-        "--camera-json",
-        "g/camera.json",
-        "--out",
-        "a",
+        "ao", "--depth", "g/depth.exr", "--normals", "g/normal.exr", "--camera-json",
+        "g/camera.json", "--out", "a",
     ];
     ok(&aokit(d, &ao));
     assert!(bytes(&d.join("a/ao.png")) == bytes(&d.join("c/images/g-gtao-low.png")));
