@@ -31,6 +31,9 @@ SETS = ["held-out", "tuning"]
 UNTIMED = re.compile(r"^(radius|spatial\..*|temporal\..*)$")
 # The settings group each method reads besides the shared keys (hbao-plus runs on hbao's).
 GROUP = {"hbao-plus": "hbao"}
+# Shared keys that are some methods' knob alone: every other method's preset carries the value
+# of the method that owns it (AoSettings::preset), unread.
+KNOBS = {"bias", "angle_bias"}
 COLORS = {"ssao-crytek": "#7f7f7f", "ssao": "#bcbd22", "hbao": "#1f77b4",
           "hbao-plus": "#17becf", "gtao": "#d62728", "vbao": "#ff7f0e", "sao": "#8c564b",
           "ue4-ssao": "#e377c2", "msvo": "#2ca02c"}
@@ -81,13 +84,21 @@ def same(timed, now):
     return str(timed) == now
 
 
+def knob(method):
+    """The shared key that is `method`'s knob, as `aokit tune`'s table names it (None for the
+    methods it does not tune, whose knobs keep their published values)."""
+    rows = json.load(open("bench/data/tuning.json"))["results"]
+    return next((r["knob"] for r in rows if r["method"] == method), None)
+
+
 def drift(method, timed, now):
     """The settings `method` reads that were timed with another value than today's, as
-    `key` timed (now): the shared keys and the method's own group."""
+    `key` timed (now): the shared keys (of the knobs, its own) and the method's own group."""
     group = GROUP.get(method, method).replace("-", "_") + "."
+    own = knob(method)
     return [f"`{k}` {v} (now {now[k]})" for k, v in sorted(flatten(timed).items())
             if ("." not in k or k.startswith(group)) and not UNTIMED.match(k)
-            and k in now and not same(v, now[k])]
+            and (k not in KNOBS or k == own) and k in now and not same(v, now[k])]
 
 
 def pareto(points):

@@ -75,7 +75,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     shader: shader::GTAO,
     tuned: |preset| match preset {
         Preset::Low => tuned([1, 2], 1.0, 0.0, 0.05, 1.6, 1.1),
-        Preset::Medium => tuned([2, 2], 1.0, 0.0, 0.0, 1.0, 1.1),
+        Preset::Medium => tuned([1, 4], 1.75, 0.0, 0.1, 1.25, 1.1),
         Preset::High => tuned([3, 3], 1.25, 0.0, 0.1, 1.25, 1.1),
         Preset::Ultra => tuned([3, 9], 1.0, 0.1, 0.0, 1.1, 0.8),
     },

@@ -10,8 +10,8 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     method: Method::HbaoPlus,
     shader: shader::HBAO_PLUS,
     tuned: |preset| match preset {
-        Preset::Low => tuned([2, 2], 1.75, 0.0, 0.0, 2.5, 1.5),
-        Preset::Medium => tuned([4, 2], 1.5, 0.0, 0.05, 3.5, 1.5),
+        Preset::Low => tuned([2, 2], 1.5, 0.0, 0.05, 3.5, 1.7),
+        Preset::Medium => tuned([4, 2], 1.5, 0.0, 0.05, 3.5, 1.7),
         Preset::High => tuned([6, 3], 1.5, 0.0, 0.05, 3.5, 1.5),
         Preset::Ultra => tuned([6, 9], 1.5, 0.0, 0.05, 3.5, 1.5),
     },
