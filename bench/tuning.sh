@@ -10,8 +10,8 @@
 #   bash bench/tuning.sh --into DIR       # every method and preset, the run alone, into DIR
 #   bash bench/tuning.sh --from DIR       # install a run made with --into, here
 #
-# A full run takes 20 to 30 minutes a method and preset on 2 shared cores (lavapipe), minutes
-# on a GPU. --into is for a lent GPU: it builds nothing (AOKIT names the binary, default
+# A full run took 21 minutes on 2 cores (lavapipe, 2026-11-28), a method at one preset one to
+# three. --into runs the search elsewhere, e.g. on a lent GPU: it builds nothing (AOKIT names the binary, default
 # target/release/aokit) and reads the references from AOKIT_CACHE, so that with the binary and
 # a copy of the cache carried over, the GPU spends its time searching:
 #
