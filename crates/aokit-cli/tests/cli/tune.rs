@@ -215,7 +215,8 @@ fn the_presets_are_the_tuning_table() {
         // The shipped vbao presets hold issue 4's target on the views they were tuned on:
         // within GTAO's error on every one. All but `high`, whose search (both presets running
         // the spatial filter) ends 0.0003 above GTAO's RMSE on one view, Sponza's arcade
-        // (0.0783 against 0.0780), from 0.0106 in all above it at its start (docs/tuning.md):
+        // (0.0783 against 0.0780), from 0.0106 above it, summed over the views, at its start
+        // (docs/tuning.md):
         // held there, so that it gets no further from GTAO unnoticed.
         if method == Method::Vbao {
             assert!(r["bound"].is_array(), "{what}: not held to GTAO's error");
