@@ -216,8 +216,7 @@ fn the_presets_are_the_tuning_table() {
         // within GTAO's error on every one. All but `high`, whose search (both presets running
         // the spatial filter) ends 0.0003 above GTAO's RMSE on one view, Sponza's arcade
         // (0.0783 against 0.0780), from 0.0106 above it, summed over the views, at its start
-        // (docs/tuning.md):
-        // held there, so that it gets no further from GTAO unnoticed.
+        // (docs/tuning.md): held there, so that it gets no further from GTAO unnoticed.
         if method == Method::Vbao {
             assert!(r["bound"].is_array(), "{what}: not held to GTAO's error");
             let allowed = match (preset, back_faces) {
