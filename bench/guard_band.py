@@ -1,6 +1,6 @@
 """Error in the border band against the guard band's size, and its cost (docs/quality.md,
-"Guard band"). For each view, tuning and held-out, at 480x270, GTAO `high` with its default filtering is
-rendered with guard bands of 0, 8, 16 and 32 px and of the kernel's radius in pixels (the
+"Guard band"). For each view, tuning and held-out, at 480x270, GTAO `high` with its default
+filtering is rendered with guard bands of 0, 8, 16 and 32 px and of the kernel's radius in pixels (the
 median over the border band's pixels of the AO radius projected at their depth, clamped to
 `max_radius_px`), and scored against the 512-ray reference that `aokit compare` caches: RMSE
 over the pixels showing a surface within 12 px of the image's edge, and over the whole image.
@@ -11,7 +11,7 @@ none, interleaved, on room, Sponza's atrium and a held-out view.
     python3 bench/guard_band.py [AOKIT]    # AOKIT: the binary, default target/release/aokit
 
 Prints three markdown tables. The held-out scenes come from `bash scripts/fetch-scenes.sh`.
-About 30 minutes on 2 cores with the references cached.
+About 6 minutes on 2 cores with the references cached.
 """
 
 import glob

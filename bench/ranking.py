@@ -84,18 +84,21 @@ def same(timed, now):
     return str(timed) == now
 
 
-def knob(method):
-    """The shared key that is `method`'s knob, as `aokit tune`'s table names it (None for the
-    methods it does not tune, whose knobs keep their published values)."""
+def knobs():
+    """Each tuned method's knob, as `aokit tune`'s table names it; the methods it does not tune
+    keep their published knobs."""
     rows = json.load(open("bench/data/tuning.json"))["results"]
-    return next((r["knob"] for r in rows if r["method"] == method), None)
+    return {r["method"]: r["knob"] for r in rows}
+
+
+KNOB_OF = knobs()
 
 
 def drift(method, timed, now):
     """The settings `method` reads that were timed with another value than today's, as
     `key` timed (now): the shared keys (of the knobs, its own) and the method's own group."""
     group = GROUP.get(method, method).replace("-", "_") + "."
-    own = knob(method)
+    own = KNOB_OF.get(method)
     return [f"`{k}` {v} (now {now[k]})" for k, v in sorted(flatten(timed).items())
             if ("." not in k or k.startswith(group)) and not UNTIMED.match(k)
             and (k not in KNOBS or k == own) and k in now and not same(v, now[k])]
