@@ -176,16 +176,8 @@ method_list=$(grep '^## ' "$out/metrics-by-method.md" | cut -c4-)
         echo
     done
 } > "$out/pictures.md"
-splice() { # splice MARKER FILE: replace what lies between <!-- MARKER --> and <!-- /MARKER -->
-    # in whichever of docs/methods.md and docs/methods/*.md holds the marker
-    local page
-    page=$(grep -l -F -- "<!-- $1 -->" docs/methods.md docs/methods/*.md | head -n 1)
-    [[ -n $page ]] || { echo "no marker $1" >&2; exit 1; }
-    MARKER="$1" FILE="$2" perl -0pi -e '
-        open my $f, "<", $ENV{FILE} or die; local $/; my $body = <$f>;
-        s/(<!-- \Q$ENV{MARKER}\E -->\n).*?(<!-- \/\Q$ENV{MARKER}\E -->)/$1\n$body\n$2/s
-            or die "no marker $ENV{MARKER}\n"' "$page"
-}
+# shellcheck source=../scripts/splice.sh
+source scripts/splice.sh
 for method in $method_list; do
     awk -v m="## $method" '$0 == m {on = 1; next} /^## / {on = 0} on' \
         "$out/metrics-by-method.md" > "$out/errors-$method.md"

@@ -1,6 +1,7 @@
 //! `aokit settings`: every setting with its type, range, default and the value a method, preset,
-//! settings file and `--set` give it; with `--markdown`, docs/settings.md, generated from the
-//! declarations (`aokit::settings::SETTINGS`).
+//! settings file and `--set` give it; with `--markdown`, docs/settings.md, or with `--method` too
+//! the table of that method's own keys in docs/methods/METHOD.md, generated from the declarations
+//! (`aokit::settings::SETTINGS`).
 
 use anyhow::Result;
 use aokit::settings::{SETTINGS, SettingSpec, SettingValue};
@@ -11,7 +12,9 @@ use crate::settings_args::SettingsArgs;
 
 #[derive(Args, Debug, Clone)]
 pub struct SettingsListArgs {
-    /// Print docs/settings.md instead (`aokit settings --markdown > docs/settings.md`).
+    /// Print docs/settings.md instead (`aokit settings --markdown > docs/settings.md`); with
+    /// `--method M`, the table of M's own keys in docs/methods/M.md (`bash
+    /// scripts/settings-docs.sh` writes both).
     #[arg(long)]
     pub markdown: bool,
     #[command(flatten)]
@@ -20,7 +23,13 @@ pub struct SettingsListArgs {
 
 pub fn run(args: &SettingsListArgs) -> Result<()> {
     if args.markdown {
-        print!("{}", markdown());
+        match &args.settings.method {
+            Some(name) => print!(
+                "{}",
+                method_markdown(name.parse().map_err(anyhow::Error::msg)?)
+            ),
+            None => print!("{}", markdown()),
+        }
         return Ok(());
     }
     let settings = args.settings.resolve(None)?;
@@ -122,7 +131,7 @@ const INTRO: &str = "\
 # Settings
 
 <!-- Generated from the declarations in crates/aokit/src/settings/table.rs by
-`aokit settings --markdown > docs/settings.md`: edit those, not this file. -->
+`bash scripts/settings-docs.sh` (`aokit settings --markdown`): edit those, not this file. -->
 
 Everything that shapes the AO lives in one struct, `aokit::AoSettings`. The CLI builds it in
 this order, each step overriding the last:
@@ -178,38 +187,84 @@ aokit render --scene stairs --settings gtao-soft.toml --set gtao.steps_per_side=
 ```
 ";
 
+/// A table row of `spec` with the default `value` and the note on how it varies, if any.
+fn row(spec: &SettingSpec, value: SettingValue, variation: Option<String>) -> String {
+    let mut default = show(value, true);
+    let notes: Vec<String> = spec
+        .default_note
+        .map(String::from)
+        .into_iter()
+        .chain(variation)
+        .collect();
+    if !notes.is_empty() {
+        default += &format!(" ({})", notes.join("; "));
+    }
+    let cells = [
+        format!("`{}`", spec.name),
+        spec.kind.type_name().to_string(),
+        spec.kind.range_text(),
+        default,
+        spec.help.to_string(),
+    ];
+    let mut out = String::new();
+    for cell in cells {
+        // An empty cell as `| |`, as a Markdown table writes it.
+        out += "| ";
+        if !cell.is_empty() {
+            out += &cell.replace('|', "\\|");
+            out += " ";
+        }
+    }
+    out + "|\n"
+}
+
+/// The table of `method`'s own keys on its page, docs/methods/METHOD.md: each default is the
+/// method's at the default preset, noted where its other presets differ, and the links are
+/// made relative to docs/methods/.
+pub fn method_markdown(method: Method) -> String {
+    let base = AoSettings::preset(method, Preset::default());
+    let mut out = format!(
+        "| key | type | range | default (`{}`) | meaning |\n\
+         |-----|------|-------|------------------|---------|\n",
+        Preset::default().name()
+    );
+    for spec in method.own_settings() {
+        let by_preset = Preset::ALL
+            .into_iter()
+            .any(|preset| spec.get(&AoSettings::preset(method, preset)) != spec.get(&base));
+        let variation = by_preset.then(|| "per preset, [tuning.md](tuning.md)".to_string());
+        out += &relink(&row(spec, spec.get(&base), variation).replace("[methods/", "["));
+    }
+    out
+}
+
+/// `text`'s Markdown links, relative to docs/, made relative to docs/methods/.
+fn relink(text: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(at) = rest.find("](") {
+        out += &rest[..at + 2];
+        rest = &rest[at + 2..];
+        let target = rest.split(')').next().unwrap_or("");
+        if target.starts_with("http") || target.starts_with('#') {
+            continue;
+        }
+        match target.strip_prefix("methods/") {
+            Some(local) => out += local,
+            None => out += &format!("../{target}"),
+        }
+        rest = &rest[target.len()..];
+    }
+    out + rest
+}
+
 /// docs/settings.md: the prose around a table of the declarations and one of the presets.
 pub fn markdown() -> String {
     let mut out = String::from(INTRO);
     out += "| key | type | range | default (`gtao`, `high`) | meaning |\n";
     out += "|-----|------|-------|--------------------------|---------|\n";
     for spec in SETTINGS {
-        let mut default = show(spec.default_value(), true);
-        let notes: Vec<String> = spec
-            .default_note
-            .map(String::from)
-            .into_iter()
-            .chain(variation(spec))
-            .collect();
-        if !notes.is_empty() {
-            default += &format!(" ({})", notes.join("; "));
-        }
-        let cells = [
-            format!("`{}`", spec.name),
-            spec.kind.type_name().to_string(),
-            spec.kind.range_text(),
-            default,
-            spec.help.to_string(),
-        ];
-        for cell in cells {
-            // An empty cell as `| |`, as a Markdown table writes it.
-            out += "| ";
-            if !cell.is_empty() {
-                out += &cell.replace('|', "\\|");
-                out += " ";
-            }
-        }
-        out += "|\n";
+        out += &row(spec, spec.default_value(), variation(spec));
     }
     out += AFTER_TABLE;
     out += "| preset | samples per pixel | `ssao*`/`sao`/`msvo.sample_count` \
@@ -256,6 +311,17 @@ mod tests {
         assert!(!line("gtao.slice_count").contains('*'));
         assert!(line("spatial.guided_epsilon").contains("1e-6"));
         assert_eq!(listing.lines().count(), SETTINGS.len() + 3);
+    }
+
+    #[test]
+    fn a_method_page_links_from_docs_methods() {
+        assert_eq!(
+            relink("[a](tuning.md), [b](methods/sao.md#turns), [c](https://x.org/a.md), [d](#e)"),
+            "[a](../tuning.md), [b](sao.md#turns), [c](https://x.org/a.md), [d](#e)"
+        );
+        let hbao = method_markdown(Method::Hbao);
+        assert!(hbao.contains("| `hbao.direction_count` | integer | 1..=64 | 6 (per preset"));
+        assert!(!hbao.contains("](tuning.md)"), "{hbao}");
     }
 
     #[test]

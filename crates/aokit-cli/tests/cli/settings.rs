@@ -1,8 +1,27 @@
 //! `aokit settings`: every setting's range, default and effective value, and docs/settings.md
-//! as the declarations (crates/aokit/src/settings/table.rs, and each method's in
-//! crates/aokit/src/methods/) generate it.
+//! and the method pages' tables of their own keys as the declarations
+//! (crates/aokit/src/settings/table.rs, and each method's in crates/aokit/src/methods/) generate them.
 
 use crate::common::{aokit, failure, ok};
+
+/// Fails with the first line where `docs` (the text of `what`) is not `generated`.
+fn assert_generated(what: &str, docs: &str, generated: &str) {
+    if docs != generated {
+        let (line, (old, new)) = docs
+            .lines()
+            .chain(std::iter::repeat("<end>"))
+            .zip(generated.lines().chain(std::iter::repeat("<end>")))
+            .enumerate()
+            .find(|(_, (old, new))| old != new)
+            .unwrap_or((0, ("", "")));
+        panic!(
+            "{what} is not what the settings' declarations generate; regenerate it with\n\n    \
+             bash scripts/settings-docs.sh\n\nfirst difference, line {}:\n  file:      {old}\n  \
+             generated: {new}",
+            line + 1
+        );
+    }
+}
 
 #[test]
 fn docs_settings_md_is_what_the_declarations_generate() {
@@ -10,20 +29,38 @@ fn docs_settings_md_is_what_the_declarations_generate() {
     let generated = ok(&aokit(dir.path(), &["settings", "--markdown"]));
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/settings.md");
     let docs = std::fs::read_to_string(path).unwrap();
-    if docs != generated {
-        let (line, (old, new)) = docs
-            .lines()
-            .chain(std::iter::repeat("<end of file>"))
-            .zip(generated.lines().chain(std::iter::repeat("<end of file>")))
-            .enumerate()
-            .find(|(_, (old, new))| old != new)
-            .unwrap_or((0, ("", "")));
-        panic!(
-            "docs/settings.md is not what the settings' declarations generate; regenerate it \
-             with\n\n    cargo run -p aokit-cli -- settings --markdown > docs/settings.md\n\n\
-             first difference, line {}:\n  file:      {old}\n  generated: {new}",
-            line + 1
+    assert_generated("docs/settings.md", &docs, &generated);
+}
+
+#[test]
+fn each_method_page_holds_the_table_of_its_keys_the_declarations_generate() {
+    let dir = tempfile::tempdir().unwrap();
+    for method in aokit::Method::ALL {
+        let name = method.name();
+        let generated = ok(&aokit(
+            dir.path(),
+            &["settings", "--markdown", "--method", name],
+        ));
+        assert!(
+            generated.lines().count() > 2,
+            "{name}: no keys in\n{generated}"
         );
+        let path = format!(
+            "{}/../../docs/methods/{name}.md",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        let page = std::fs::read_to_string(&path).unwrap();
+        let (start, end) = (
+            format!("<!-- settings:{name} -->"),
+            format!("<!-- /settings:{name} -->"),
+        );
+        let block = page
+            .split_once(&start)
+            .and_then(|(_, rest)| rest.split_once(&end))
+            .unwrap_or_else(|| panic!("docs/methods/{name}.md has no {start} ... {end}"))
+            .0;
+        let what = format!("the table of docs/methods/{name}.md");
+        assert_generated(&what, block.trim(), generated.trim());
     }
 }
 

@@ -96,6 +96,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: true,
     marches_slices: true,
     depth_mips: None,
+    section: "gtao",
     settings: &[
         setting!(
             gtao.slice_count,

@@ -124,6 +124,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: false,
     marches_slices: true,
     depth_mips: None,
+    section: "hbao",
     settings: &[
         setting!(
             hbao.direction_count,

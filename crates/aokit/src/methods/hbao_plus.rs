@@ -23,6 +23,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: false,
     marches_slices: true,
     depth_mips: None,
+    section: "hbao",
     // `hbao`'s settings, declared there.
     settings: &[],
 };

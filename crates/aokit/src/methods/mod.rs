@@ -78,6 +78,9 @@ pub(crate) struct MethodSpec {
     pub marches_slices: bool,
     /// The depth MIP chain its kernel reads, if any.
     pub depth_mips: Option<DepthReduction>,
+    /// The section of a settings file its own settings live in (`[gtao]`), the prefix of their
+    /// keys: `hbao-plus` runs on `hbao`'s.
+    pub section: &'static str,
     /// Its own settings' declarations.
     pub settings: &'static [SettingSpec],
 }
@@ -111,6 +114,27 @@ mod tests {
             assert_eq!(entries, 1, "{method:?} in the registry");
         }
         assert_eq!(REGISTRY.len(), Method::ALL.len());
+    }
+
+    #[test]
+    fn a_method_declares_settings_in_its_section_only() {
+        for spec in REGISTRY {
+            for setting in spec.settings {
+                assert_eq!(
+                    setting.name.split_once('.').map(|(section, _)| section),
+                    Some(spec.section),
+                    "{:?} declares {}",
+                    spec.method,
+                    setting.name
+                );
+            }
+            assert!(
+                spec.method.own_settings().next().is_some(),
+                "{:?} reads no settings of its section {}",
+                spec.method,
+                spec.section
+            );
+        }
     }
 
     #[test]

@@ -104,6 +104,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     marches_slices: false,
     // Its levels hold real depths as SAO's do: an average across an edge would occlude.
     depth_mips: Some(DepthReduction::Subsample),
+    section: "msvo",
     settings: &[
         setting!(
             msvo.sample_count,

@@ -26,6 +26,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: false,
     marches_slices: false,
     depth_mips: Some(DepthReduction::Subsample),
+    section: "sao",
     settings: &[setting!(
         sao.sample_count,
         count(),

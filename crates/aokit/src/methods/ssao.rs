@@ -69,6 +69,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: false,
     marches_slices: false,
     depth_mips: None,
+    section: "ssao",
     settings: &[setting!(
         ssao.sample_count,
         count(),

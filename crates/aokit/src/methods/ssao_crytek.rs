@@ -20,6 +20,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: false,
     marches_slices: false,
     depth_mips: None,
+    section: "ssao_crytek",
     settings: &[setting!(
         ssao_crytek.sample_count,
         count(),

@@ -83,6 +83,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: false,
     marches_slices: false,
     depth_mips: Some(DepthReduction::Furthest),
+    section: "ue4_ssao",
     settings: &[
         setting!(
             ue4_ssao.sample_count,

@@ -147,6 +147,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     bent_normals: true,
     marches_slices: true,
     depth_mips: None,
+    section: "vbao",
     settings: &[
         setting!(vbao.slice_count, count(), "slices per pixel"),
         setting!(

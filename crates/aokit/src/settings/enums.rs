@@ -100,6 +100,25 @@ impl Method {
     pub fn reads_depth_mips(self) -> bool {
         crate::methods::spec(self).depth_mips.is_some()
     }
+
+    /// The settings of the method's own section (`gtao.*` for [`Method::Gtao`]; `hbao-plus`
+    /// runs on `hbao.*`), in [`SETTINGS`]' order: what a method's settings
+    /// panel or documentation page lists beside the shared ones.
+    ///
+    /// ```
+    /// use aokit::Method;
+    /// let keys: Vec<&str> = Method::HbaoPlus.own_settings().map(|s| s.name).collect();
+    /// assert!(keys.contains(&"hbao.direction_count"));
+    /// assert!(Method::Gtao.own_settings().all(|s| s.name.starts_with("gtao.")));
+    /// ```
+    pub fn own_settings(self) -> impl Iterator<Item = &'static SettingSpec> {
+        let section = crate::methods::spec(self).section;
+        SETTINGS.iter().filter(move |s| {
+            s.name
+                .split_once('.')
+                .is_some_and(|(prefix, _)| prefix == section)
+        })
+    }
 }
 
 named_enum! {
