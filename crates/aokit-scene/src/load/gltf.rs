@@ -352,34 +352,96 @@ fn check_position_accessors(root: &::gltf::json::Root) -> Result<(), String> {
     Ok(())
 }
 
-/// Checks that `accessor`'s elements lie inside its buffer view and the view inside its buffer.
-/// Sparse accessors and accessors without a view (all zeros) have nothing to check here.
+/// Checks what the gltf crate's reader takes on trust before it slices the data: at least one
+/// element (it computes `count - 1`; 0 overflows, a panic where overflow checks are on, found by
+/// fuzzing), and the elements of the accessor and of its sparse indices and values inside their
+/// buffer views, the views inside their buffers. An accessor without a view reads as zeros.
 fn check_accessor(
     accessor: &::gltf::Accessor<'_>,
     what: &str,
     buffers: &[::gltf::buffer::Data],
 ) -> Result<(), String> {
-    let Some(view) = accessor.view() else {
-        return Ok(());
-    };
     let name = format!("accessor {} ({what})", accessor.index());
-    let buffer_len = buffers.get(view.buffer().index()).map_or(0, |d| d.0.len());
-    let view_end = view.offset() + view.length();
-    if view_end > buffer_len {
+    let count = accessor.count();
+    if count == 0 {
         return Err(format!(
-            "{name}: buffer view {} ends at byte {view_end}, past the {buffer_len} bytes of buffer {}",
+            "{name}: count 0; glTF requires at least one element"
+        ));
+    }
+    if let Some(view) = accessor.view() {
+        check_elements(
+            &name,
+            &view,
+            accessor.offset(),
+            count,
+            accessor.size(),
+            buffers,
+        )?;
+    }
+    if let Some(sparse) = accessor.sparse() {
+        let count = sparse.count();
+        if count == 0 {
+            return Err(format!(
+                "{name}: sparse count 0; glTF requires at least one element"
+            ));
+        }
+        let indices = sparse.indices();
+        let index_size = indices.index_type().size();
+        let what = format!("{name}, sparse indices");
+        check_elements(
+            &what,
+            &indices.view(),
+            indices.offset(),
+            count,
+            index_size,
+            buffers,
+        )?;
+        let values = sparse.values();
+        let what = format!("{name}, sparse values");
+        check_elements(
+            &what,
+            &values.view(),
+            values.offset(),
+            count,
+            accessor.size(),
+            buffers,
+        )?;
+    }
+    Ok(())
+}
+
+/// Checks that `count` elements of `element` bytes from `offset` in `view` lie inside it, at its
+/// stride, and the view inside its buffer.
+fn check_elements(
+    name: &str,
+    view: &::gltf::buffer::View<'_>,
+    offset: usize,
+    count: usize,
+    element: usize,
+    buffers: &[::gltf::buffer::Data],
+) -> Result<(), String> {
+    let buffer_len = buffers.get(view.buffer().index()).map_or(0, |d| d.0.len());
+    let view_end = view.offset().checked_add(view.length());
+    if view_end.is_none_or(|end| end > buffer_len) {
+        return Err(format!(
+            "{name}: buffer view {} ends past the {buffer_len} bytes of buffer {}",
             view.index(),
             view.buffer().index()
         ));
     }
-    let count = accessor.count();
-    if count == 0 {
-        return Ok(());
+    let stride = view.stride().unwrap_or(element);
+    if stride < element {
+        return Err(format!(
+            "{name}: buffer view {} has a stride of {stride} bytes, less than an element's {element}",
+            view.index()
+        ));
     }
-    let element = accessor.size();
-    let stride = view.stride().unwrap_or(element).max(element);
-    let needed = accessor.offset() + stride * (count - 1) + element;
-    if needed > view.length() {
+    let needed = stride
+        .checked_mul(count - 1)
+        .and_then(|bytes| bytes.checked_add(offset))
+        .and_then(|bytes| bytes.checked_add(element));
+    if needed.is_none_or(|needed| needed > view.length()) {
+        let needed = needed.map_or("more than 2^64".to_string(), |n| n.to_string());
         return Err(format!(
             "{name}: {count} elements need {needed} bytes, past the {} bytes of buffer view {}",
             view.length(),

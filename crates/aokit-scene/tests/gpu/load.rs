@@ -201,9 +201,9 @@ fn sponza_loads_with_its_named_cameras_and_renders() {
     }
 }
 
-/// A one-triangle glTF with its data embedded as a base64 data URI; `nodes`, `index` (the third
-/// index) and `index_count` (the index accessor's count) vary per test.
-fn triangle_gltf(dir: &Path, name: &str, nodes: &str, index: u16, index_count: u32) -> PathBuf {
+/// A one-triangle GLB; `nodes`, `index` (the third index), `index_count` (the index accessor's
+/// count) and `position_fields` (more fields of the POSITION accessor) vary per test.
+fn triangle_glb(nodes: &str, index: u16, index_count: u32, position_fields: &str) -> Vec<u8> {
     let positions: [[f32; 3]; 3] = [[0.0, 0.0, -2.0], [1.0, 0.0, -2.0], [0.0, 1.0, -2.0]];
     let indices: [u16; 3] = [0, 1, index];
     let mut bin: Vec<u8> = bytemuck::cast_slice(&positions).to_vec();
@@ -221,15 +221,20 @@ fn triangle_gltf(dir: &Path, name: &str, nodes: &str, index: u16, index_count: u
     {{"buffer": 0, "byteOffset": 36, "byteLength": 6}}
   ],
   "accessors": [
-    {{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+    {{"bufferView": 0, {position_fields}"componentType": 5126, "count": 3, "type": "VEC3",
       "min": [0, 0, -2], "max": [1, 1, -2]}},
     {{"bufferView": 1, "componentType": 5123, "count": {index_count}, "type": "SCALAR"}}
   ]
 }}"#,
         bin.len()
     );
+    glb(&json, &bin)
+}
+
+/// [`triangle_glb`] written to `dir/name`.
+fn triangle_gltf(dir: &Path, name: &str, nodes: &str, index: u16, index_count: u32) -> PathBuf {
     let path = dir.join(name);
-    std::fs::write(&path, glb(&json, &bin)).unwrap();
+    std::fs::write(&path, triangle_glb(nodes, index, index_count, "")).unwrap();
     path
 }
 
@@ -460,6 +465,36 @@ fn gltf_positions_of_another_type_are_refused() {
     assert!(
         err.contains("ints.glb")
             && err.contains("accessor 0 (POSITION) holds U32 Vec3, not float VEC3"),
+        "{err}"
+    );
+}
+
+/// Found by the `gltf` fuzz target (fuzz/): an accessor of count 0, which glTF forbids, made
+/// the gltf crate's reader compute `count - 1` (a panic where overflow checks are on), as a
+/// sparse accessor's count 0 does. Both are refused, naming the accessor.
+#[test]
+fn gltf_accessors_of_no_elements_are_refused() {
+    let nodes = r#"[{"mesh": 0}]"#;
+    let bytes = triangle_glb(nodes, 2, 3, "");
+    let from = br#""count": 3, "type": "VEC3""#;
+    let at = bytes.windows(from.len()).position(|w| w == from).unwrap();
+    let mut empty = bytes.clone();
+    // The same length, so the GLB's chunk lengths stay right.
+    empty[at..at + from.len()].copy_from_slice(br#""count": 0, "type": "VEC3""#);
+    let err = aokit_scene::load::gltf::load_slice("empty.glb", &empty)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("empty.glb") && err.contains("accessor 0 (POSITION): count 0"),
+        "{err}"
+    );
+    let sparse = r#""sparse": {"count": 0, "indices": {"bufferView": 1, "componentType": 5123},
+        "values": {"bufferView": 0}}, "#;
+    let err = aokit_scene::load::gltf::load_slice("sparse.glb", &triangle_glb(nodes, 2, 3, sparse))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("sparse.glb") && err.contains("count 0"),
         "{err}"
     );
 }
