@@ -400,25 +400,46 @@ fn the_lean_slice_march_gives_the_general_marchs_ao_for_every_slice_method() {
         .iter()
         .flat_map(|v| slice_methods.clone().map(move |m| (v, m)))
     {
-        for (preset, depth_mips, bent_normals) in [
-            (Preset::Low, DepthMips::Off, false),
-            (Preset::High, DepthMips::Off, method.has_bent_normals()),
-            (Preset::High, DepthMips::Fp32, false),
-            (Preset::Ultra, DepthMips::Off, false),
+        let unoccluded = OffscreenSamples::Unoccluded;
+        for (preset, depth_mips, bent_normals, offscreen_samples) in [
+            (Preset::Low, DepthMips::Off, false, unoccluded),
+            (
+                Preset::High,
+                DepthMips::Off,
+                method.has_bent_normals(),
+                unoccluded,
+            ),
+            (Preset::High, DepthMips::Off, false, OffscreenSamples::Clamp),
+            (
+                Preset::High,
+                DepthMips::Off,
+                false,
+                OffscreenSamples::Extend,
+            ),
+            (Preset::High, DepthMips::Fp32, false, unoccluded),
+            (
+                Preset::High,
+                DepthMips::Fp32,
+                false,
+                OffscreenSamples::Clamp,
+            ),
+            (Preset::Ultra, DepthMips::Off, false, unoccluded),
         ] {
             let at = |slice_march| AoSettings {
                 slice_march,
                 depth_mips,
                 bent_normals,
+                offscreen_samples,
                 ..scene_settings(scene, method, preset)
             };
             let view = format!(
-                "{} / {} / {} / {} / mips {}",
+                "{} / {} / {} / {} / mips {} / off screen {}",
                 method.name(),
                 scene.name,
                 camera.name,
                 preset.name(),
-                depth_mips.name()
+                depth_mips.name(),
+                offscreen_samples.name()
             );
             let lean = render(&gpu, scene, camera, &at(SliceMarch::Lean));
             let general = render(&gpu, scene, camera, &at(SliceMarch::General));
@@ -472,18 +493,18 @@ fn continuing_the_edges_surface_off_screen_lowers_the_border_bands_error() {
                 offscreen_samples,
                 ..scene_settings(&scene, method, Preset::High)
             };
-            let extended = render(&gpu, &scene, camera, &at(OffscreenSamples::Extend));
             let open = render(&gpu, &scene, camera, &at(OffscreenSamples::Unoccluded));
-            let view = format!("{} / {}", method.name(), scene.name);
-            assert_in_range_with_sky_at_one(&extended, &view);
-            let (with, without) = (
-                border_rmse(&extended.ao, &traced, 12),
-                border_rmse(&open.ao, &traced, 12),
-            );
-            assert!(
-                with < 0.95 * without,
-                "{view}: border RMSE {with} extended, {without} unoccluded"
-            );
+            let without = border_rmse(&open.ao, &traced, 12);
+            for offscreen in [OffscreenSamples::Extend, OffscreenSamples::Clamp] {
+                let continued = render(&gpu, &scene, camera, &at(offscreen));
+                let view = format!("{} / {} / {}", method.name(), scene.name, offscreen.name());
+                assert_in_range_with_sky_at_one(&continued, &view);
+                let with = border_rmse(&continued.ao, &traced, 12);
+                assert!(
+                    with < 0.95 * without,
+                    "{view}: border RMSE {with}, {without} unoccluded"
+                );
+            }
         }
     }
 }

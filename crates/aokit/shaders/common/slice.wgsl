@@ -44,6 +44,12 @@ fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f3
     } else {
         seen = surface_at(q, level);
     }
+    return place_sample(seen, q, p, n);
+}
+
+// slice_sample's placement of the surface `seen` at `q`: the offset from `p`, w = 0 where
+// there is no surface.
+fn place_sample(seen: SeenSurface, q: vec2<f32>, p: vec3<f32>, n: vec3<f32>) -> vec4<f32> {
     if seen.depth == NO_SURFACE {
         return vec4<f32>(0.0);
     }
@@ -69,9 +75,15 @@ fn slice_sample(q: vec2<f32>, level: u32, p: vec3<f32>, n: vec3<f32>) -> vec4<f3
 }
 
 // What a sample that lands off screen reads (AoSettings::offscreen_samples), compiled into
-// each kernel like NEAREST_DEPTH: true continues the surface at the screen's edge
-// (edge_plane_sample), false drops the sample, as if the scene were open beyond the edge.
-override EXTEND_OFFSCREEN: bool = false;
+// each kernel like NEAREST_DEPTH: nothing, as if the scene were open beyond the edge
+// (OFFSCREEN_UNOCCLUDED); the surface at the screen's edge continued (OFFSCREEN_EXTEND,
+// edge_plane_sample); or the depth of the last texel on screen, as a clamping sampler reads
+// it, at the sample's own position (OFFSCREEN_CLAMP): a wall at the edge's depth, what XeGTAO
+// samples, at no cost.
+const OFFSCREEN_UNOCCLUDED: u32 = 0u;
+const OFFSCREEN_EXTEND: u32 = 1u;
+const OFFSCREEN_CLAMP: u32 = 2u;
+override OFFSCREEN: u32 = OFFSCREEN_UNOCCLUDED;
 
 // Distance in pixels from `center` along the screen direction `dir` to the last texel centre
 // on screen: where a slice leaving the screen last sees the scene.
@@ -191,18 +203,26 @@ fn side_position(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec2<
 
 // The sample of a step on one side of a slice (side = +1 towards +omega, -1 away): the offset
 // from the shaded point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen
-// without EXTEND_OFFSCREEN, no surface, or slid past the pixel onto the other half of the slice).
+// with OFFSCREEN_UNOCCLUDED, no surface, or slid past the pixel onto the other half of the slice).
 fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f32> {
     let q = side_position(s, slice, side, distance_px);
     var sample: vec4<f32>;
     if any(q < vec2<f32>(0.0)) || any(q >= view.size) {
-        if !EXTEND_OFFSCREEN {
+        if OFFSCREEN == OFFSCREEN_UNOCCLUDED {
             return vec4<f32>(0.0);
         }
-        let dir = side * slice.omega;
-        let plane = edge_plane(s.center + dir * edge_distance(s.center, dir));
-        let near = view_position(q, 0.0);
-        sample = edge_plane_sample(plane, near, view_position(q, 1.0) - near, s.p);
+        if OFFSCREEN == OFFSCREEN_EXTEND {
+            let dir = side * slice.omega;
+            let plane = edge_plane(s.center + dir * edge_distance(s.center, dir));
+            let near = view_position(q, 0.0);
+            sample = edge_plane_sample(plane, near, view_position(q, 1.0) - near, s.p);
+        } else {
+            // The last texel on screen's depth, read as if it were the off-screen texel's.
+            var seen = nearest_surface(clamp(q, vec2<f32>(0.0), view.size - 1.0),
+                                       mip_level(distance_px));
+            seen.at = floor(q) + 0.5;
+            sample = place_sample(seen, q, s.p, s.n);
+        }
     } else {
         sample = slice_sample(q, mip_level(distance_px), s.p, s.n);
     }
@@ -249,7 +269,7 @@ struct SideMarch {
     // The ray's change per pixel of screen offset, times n.xy: moves the tangent plane's
     // crossing from the sample to the texel centre the depth was read at.
     pixel_n: vec2<f32>,
-    // With LEAN and EXTEND_OFFSCREEN, where the side reaches past the screen's edge within the
+    // With LEAN and OFFSCREEN_EXTEND, where the side reaches past the screen's edge within the
     // radius: the surface at the edge (edge_plane), read once for all its steps. Depth
     // NO_SURFACE otherwise.
     edge: EdgePlane,
@@ -267,7 +287,7 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
     m.along_n = select(dot(m.ray, s.n.xy), 0.0, ORTHOGRAPHIC) - s.n.z;
     m.along_n_step = select(dot(m.ray_step, s.n.xy), 0.0, ORTHOGRAPHIC);
     m.pixel_n = pixel_to_ray * s.n.xy;
-    if EXTEND_OFFSCREEN && LEAN {
+    if OFFSCREEN == OFFSCREEN_EXTEND && LEAN {
         let edge = edge_distance(s.center, m.dir);
         if edge < s.radius_px {
             m.edge = edge_plane(s.center + m.dir * edge);
@@ -277,11 +297,11 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
 }
 
 // side_sample for the lean march, the same sample without branches: the offset from the shaded
-// point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen without
-// EXTEND_OFFSCREEN, no surface, or on the other half of the slice). The nearest texel's point
-// is moved onto the view ray through the sample as slice_sample does; the fetch goes through
-// the clamping sampler, so a sample off screen reads the edge and only its weight says it is
-// not there. With EXTEND_OFFSCREEN one off
+// point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen with
+// OFFSCREEN_UNOCCLUDED, no surface, or on the other half of the slice). The nearest texel's
+// point is moved onto the view ray through the sample as slice_sample does; the fetch goes
+// through the clamping sampler, so a sample off screen reads the edge's depth, which
+// OFFSCREEN_CLAMP keeps and OFFSCREEN_UNOCCLUDED weighs 0. With OFFSCREEN_EXTEND one off
 // screen lies on the side's edge plane instead (read once in begin_side), selected without a
 // branch: a few multiply-adds and a division.
 fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) -> vec4<f32> {
@@ -295,7 +315,8 @@ fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) 
     } else {
         let on_screen = clamp(q, vec2<f32>(0.0), view.size - 1.0);
         let seen = nearest_surface(on_screen, mip_level(distance_px));
-        texel = seen.at;
+        // Off screen, the edge's depth as if it were the off-screen texel's (side_sample).
+        texel = select(seen.at, floor(q) + 0.5, !inside);
         depth = seen.depth;
     }
     let ray = m.ray + m.ray_step * distance_px;
@@ -306,8 +327,9 @@ fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) 
     let d = clamp(select(depth, crossing, crossing > 0.0), depth * (1.0 / (1.0 + DEPTH_EDGE)),
                   2.0 * depth);
     var sample = vec4<f32>(vec3<f32>(select(ray * d, ray, ORTHOGRAPHIC), -d) - s.p,
-                           select(0.0, 1.0, inside && depth != NO_SURFACE));
-    if EXTEND_OFFSCREEN {
+                           select(0.0, 1.0, (inside || OFFSCREEN == OFFSCREEN_CLAMP)
+                                            && depth != NO_SURFACE));
+    if OFFSCREEN == OFFSCREEN_EXTEND {
         let near = select(vec3<f32>(0.0), vec3<f32>(ray, 0.0), ORTHOGRAPHIC);
         let along = select(vec3<f32>(ray, -1.0), vec3<f32>(0.0, 0.0, -1.0), ORTHOGRAPHIC);
         sample = select(edge_plane_sample(m.edge, near, along, s.p), sample, inside);

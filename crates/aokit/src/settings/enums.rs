@@ -621,6 +621,9 @@ named_enum! {
     ///     ..AoSettings::preset(Method::Gtao, Preset::High)
     /// };
     /// settings.validate()?;
+    /// // Or carry the edge's depth on, as a clamping sampler does: at no cost.
+    /// let clamped = AoSettings { offscreen_samples: OffscreenSamples::Clamp, ..settings };
+    /// clamped.validate()?;
     /// assert_eq!(AoSettings::default().offscreen_samples, OffscreenSamples::Unoccluded);
     /// assert_eq!("unoccluded".parse::<OffscreenSamples>(), Ok(OffscreenSamples::Unoccluded));
     /// # Ok::<(), aokit::SettingsError>(())
@@ -637,6 +640,12 @@ named_enum! {
         /// bright wherever the geometry continues. The default.
         #[default]
         Unoccluded = "unoccluded",
+        /// The depth of the last texel on screen, at the sample's own position: what a
+        /// clamping sampler reads, so a wall at the edge's depth (XeGTAO's samples off screen).
+        /// No more work than dropping the sample. It took the 12 px border band's RMSE 8 to 12%
+        /// lower on the held-out views and 13 to 23% on the tuning views: from a little over half
+        /// (GTAO held out) to all (HBAO+) of what `Extend` gains there.
+        Clamp = "clamp",
     }
 }
 

@@ -104,8 +104,7 @@ impl Variant {
             constants.push(("NEAREST_DEPTH", f64::from(u8::from(nearest))));
         }
         if let Some(offscreen) = self.offscreen_samples {
-            let extend = offscreen == OffscreenSamples::Extend;
-            constants.push(("EXTEND_OFFSCREEN", f64::from(u8::from(extend))));
+            constants.push(("OFFSCREEN", f64::from(offscreen_code(offscreen))));
         }
         if let Some(lean) = self.lean {
             constants.extend([
@@ -117,6 +116,15 @@ impl Variant {
             ]);
         }
         constants
+    }
+}
+
+/// common/slice.wgsl's `OFFSCREEN` code of `offscreen` (its `OFFSCREEN_*` constants).
+fn offscreen_code(offscreen: OffscreenSamples) -> u32 {
+    match offscreen {
+        OffscreenSamples::Unoccluded => 0,
+        OffscreenSamples::Extend => 1,
+        OffscreenSamples::Clamp => 2,
     }
 }
 
@@ -353,19 +361,26 @@ mod tests {
     #[test]
     fn off_screen_samples_compile_into_the_slice_kernels_only() {
         // The override exists in common/slice.wgsl only: a kernel without it would refuse it.
-        let extend = |settings: &AoSettings| {
+        let code = |settings: &AoSettings| {
             let constants = Variant::of(settings).constants();
             constants
                 .into_iter()
-                .find(|(name, _)| *name == "EXTEND_OFFSCREEN")
+                .find(|(name, _)| *name == "OFFSCREEN")
                 .map(|(_, value)| value)
         };
         let mut settings = AoSettings::preset(Method::Gtao, crate::Preset::High);
-        assert_eq!(extend(&settings), Some(0.0));
-        settings.offscreen_samples = OffscreenSamples::Extend;
-        assert_eq!(extend(&settings), Some(1.0));
+        let module = shader::method(Method::Gtao).validate().unwrap();
+        for (offscreen, name) in [
+            (OffscreenSamples::Unoccluded, "OFFSCREEN_UNOCCLUDED"),
+            (OffscreenSamples::Extend, "OFFSCREEN_EXTEND"),
+            (OffscreenSamples::Clamp, "OFFSCREEN_CLAMP"),
+        ] {
+            settings.offscreen_samples = offscreen;
+            let wgsl = shader::u32_constant(&module, name).unwrap();
+            assert_eq!(code(&settings), Some(f64::from(wgsl)), "{name}");
+        }
         settings.method = Method::Ssao;
-        assert_eq!(extend(&settings), None);
+        assert_eq!(code(&settings), None);
     }
 
     #[test]
