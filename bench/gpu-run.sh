@@ -39,6 +39,8 @@ configurations=(
     "$gtao --set spatial.enabled=true --set spatial.kind=bilateral"
     "$gtao --set spatial.enabled=true --set spatial.kind=edges"
     "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=0"
+    # The normal weight by a log2 and an exp2, as before the power of two became squarings.
+    "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=16.0001"
 )
 # Each peer configuration runs twice where the driver takes the SPIR-V passed through: through
 # naga and passed through (docs/peers.md). A driver that fails to compile it loses the device

@@ -99,6 +99,12 @@ fn the_gpu_filter_matches_the_cpu_one_on_rendered_frames() {
             normal_power: 2.0,
             ..base
         },
+        // Not a power of two: a log2 and the exp2, where the others are squarings.
+        SpatialSettings {
+            radius: 3,
+            normal_power: 12.0,
+            ..base
+        },
     ];
     gpu_matches_cpu(&filters, |spatial, raw| {
         let horizontal = filter_axis(spatial, raw, &raw.ao, 0);

@@ -83,14 +83,16 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         } else {
             log2_w -= 0.5 * LOG2_E * r * r;
         }
+        var w = spatial_weight;
         if NORMAL_WEIGHT {
             let facing = max(dot(unpack_oct32(packed_normals[k]), n0), 0.0);
             // A neighbour facing away weighs nothing (log2(0) is left to the implementation).
             kept = kept && facing > 0.0;
-            log2_w += spatial.normal_power * log2(facing);
+            let normal = normal_weight(facing);
+            log2_w += normal.log2;
+            w *= normal.factor;
         }
-        var w = spatial_weight;
-        if DEPTH_WEIGHT != DEPTH_THRESHOLD || NORMAL_WEIGHT {
+        if DEPTH_WEIGHT != DEPTH_THRESHOLD || (NORMAL_WEIGHT && NORMAL_SQUARINGS < 0) {
             w *= exp2(log2_w);
         }
         w = select(0.0, w, kept);

@@ -60,13 +60,16 @@ fn neighbour_weight(offset: f32, depth: f32, centre_depth: f32, relative_scale: 
     } else {
         log2_w -= 0.5 * LOG2_E * r * r;
     }
+    var factor = 1.0;
     if NORMAL_WEIGHT {
         let facing = max(dot(n, n0), 0.0);
         // A neighbour facing away weighs nothing (log2(0) is left to the implementation).
         kept = kept && facing > 0.0;
-        log2_w += spatial.normal_power * log2(facing);
+        let normal = normal_weight(facing);
+        log2_w += normal.log2;
+        factor = normal.factor;
     }
-    return select(0.0, exp2(log2_w), kept);
+    return select(0.0, exp2(log2_w) * factor, kept);
 }
 
 @compute @workgroup_size(GROUP_WIDTH, GROUP_HEIGHT)

@@ -26,13 +26,16 @@ pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 7] {
     ]
 }
 
+/// What a kernel compiles in (the shader's `override`s): the depth weight's kind, whether
+/// normals weigh in, and the normal power's squarings.
+type Variant = (DepthWeight, bool, i32);
+
 /// The filter's kernels and its settings buffer.
 pub struct EdgeFilterPass {
-    /// Per depth weight and whether normals weigh in (the shader's overrides), compiled the
-    /// first time settings of the edges kind ask for them.
-    kernels: HashMap<(DepthWeight, bool), ComputeKernel>,
+    /// Per variant, compiled the first time settings of the edges kind ask for it.
+    kernels: HashMap<Variant, ComputeKernel>,
     /// The variant of the settings last given, when they select the edges kind.
-    current: Option<(DepthWeight, bool)>,
+    current: Option<Variant>,
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
 }
@@ -63,21 +66,25 @@ impl EdgeFilterPass {
         settings: &SpatialSettings,
     ) {
         let enabled = settings.enabled && settings.kind == SpatialKind::Edges;
-        self.current = enabled.then_some((settings.depth_weight, settings.normal_power > 0.0));
-        if let Some((depth_weight, normal_weight)) = self.current {
-            self.kernels
-                .entry((depth_weight, normal_weight))
-                .or_insert_with(|| {
-                    ComputeKernel::with_constants(
-                        device,
-                        &shader::EDGE_FILTER,
-                        &layout(),
-                        &[
-                            ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
-                            ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
-                        ],
-                    )
-                });
+        self.current = enabled.then_some((
+            settings.depth_weight,
+            settings.normal_power > 0.0,
+            super::normal_squarings(settings.normal_power),
+        ));
+        if let Some(variant) = self.current {
+            let (depth_weight, normal_weight, squarings) = variant;
+            self.kernels.entry(variant).or_insert_with(|| {
+                ComputeKernel::with_constants(
+                    device,
+                    &shader::EDGE_FILTER,
+                    &layout(),
+                    &[
+                        ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
+                        ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
+                        ("NORMAL_SQUARINGS", f64::from(squarings)),
+                    ],
+                )
+            });
         }
         queue.write_buffer(
             &self.uniforms,
@@ -166,6 +173,33 @@ mod tests {
                 ..edges
             },
         ]
+    }
+
+    #[test]
+    fn a_normal_power_of_two_weighs_as_its_logarithm_does() {
+        // Normals tilted from pixel to pixel, so that the normal weight differs from 1.
+        let mut tilted = image(|near, x, y| if near { 0.3 } else { 0.6 } + 0.2 * hash(x, y));
+        for (i, n) in tilted.normals.iter_mut().enumerate() {
+            let (x, y) = (i as u32 % SIZE[0], i as u32 / SIZE[0]);
+            let tilt = glam::Vec3::new(hash(x, y) - 0.5, hash(y, x) - 0.5, 0.0);
+            *n = (*n + 0.6 * tilt).normalize();
+        }
+        let at = |normal_power| SpatialSettings {
+            normal_power,
+            ..variants()[0]
+        };
+        // 16 compiles to four squarings, 16.0001 to a log2 and an exp2.
+        let squared = filter(&gpu(), &at(16.0), &tilted);
+        let logarithm = filter(&gpu(), &at(16.0001), &tilted);
+        let without = filter(&gpu(), &at(0.0), &tilted);
+        let largest = |a: &[f32], b: &[f32]| {
+            a.iter()
+                .zip(b)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0f32, f32::max)
+        };
+        assert!(largest(&squared, &logarithm) < 1e-4);
+        assert!(largest(&squared, &without) > 1e-2);
     }
 
     #[test]

@@ -17,9 +17,9 @@ use crate::uniforms::SpatialUniforms;
 // move 28 bytes a pixel instead of 36, but a half overflows past a depth of 65504 units, which
 // scenes in millimetres reach (docs/denoise.md).
 
-/// What the kernels compile in (the shader's `override`s): the radius, the depth weight's kind
-/// and whether normals weigh in.
-type Variant = (u32, DepthWeight, bool);
+/// What the kernels compile in (the shader's `override`s): the radius, the depth weight's kind,
+/// whether normals weigh in and the normal power's squarings.
+type Variant = (u32, DepthWeight, bool, i32);
 
 /// Where the vertical pass writes the filtered AO.
 #[derive(Clone, Copy, Debug)]
@@ -118,13 +118,15 @@ impl SpatialFilterPass {
             settings.radius,
             settings.depth_weight,
             settings.normal_power > 0.0,
+            super::normal_squarings(settings.normal_power),
         ));
         if let Some(variant) = self.current {
-            let (radius, depth_weight, normal_weight) = variant;
+            let (radius, depth_weight, normal_weight, squarings) = variant;
             let constants = [
                 ("RADIUS", f64::from(radius)),
                 ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
                 ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
+                ("NORMAL_SQUARINGS", f64::from(squarings)),
             ];
             let pair = self.pair;
             self.kernels.entry(variant).or_insert_with(|| {
