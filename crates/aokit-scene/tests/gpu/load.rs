@@ -231,6 +231,23 @@ fn triangle_glb(nodes: &str, index: u16, index_count: u32, position_fields: &str
     glb(&json, &bin)
 }
 
+/// The default [`triangle_glb`] with the bytes `from` replaced by `to`, of the same length so
+/// that the GLB's chunk lengths still hold.
+fn triangle_patched(from: &[u8], to: &[u8]) -> Vec<u8> {
+    assert_eq!(from.len(), to.len());
+    let mut bytes = triangle_glb(r#"[{"mesh": 0}]"#, 2, 3, "");
+    let at = bytes.windows(from.len()).position(|w| w == from).unwrap();
+    bytes[at..at + from.len()].copy_from_slice(to);
+    bytes
+}
+
+/// The error loading the glTF `bytes` under the file name `name` gives.
+fn gltf_error(name: &str, bytes: &[u8]) -> String {
+    aokit_scene::load::gltf::load_slice(name, bytes)
+        .unwrap_err()
+        .to_string()
+}
+
 /// [`triangle_glb`] written to `dir/name`.
 fn triangle_gltf(dir: &Path, name: &str, nodes: &str, index: u16, index_count: u32) -> PathBuf {
     let path = dir.join(name);
@@ -374,21 +391,13 @@ fn positions_too_far_apart_for_f32_are_refused() {
 /// gltf crate's reader. They are refused, naming the accessor.
 #[test]
 fn gltf_indices_of_a_signed_type_are_refused() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = triangle_gltf(dir.path(), "tri.glb", r#"[{"mesh": 0}]"#, 2, 3);
-    let bytes = std::fs::read(&path).unwrap();
-    // The same length: the GLB's chunk lengths still hold.
-    let at = bytes.windows(4).position(|w| w == b"5123").unwrap();
-    let mut signed = bytes.clone();
-    signed[at..at + 4].copy_from_slice(b"5122");
-    let err = aokit_scene::load::gltf::load_slice("signed.glb", &signed)
-        .unwrap_err()
-        .to_string();
+    let err = gltf_error("signed.glb", &triangle_patched(b"5123", b"5122"));
     assert!(
         err.contains("signed.glb") && err.contains("accessor 1 (indices) holds I16 Scalar"),
         "{err}"
     );
     // Unsigned shorts, as written, load.
+    let bytes = triangle_glb(r#"[{"mesh": 0}]"#, 2, 3, "");
     assert!(aokit_scene::load::gltf::load_slice("tri.glb", &bytes).is_ok());
 }
 
@@ -452,16 +461,8 @@ fn gltf_buffer_uri_decoding_to_non_utf8_is_refused() {
 /// positions without one). It is refused, naming the accessor and its type.
 #[test]
 fn gltf_positions_of_another_type_are_refused() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = triangle_gltf(dir.path(), "tri.glb", r#"[{"mesh": 0}]"#, 2, 3);
-    let bytes = std::fs::read(&path).unwrap();
-    // componentType 5126 (float) to 5125 (unsigned int): the same length.
-    let at = bytes.windows(4).position(|w| w == b"5126").unwrap();
-    let mut ints = bytes.clone();
-    ints[at..at + 4].copy_from_slice(b"5125");
-    let err = aokit_scene::load::gltf::load_slice("ints.glb", &ints)
-        .unwrap_err()
-        .to_string();
+    // componentType 5126 (float) to 5125 (unsigned int).
+    let err = gltf_error("ints.glb", &triangle_patched(b"5126", b"5125"));
     assert!(
         err.contains("ints.glb")
             && err.contains("accessor 0 (POSITION) holds U32 Vec3, not float VEC3"),
@@ -474,25 +475,21 @@ fn gltf_positions_of_another_type_are_refused() {
 /// sparse accessor's count 0 does. Both are refused, naming the accessor.
 #[test]
 fn gltf_accessors_of_no_elements_are_refused() {
-    let nodes = r#"[{"mesh": 0}]"#;
-    let bytes = triangle_glb(nodes, 2, 3, "");
-    let from = br#""count": 3, "type": "VEC3""#;
-    let at = bytes.windows(from.len()).position(|w| w == from).unwrap();
-    let mut empty = bytes.clone();
-    // The same length, so the GLB's chunk lengths stay right.
-    empty[at..at + from.len()].copy_from_slice(br#""count": 0, "type": "VEC3""#);
-    let err = aokit_scene::load::gltf::load_slice("empty.glb", &empty)
-        .unwrap_err()
-        .to_string();
+    let empty = triangle_patched(
+        br#""count": 3, "type": "VEC3""#,
+        br#""count": 0, "type": "VEC3""#,
+    );
+    let err = gltf_error("empty.glb", &empty);
     assert!(
         err.contains("empty.glb") && err.contains("accessor 0 (POSITION): count 0"),
         "{err}"
     );
     let sparse = r#""sparse": {"count": 0, "indices": {"bufferView": 1, "componentType": 5123},
         "values": {"bufferView": 0}}, "#;
-    let err = aokit_scene::load::gltf::load_slice("sparse.glb", &triangle_glb(nodes, 2, 3, sparse))
-        .unwrap_err()
-        .to_string();
+    let err = gltf_error(
+        "sparse.glb",
+        &triangle_glb(r#"[{"mesh": 0}]"#, 2, 3, sparse),
+    );
     assert!(
         err.contains("sparse.glb") && err.contains("count 0"),
         "{err}"
