@@ -1,8 +1,8 @@
 """Error of aokit's GTAO `high` beside XeGTAO High's (docs/performance.md, "Side by side with
 XeGTAO"): `aokit compare --peer` on the seven tuning views at 480x270 against the 512-ray
 references, raw and denoised, aokit with its off-screen samples unoccluded (the default) and
-with `offscreen_samples=clamp` (what XeGTAO's clamping sampler does), and with each of its
-spatial filters' kinds.
+with `offscreen_samples=clamp` (the texel XeGTAO's clamping sampler reads, at its height), and
+with each of its spatial filters' kinds.
 
     python3 bench/peer_errors.py PEER [AOKIT]
 

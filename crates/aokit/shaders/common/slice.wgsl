@@ -77,9 +77,12 @@ fn place_sample(seen: SeenSurface, q: vec2<f32>, p: vec3<f32>, n: vec3<f32>) -> 
 // What a sample that lands off screen reads (AoSettings::offscreen_samples), compiled into
 // each kernel like NEAREST_DEPTH: nothing, as if the scene were open beyond the edge
 // (OFFSCREEN_UNOCCLUDED); the surface at the screen's edge continued (OFFSCREEN_EXTEND,
-// edge_plane_sample); or the depth of the last texel on screen, as a clamping sampler reads
-// it, at the sample's own position (OFFSCREEN_CLAMP): a wall at the edge's depth, what XeGTAO
-// samples, at no cost.
+// edge_plane_sample); or the last texel on screen, as a clamping sampler reads it, placed as any
+// nearest texel is (OFFSCREEN_CLAMP, slice_sample): on the sample's view ray, at that texel's
+// height above the pixel's tangent plane, so that an open plane stays open and a rise at the
+// edge goes on at its height, at the cost of a clamp. (Taking the edge's depth at the sample's
+// position, as XeGTAO's clamping sampler does, raises a receding plane into a wall: an open
+// plane seen orthographically read AO 0.63 at its far edge.)
 const OFFSCREEN_UNOCCLUDED: u32 = 0u;
 const OFFSCREEN_EXTEND: u32 = 1u;
 const OFFSCREEN_CLAMP: u32 = 2u;
@@ -217,11 +220,8 @@ fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f3
             let near = view_position(q, 0.0);
             sample = edge_plane_sample(plane, near, view_position(q, 1.0) - near, s.p);
         } else {
-            // The last texel on screen's depth, read as if it were the off-screen texel's.
-            var seen = nearest_surface(clamp(q, vec2<f32>(0.0), view.size - 1.0),
-                                       mip_level(distance_px));
-            seen.at = floor(q) + 0.5;
-            sample = place_sample(seen, q, s.p, s.n);
+            let edge = clamp(q, vec2<f32>(0.0), view.size - 1.0);
+            sample = place_sample(nearest_surface(edge, mip_level(distance_px)), q, s.p, s.n);
         }
     } else {
         sample = slice_sample(q, mip_level(distance_px), s.p, s.n);
@@ -300,8 +300,8 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
 // point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen with
 // OFFSCREEN_UNOCCLUDED, no surface, or on the other half of the slice). The nearest texel's
 // point is moved onto the view ray through the sample as slice_sample does; the fetch goes
-// through the clamping sampler, so a sample off screen reads the edge's depth, which
-// OFFSCREEN_CLAMP keeps and OFFSCREEN_UNOCCLUDED weighs 0. With OFFSCREEN_EXTEND one off
+// through the clamping sampler, so a sample off screen reads the last texel on screen, which
+// OFFSCREEN_CLAMP places as side_sample does and OFFSCREEN_UNOCCLUDED weighs 0. With OFFSCREEN_EXTEND one off
 // screen lies on the side's edge plane instead (read once in begin_side), selected without a
 // branch: a few multiply-adds and a division.
 fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) -> vec4<f32> {
@@ -312,11 +312,14 @@ fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) 
     if DEPTH_MIPS == DEPTH_MIPS_OFF {
         texel = floor(q) + 0.5;
         depth = textureSampleLevel(linear_depth, point_clamp, texel * view.inv_size, 0.0).r;
+        if OFFSCREEN == OFFSCREEN_CLAMP {
+            // The texel the sampler read, whose point the crossing below moves.
+            texel = clamp(texel, vec2<f32>(0.5), view.size - 0.5);
+        }
     } else {
         let on_screen = clamp(q, vec2<f32>(0.0), view.size - 1.0);
         let seen = nearest_surface(on_screen, mip_level(distance_px));
-        // Off screen, the edge's depth as if it were the off-screen texel's (side_sample).
-        texel = select(seen.at, floor(q) + 0.5, !inside);
+        texel = seen.at;
         depth = seen.depth;
     }
     let ray = m.ray + m.ray_step * distance_px;
