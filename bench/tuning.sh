@@ -46,6 +46,10 @@ install() {
         echo "\`bash bench/tuning.sh\` on $(adapter "$1"), $(date -u -r "$1/tune.json" '+%Y-%m-%d %H:%M UTC'):"
         echo
         cat "$1/tune.md"
+        printf '\n### Per view at `high`\n\n'
+        echo "Filtered as the presets run; \`tune.json\` has every preset (\`python3 bench/tuning_views.py\`):"
+        echo
+        python3 bench/tuning_views.py "$1/tune.json"
     } >docs/tuning.md.new
     mv docs/tuning.md.new docs/tuning.md
     echo "wrote docs/tuning.md and bench/data/tuning.json"
