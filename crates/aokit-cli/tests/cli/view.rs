@@ -318,7 +318,7 @@ fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
     let printed = std::fs::read_to_string(dir.path().join("out.txt")).unwrap();
     let errors = std::fs::read_to_string(dir.path().join("err.txt")).unwrap();
     assert!(out.status.success(), "{}\n{errors}", text(&out.stderr));
-    let poses: Vec<[f32; 6]> = printed
+    let mut poses: Vec<[f32; 6]> = printed
         .lines()
         .map(|line| {
             let words: Vec<&str> = line.split(' ').collect();
@@ -328,6 +328,9 @@ fn keys_and_mouse_move_the_camera_and_p_prints_the_pose() {
             std::array::from_fn(|_| values.next().unwrap().parse().unwrap())
         })
         .collect();
+    // Under load Xvfb has delivered one `P` twice (the same pose printed twice, once in a
+    // full `cargo test`); the pose printed is what this test checks, not how often.
+    poses.dedup();
     assert_eq!(poses.len(), 3, "{printed}\n{errors}");
     // The room's `front` camera, looking down -Z.
     assert_eq!(poses[0], [0.0, 2.4, 6.5, 0.0, 0.9, -1.2]);
