@@ -4,10 +4,11 @@ references, raw and denoised, aokit with its off-screen samples unoccluded (the 
 with `offscreen_samples=clamp` (the texel XeGTAO's clamping sampler reads, at its height), and
 with each of its spatial filters' kinds.
 
-    python3 bench/peer_errors.py PEER [AOKIT]
+    python3 bench/peer_errors.py PEER [AOKIT] [--held-out]
 
 PEER is an XeGTAO checkout or the SPIR-V `aokit peer compile` wrote (docs/peers.md); AOKIT the
-binary, default target/release/aokit. Prints the markdown table: RMSE per view and the mean, in
+binary, default target/release/aokit. With `--held-out`, on the ten held-out views of scenes no
+preset was tuned on (`compare --views held-out`) instead. Prints the markdown table: RMSE per view and the mean, in
 bold where aokit's is at or below XeGTAO's in the same state (raw or denoised), and XeGTAO's
 where it is at or below every aokit column beside it. About 5 minutes on 2 cores with the
 references cached.
@@ -34,9 +35,9 @@ RUNS = [
 ]
 
 
-def compare(aokit, peer, settings, out):
-    """RMSE by view of aokit's GTAO and of XeGTAO (through naga) in one compare run."""
-    views = [arg for view in VIEWS for arg in ("--view", view)]
+def compare(aokit, peer, views, settings, out):
+    """RMSE by view of aokit's GTAO and of XeGTAO (through naga) in one compare run on `views`
+    (compare's view arguments)."""
     subprocess.run(
         [aokit, "compare", *views, "--method", "gtao", "--preset", "high", "--peer",
          f"xegtao={peer}", "--set", "peer.shader=naga", *settings, "--size", "480x270",
@@ -49,18 +50,31 @@ def compare(aokit, peer, settings, out):
     return rmse["gtao"], rmse["xegtao-naga"]
 
 
+def label(view, views):
+    """A view by its scene, or by scene and camera where the scene has several."""
+    scene, camera = view.split(" / ")
+    scene = "Sponza" if scene == "sponza" else scene
+    repeated = sum(v.startswith(view.split(" / ")[0] + " / ") for v in views) > 1
+    return f"{scene} {camera}" if repeated else scene
+
+
 def main():
-    if len(sys.argv) not in (2, 3):
+    args = [a for a in sys.argv[1:] if a != "--held-out"]
+    if len(args) not in (1, 2):
         sys.exit(__doc__)
-    peer = sys.argv[1]
-    aokit = sys.argv[2] if len(sys.argv) == 3 else "target/release/aokit"
+    peer = args[0]
+    aokit = args[1] if len(args) == 2 else "target/release/aokit"
+    if "--held-out" in sys.argv:
+        views = ["--views", "held-out"]
+    else:
+        views = [arg for view in VIEWS for arg in ("--view", view)]
     columns, peers = [], {}
     with tempfile.TemporaryDirectory() as tmp:
         for i, (name, settings) in enumerate(RUNS):
-            ours, theirs = compare(aokit, peer, settings, os.path.join(tmp, str(i)))
+            ours, theirs = compare(aokit, peer, views, settings, os.path.join(tmp, str(i)))
             columns.append((name, ours))
             peers["raw" if "spatial.enabled=false" in settings else "denoised"] = theirs
-    views = list(columns[0][1])
+    names_of_views = list(columns[0][1])
     xe_raw, xe_denoised = ("XeGTAO raw", peers["raw"]), ("XeGTAO denoised", peers["denoised"])
     # The raw group, then the denoised one, each with XeGTAO last.
     groups = [columns[:2] + [xe_raw], columns[2:] + [xe_denoised]]
@@ -77,10 +91,10 @@ def main():
     names = [name.strip() for group in groups for name, _ in group]
     print("| view | " + " | ".join(names) + " |")
     print("|---|" + "--:|" * len(names))
-    for key in views + [None]:
-        label = key.replace("sponza / ", "Sponza ").split(" / ")[0] if key else "mean"
+    for key in names_of_views + [None]:
         row = [cell for group in groups for cell in cells(group, key)]
-        print(f"| {label} | " + " | ".join(row) + " |")
+        name = label(key, names_of_views) if key else "mean"
+        print(f"| {name} | " + " | ".join(row) + " |")
 
 if __name__ == "__main__":
     main()
