@@ -10,7 +10,7 @@ PEER is an XeGTAO checkout or the SPIR-V `aokit peer compile` wrote (docs/peers.
 binary, default target/release/aokit. With `--held-out`, on the ten held-out views of scenes no
 preset was tuned on (`compare --views held-out`) instead. Prints the markdown table: RMSE per view and the mean, in
 bold where aokit's is at or below XeGTAO's in the same state (raw or denoised), and XeGTAO's
-where it is at or below every aokit column beside it. About 5 minutes on 2 cores with the
+where it is at or below every aokit column beside it. About a minute on 2 cores with the
 references cached.
 """
 
