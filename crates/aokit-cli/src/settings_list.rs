@@ -233,15 +233,17 @@ pub fn method_markdown(method: Method) -> String {
             .into_iter()
             .any(|preset| spec.get(&AoSettings::preset(method, preset)) != spec.get(&base));
         let variation = by_preset.then(|| "per preset, [tuning.md](tuning.md)".to_string());
-        out += &relink(&row(spec, spec.get(&base), variation).replace("[methods/", "["));
+        out += &relink(&row(spec, spec.get(&base), variation));
     }
     out
 }
 
-/// `text`'s Markdown links, relative to docs/, made relative to docs/methods/.
+/// `text`'s Markdown links, relative to docs/, made relative to docs/methods/ (and their texts
+/// that name a path under it).
 fn relink(text: &str) -> String {
+    let text = text.replace("[methods/", "[");
     let mut out = String::new();
-    let mut rest = text;
+    let mut rest = text.as_str();
     while let Some(at) = rest.find("](") {
         out += &rest[..at + 2];
         rest = &rest[at + 2..];
@@ -316,8 +318,10 @@ mod tests {
     #[test]
     fn a_method_page_links_from_docs_methods() {
         assert_eq!(
-            relink("[a](tuning.md), [b](methods/sao.md#turns), [c](https://x.org/a.md), [d](#e)"),
-            "[a](../tuning.md), [b](sao.md#turns), [c](https://x.org/a.md), [d](#e)"
+            relink(
+                "[a](tuning.md), [methods/sao.md](methods/sao.md#t), [c](https://x.org/a.md), [d](#e)"
+            ),
+            "[a](../tuning.md), [sao.md](sao.md#t), [c](https://x.org/a.md), [d](#e)"
         );
         let hbao = method_markdown(Method::Hbao);
         assert!(hbao.contains("| `hbao.direction_count` | integer | 1..=64 | 6 (per preset"));

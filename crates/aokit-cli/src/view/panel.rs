@@ -109,17 +109,17 @@ pub fn widget_for(spec: &SettingSpec, settings: &AoSettings) -> Widget {
     }
 }
 
-/// The group a key belongs to: its prefix before the first dot (`gtao` for
-/// `gtao.slice_count`), `general` for a key without one.
-pub fn group_of(key: &str) -> &str {
-    key.split_once('.').map_or("general", |(group, _)| group)
+/// The group a setting belongs to: its section (`gtao` for `gtao.slice_count`), `general` for a
+/// key without one.
+pub fn group_of(spec: &SettingSpec) -> &'static str {
+    spec.section().unwrap_or("general")
 }
 
 /// The groups in the order their first setting is declared, each with its settings.
 pub fn groups() -> Vec<(&'static str, Vec<&'static SettingSpec>)> {
     let mut groups: Vec<(&'static str, Vec<&'static SettingSpec>)> = Vec::new();
     for spec in SETTINGS {
-        let group = group_of(spec.name);
+        let group = group_of(spec);
         match groups.iter_mut().find(|(name, _)| *name == group) {
             Some((_, specs)) => specs.push(spec),
             None => groups.push((group, vec![spec])),
@@ -320,15 +320,16 @@ mod tests {
 
     #[test]
     fn groups_follow_the_key_prefixes_and_cover_every_setting() {
-        assert_eq!(group_of("gtao.slice_count"), "gtao");
-        assert_eq!(group_of("radius"), "general");
+        let group = |key| group_of(aokit::settings::find_setting(key).unwrap());
+        assert_eq!(group("gtao.slice_count"), "gtao");
+        assert_eq!(group("radius"), "general");
         let groups = groups();
         assert_eq!(groups[0].0, "general");
         assert!(groups.iter().any(|(name, _)| *name == "gtao"));
         let count: usize = groups.iter().map(|(_, specs)| specs.len()).sum();
         assert_eq!(count, SETTINGS.len());
         for (name, specs) in &groups {
-            assert!(specs.iter().all(|spec| group_of(spec.name) == *name));
+            assert!(specs.iter().all(|spec| group_of(spec) == *name));
         }
     }
 

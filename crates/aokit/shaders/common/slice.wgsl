@@ -301,9 +301,9 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
 // OFFSCREEN_UNOCCLUDED, no surface, or on the other half of the slice). The nearest texel's
 // point is moved onto the view ray through the sample as slice_sample does; the fetch goes
 // through the clamping sampler, so a sample off screen reads the last texel on screen, which
-// OFFSCREEN_CLAMP places as side_sample does and OFFSCREEN_UNOCCLUDED weighs 0. With OFFSCREEN_EXTEND one off
-// screen lies on the side's edge plane instead (read once in begin_side), selected without a
-// branch: a few multiply-adds and a division.
+// OFFSCREEN_CLAMP places as side_sample does and OFFSCREEN_UNOCCLUDED weighs 0. With
+// OFFSCREEN_EXTEND one off screen lies on the side's edge plane instead (read once in
+// begin_side), selected without a branch: a few multiply-adds and a division.
 fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) -> vec4<f32> {
     let q = s.center + m.dir * distance_px;
     let inside = all(q >= vec2<f32>(0.0)) && all(q < view.size);

@@ -121,7 +121,7 @@ mod tests {
         for spec in REGISTRY {
             for setting in spec.settings {
                 assert_eq!(
-                    setting.name.split_once('.').map(|(section, _)| section),
+                    setting.section(),
                     Some(spec.section),
                     "{:?} declares {}",
                     spec.method,

@@ -113,11 +113,9 @@ impl Method {
     /// ```
     pub fn own_settings(self) -> impl Iterator<Item = &'static SettingSpec> {
         let section = crate::methods::spec(self).section;
-        SETTINGS.iter().filter(move |s| {
-            s.name
-                .split_once('.')
-                .is_some_and(|(prefix, _)| prefix == section)
-        })
+        SETTINGS
+            .iter()
+            .filter(move |s| s.section() == Some(section))
     }
 }
 

@@ -423,6 +423,18 @@ impl SettingSpec {
         (self.get)(settings)
     }
 
+    /// The section of a settings file the setting lives in, its key's prefix (`gtao` for
+    /// `gtao.slice_count`); `None` for a key at the top level.
+    ///
+    /// ```
+    /// use aokit::settings::find_setting;
+    /// assert_eq!(find_setting("gtao.slice_count").unwrap().section(), Some("gtao"));
+    /// assert_eq!(find_setting("radius").unwrap().section(), None);
+    /// ```
+    pub fn section(&self) -> Option<&'static str> {
+        self.name.split_once('.').map(|(section, _)| section)
+    }
+
     /// The setting's value in [`AoSettings::default`].
     ///
     /// ```

@@ -3,10 +3,11 @@
 
 use std::collections::HashMap;
 
+use super::Weights;
 use crate::gpu::create_uniform_buffer;
 use crate::passes::kernel::method::AO_FORMAT;
 use crate::passes::{ComputeKernel, PassContext, bind};
-use crate::settings::{DepthWeight, SpatialKind, SpatialSettings};
+use crate::settings::{SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::SpatialUniforms;
 
@@ -26,16 +27,13 @@ pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 7] {
     ]
 }
 
-/// What a kernel compiles in (the shader's `override`s): the depth weight's kind, whether
-/// normals weigh in, and the normal power's squarings.
-type Variant = (DepthWeight, bool, i32);
-
 /// The filter's kernels and its settings buffer.
 pub struct EdgeFilterPass {
-    /// Per variant, compiled the first time settings of the edges kind ask for it.
-    kernels: HashMap<Variant, ComputeKernel>,
+    /// Per weights' variant (the shader's overrides), compiled the first time settings of the
+    /// edges kind ask for it.
+    kernels: HashMap<Weights, ComputeKernel>,
     /// The variant of the settings last given, when they select the edges kind.
-    current: Option<Variant>,
+    current: Option<Weights>,
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
 }
@@ -66,23 +64,14 @@ impl EdgeFilterPass {
         settings: &SpatialSettings,
     ) {
         let enabled = settings.enabled && settings.kind == SpatialKind::Edges;
-        self.current = enabled.then_some((
-            settings.depth_weight,
-            settings.normal_power > 0.0,
-            super::normal_squarings(settings.normal_power),
-        ));
-        if let Some(variant) = self.current {
-            let (depth_weight, normal_weight, squarings) = variant;
-            self.kernels.entry(variant).or_insert_with(|| {
+        self.current = enabled.then(|| Weights::of(settings));
+        if let Some(weights) = self.current {
+            self.kernels.entry(weights).or_insert_with(|| {
                 ComputeKernel::with_constants(
                     device,
                     &shader::EDGE_FILTER,
                     &layout(),
-                    &[
-                        ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
-                        ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
-                        ("NORMAL_SQUARINGS", f64::from(squarings)),
-                    ],
+                    &weights.constants(),
                 )
             });
         }
@@ -132,6 +121,7 @@ mod tests {
     use crate::passes::filter::spatial_filter::tests::{
         Image, SIZE, STEP_X, gpu, hash, image, run_filter, standard_deviation,
     };
+    use crate::settings::DepthWeight;
 
     #[test]
     fn constants_match_wgsl() {

@@ -5,6 +5,36 @@ pub(crate) mod guided_filter;
 pub(crate) mod spatial_filter;
 pub(crate) mod temporal_filter;
 
+use crate::settings::{DepthWeight, SpatialSettings};
+
+/// What filter/bilateral_weights.wgsl compiles in, shared by the bilateral and the edges kind:
+/// the depth weight's kind, whether normals weigh in and the normal power's squarings.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct Weights {
+    depth_weight: DepthWeight,
+    normal_weight: bool,
+    normal_squarings: i32,
+}
+
+impl Weights {
+    fn of(settings: &SpatialSettings) -> Self {
+        Self {
+            depth_weight: settings.depth_weight,
+            normal_weight: settings.normal_power > 0.0,
+            normal_squarings: normal_squarings(settings.normal_power),
+        }
+    }
+
+    /// The override constants of bilateral_weights.wgsl.
+    fn constants(self) -> [(&'static str, f64); 3] {
+        [
+            ("DEPTH_WEIGHT", f64::from(self.depth_weight as u32)),
+            ("NORMAL_WEIGHT", f64::from(u8::from(self.normal_weight))),
+            ("NORMAL_SQUARINGS", f64::from(self.normal_squarings)),
+        ]
+    }
+}
+
 /// `NORMAL_SQUARINGS` of filter/bilateral_weights.wgsl for a normal power: k where the power is
 /// 2^k for k in 0..=6 (squared k times), -1 for any other (a log2 and the exp2).
 fn normal_squarings(power: f32) -> i32 {

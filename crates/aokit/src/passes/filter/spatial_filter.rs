@@ -4,10 +4,11 @@
 
 use std::collections::HashMap;
 
+use super::Weights;
 use crate::gpu::{PairFormat, create_uniform_buffer, stand_in_view};
 use crate::passes::kernel::method::AO_FORMAT;
 use crate::passes::{ComputeKernel, PassContext, bind};
-use crate::settings::{DepthWeight, SpatialKind, SpatialSettings};
+use crate::settings::{SpatialKind, SpatialSettings};
 use crate::shader;
 use crate::uniforms::SpatialUniforms;
 
@@ -17,9 +18,8 @@ use crate::uniforms::SpatialUniforms;
 // move 28 bytes a pixel instead of 36, but a half overflows past a depth of 65504 units, which
 // scenes in millimetres reach (docs/denoise.md).
 
-/// What the kernels compile in (the shader's `override`s): the radius, the depth weight's kind,
-/// whether normals weigh in and the normal power's squarings.
-type Variant = (u32, DepthWeight, bool, i32);
+/// What the kernels compile in (the shader's `override`s): the radius and the weights.
+type Variant = (u32, Weights);
 
 /// Where the vertical pass writes the filtered AO.
 #[derive(Clone, Copy, Debug)]
@@ -114,20 +114,10 @@ impl SpatialFilterPass {
         settings: &SpatialSettings,
     ) {
         let enabled = settings.enabled && settings.kind == SpatialKind::Bilateral;
-        self.current = enabled.then_some((
-            settings.radius,
-            settings.depth_weight,
-            settings.normal_power > 0.0,
-            super::normal_squarings(settings.normal_power),
-        ));
+        self.current = enabled.then(|| (settings.radius, Weights::of(settings)));
         if let Some(variant) = self.current {
-            let (radius, depth_weight, normal_weight, squarings) = variant;
-            let constants = [
-                ("RADIUS", f64::from(radius)),
-                ("DEPTH_WEIGHT", f64::from(depth_weight as u32)),
-                ("NORMAL_WEIGHT", f64::from(u8::from(normal_weight))),
-                ("NORMAL_SQUARINGS", f64::from(squarings)),
-            ];
+            let (radius, weights) = variant;
+            let constants = [&[("RADIUS", f64::from(radius))][..], &weights.constants()].concat();
             let pair = self.pair;
             self.kernels.entry(variant).or_insert_with(|| {
                 let vertical = |packed_output: bool| {
