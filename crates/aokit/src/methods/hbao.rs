@@ -96,7 +96,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     method: Method::Hbao,
     shader: shader::HBAO,
     tuned: |preset| match preset {
-        Preset::Low => tuned([2, 2], 1.5, 0.0, 0.05, 1.8, 1.5),
+        Preset::Low => tuned([2, 2], 1.5, 0.0, 0.05, 1.6, 1.5),
         Preset::Medium => tuned([4, 2], 1.5, 0.0, 0.05, 1.6, 1.5),
         Preset::High => tuned([6, 3], 1.5, 0.0, 0.05, 1.25, 1.5),
         Preset::Ultra => tuned([6, 9], 1.5, 0.0, 0.1, 1.0, 1.35),

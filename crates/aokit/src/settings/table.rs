@@ -396,9 +396,9 @@ const AFTER_METHODS: &[SettingSpec] = &[
          the screen's edge continued (the plane of the last texel on screen along the slice), \
          nothing, as if the scene were open beyond the edge, or the last texel on screen (what a \
          clamping sampler reads) at its height above the pixel's tangent plane; against \
-         `unoccluded`, `extend` lowers the error within 12 px of the edges by 11 to 20% for 1.22 \
-         to 1.26 times GTAO `high`'s frame time on lavapipe, `clamp` by 8 to 21% at about no \
-         cost \
+         `unoccluded`, `clamp` (the default) lowers the error within 12 px of the edges by 8 to \
+         21% at about no cost, `extend` by 11 to 20% for 1.22 to 1.26 times GTAO `high`'s frame \
+         time on lavapipe \
          ([quality.md](quality.md#off-screen-samples-and-silhouettes))"
     ),
 ];
