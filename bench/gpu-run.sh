@@ -4,8 +4,8 @@
 # by naga and by passthrough SPIR-V, interleaved in one `aokit bench --compare` run per view and
 # size: `room` and Sponza's atrium at 1920x1080 and 3840x2160. Then, time left, the per-pass set
 # of bench/performance.sh, with the options whose cost only a GPU tells (docs/quality.md):
-# `offscreen_samples=extend`, `offscreen_samples=clamp` (which should cost nothing) and a 32 px
-# guard band. Builds nothing: the GPU machine runs the release binary and the peer's SPIR-V
+# `offscreen_samples=extend`, `offscreen_samples=unoccluded` (the default `clamp` should cost
+# no more) and a 32 px guard band. Builds nothing: the GPU machine runs the release binary and the peer's SPIR-V
 # compiled beforehand on a machine without a GPU:
 #
 #   cargo build --release -p aokit-cli
@@ -78,7 +78,7 @@ passes=(
     "--set resolution=half --set spatial.enabled=true --set temporal.enabled=true"
     "--set bent_normals=true"
     "--set offscreen_samples=extend"
-    "--set offscreen_samples=clamp"
+    "--set offscreen_samples=unoccluded"
     "--guard-band 32"
 )
 set_view sponza-atrium

@@ -41,7 +41,7 @@ LABELS = {
         "half, `checkerboard` + `nearest-depth`",
     "--set bent_normals=true": "`bent_normals=true`",
     "--set offscreen_samples=extend": "`offscreen_samples=extend`",
-    "--set offscreen_samples=clamp": "`offscreen_samples=clamp`",
+    "--set offscreen_samples=unoccluded": "`offscreen_samples=unoccluded`",
     "--guard-band 32": "a 32 px guard band (`--guard-band 32`)",
     "--set normals.encoding=oct16": "`normals.encoding=oct16` (decode pass)",
     "--set normals.source=depth-5tap": "`normals.source=depth-5tap`",
