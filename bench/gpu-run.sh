@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The run to make first whenever a GPU is lent (docs/performance.md): aokit's GTAO `high`, old
-# and new kernel, raw and with each denoiser, against XeGTAO High with and without its denoiser
-# by naga and by passthrough SPIR-V, interleaved in one `aokit bench --compare` run per view and
-# size: `room` and Sponza's atrium at 1920x1080 and 3840x2160. Then, time left, the per-pass set
-# of bench/performance.sh, with the options whose cost only a GPU tells (docs/quality.md):
-# `offscreen_samples=extend`, `offscreen_samples=unoccluded` (the default `clamp` should cost
-# no more) and a 32 px guard band. Builds nothing: the GPU machine runs the release binary and the peer's SPIR-V
+# and new kernel, raw and with each denoiser (and with the depth MIP chain), against XeGTAO High
+# with and without its denoiser by naga and by passthrough SPIR-V, interleaved in one `aokit
+# bench --compare` run per view and size: `room` and Sponza's atrium at 1920x1080 and
+# 3840x2160. Then, time left, the per-pass set of bench/performance.sh, with the options whose
+# cost only a GPU tells (docs/quality.md): `offscreen_samples=extend`,
+# `offscreen_samples=unoccluded` (the default `clamp` should cost no more) and a 32 px guard
+# band. Builds nothing: the GPU machine runs the release binary and the peer's SPIR-V
 # compiled beforehand on a machine without a GPU:
 #
 #   cargo build --release -p aokit-cli
@@ -32,6 +33,7 @@ source bench/bench-common.sh "$aokit" "$out"
     fi
 } >"$out/device.txt"
 gtao="--method gtao --preset high"
+thin_as_xegtao="--set depth_mips=fp32 --set depth_mip_offset=1.5 --set gtao.thickness=0.05"
 configurations=(
     "$gtao --set slice_march=general"
     "$gtao"
@@ -41,6 +43,10 @@ configurations=(
     "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=0"
     # The normal weight by a log2 and an exp2, as before the power of two became squarings.
     "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=16.0001"
+    # What XeGTAO's way of seeing thin occluders thinner costs here: far samples from the depth
+    # MIP chain, the settings under which GTAO `high` is below XeGTAO's error on every tuning
+    # view (docs/performance.md, "Error").
+    "$gtao --set spatial.enabled=true --set spatial.kind=edges $thin_as_xegtao"
 )
 # Each peer configuration runs twice where the driver takes the SPIR-V passed through: through
 # naga and passed through (docs/peers.md). A driver that fails to compile it loses the device
