@@ -161,7 +161,7 @@ fn mip_level(distance_px: f32) -> u32 {
 // where the atlas holds it, at row H - (H >> (level - 1)) (`atlas_origin` in
 // depth_mips.wgsl), below the levels before it.
 fn atlas_origin(level: u32) -> vec2<f32> {
-    let row = view.size.y - floor(view.size.y / f32(1u << (level - 1u)));
+    let row = view.size.y - floor(view.size.y * inverse_pow2(level - 1u));
     return vec2<f32>(select(0.0, view.size.x, DEPTH_MIPS == DEPTH_MIPS_ATLAS), row);
 }
 
@@ -178,7 +178,8 @@ struct Footprint {
 fn footprint(q: vec2<f32>, level: u32) -> Footprint {
     if reads_atlas(level) {
         let grid = atlas_level(level);
-        let corner = clamp(floor(q / grid.scale - 0.5) + 1.0, vec2<f32>(1.0), grid.size - 1.0);
+        let corner = clamp(floor(q * grid.inverse_scale - 0.5) + 1.0, vec2<f32>(1.0),
+                           grid.size - 1.0);
         let uv = (grid.origin + corner) / vec2<f32>(textureDimensions(depth_mips));
         return Footprint(textureGather(0, depth_mips, point_clamp, uv), corner, grid.scale);
     }
@@ -193,18 +194,28 @@ fn reads_atlas(level: u32) -> bool {
     return DEPTH_MIPS == DEPTH_MIPS_ATLAS || (DEPTH_MIPS == DEPTH_MIPS_COARSE && level > 0u);
 }
 
-// Level `level`'s grid in the atlas: its texel width in pixels, its size in texels (at least
-// one a side) and where its texel (0, 0) lies.
+// 2^-level, exactly, from the exponent's bits. The levels' texel widths are powers of two, so a
+// product with this equals the quotient by 2^level to the bit, without the division's
+// reciprocal, which GPUs run on their slower special-function units (a read of the atlas took
+// five).
+fn inverse_pow2(level: u32) -> f32 {
+    return bitcast<f32>((127u - level) << 23u);
+}
+
+// Level `level`'s grid in the atlas: its texel width in pixels and the inverse, its size in
+// texels (at least one a side) and where its texel (0, 0) lies.
 struct AtlasLevel {
     scale: f32,
+    inverse_scale: f32,
     size: vec2<f32>,
     origin: vec2<f32>,
 }
 
 fn atlas_level(level: u32) -> AtlasLevel {
-    let scale = f32(1u << level);
-    let size = max(floor(view.size / scale), vec2<f32>(1.0));
-    return AtlasLevel(scale, size, select(vec2<f32>(0.0), atlas_origin(level), level > 0u));
+    let inverse_scale = inverse_pow2(level);
+    let size = max(floor(view.size * inverse_scale), vec2<f32>(1.0));
+    return AtlasLevel(f32(1u << level), inverse_scale, size,
+                      select(vec2<f32>(0.0), atlas_origin(level), level > 0u));
 }
 
 // The surface seen at continuous pixel position `q`, read at depth MIP level `level` (0: the
@@ -246,7 +257,7 @@ fn surface_at(q: vec2<f32>, level: u32) -> SeenSurface {
 fn nearest_surface(q: vec2<f32>, level: u32) -> SeenSurface {
     if reads_atlas(level) {
         let grid = atlas_level(level);
-        let texel = min(floor(q / grid.scale), grid.size - 1.0);
+        let texel = min(floor(q * grid.inverse_scale), grid.size - 1.0);
         let depth = textureLoad(depth_mips, vec2<u32>(grid.origin + texel), 0).r;
         return SeenSurface(depth, (texel + 0.5) * grid.scale, false);
     }
