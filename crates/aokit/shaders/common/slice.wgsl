@@ -83,8 +83,9 @@ fn place_sample(seen: SeenSurface, q: vec2<f32>, p: vec3<f32>, n: vec3<f32>) -> 
 // edge goes on at its height, at the cost of a clamp. (Taking the edge's depth at the sample's
 // position, as XeGTAO's clamping sampler does, raises a receding plane into a wall: an open
 // plane seen orthographically read AO 0.63 at its far edge.)
-const OFFSCREEN_UNOCCLUDED: u32 = 0u;
-const OFFSCREEN_EXTEND: u32 = 1u;
+// The codes are OffscreenSamples' declaration order (settings/enums.rs).
+const OFFSCREEN_EXTEND: u32 = 0u;
+const OFFSCREEN_UNOCCLUDED: u32 = 1u;
 const OFFSCREEN_CLAMP: u32 = 2u;
 override OFFSCREEN: u32 = OFFSCREEN_UNOCCLUDED;
 

@@ -104,7 +104,7 @@ impl Variant {
             constants.push(("NEAREST_DEPTH", f64::from(u8::from(nearest))));
         }
         if let Some(offscreen) = self.offscreen_samples {
-            constants.push(("OFFSCREEN", f64::from(offscreen_code(offscreen))));
+            constants.push(("OFFSCREEN", f64::from(offscreen as u32)));
         }
         if let Some(lean) = self.lean {
             constants.extend([
@@ -116,15 +116,6 @@ impl Variant {
             ]);
         }
         constants
-    }
-}
-
-/// common/slice.wgsl's `OFFSCREEN` code of `offscreen` (its `OFFSCREEN_*` constants).
-fn offscreen_code(offscreen: OffscreenSamples) -> u32 {
-    match offscreen {
-        OffscreenSamples::Unoccluded => 0,
-        OffscreenSamples::Extend => 1,
-        OffscreenSamples::Clamp => 2,
     }
 }
 
