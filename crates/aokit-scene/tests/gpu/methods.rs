@@ -386,6 +386,67 @@ fn slice_methods_leave_an_open_plane_unoccluded_with_either_depth_read() {
     }
 }
 
+/// A plane seen through a projection whose pixels are not square: a step along a slice on
+/// screen moves the view ray in a direction other than the screen direction's, and a slice
+/// whose plane ignored that (as it did before) tilted against the samples' rays and rose off
+/// the plane near its horizon.
+#[test]
+fn slice_methods_leave_an_open_plane_unoccluded_with_pixels_that_are_not_square() {
+    let gpu = gpu();
+    let size = [160u32, 96];
+    // Each pixel 2.5 times as wide as it is tall.
+    let aspect = 2.5 * size[0] as f32 / size[1] as f32;
+    let projection = aokit::Projection::perspective(1.0, aspect, 0.1, None);
+    // A floor 1.5 below the eye, tilted a little sideways so that no slice runs along a
+    // symmetry of it, seen to its horizon.
+    let normal = Vec3::new(0.25, 1.0, 0.0).normalize();
+    let offset = -1.5;
+    let depth: Vec<f32> = (0..size[1])
+        .flat_map(|y| (0..size[0]).map(move |x| (x, y)))
+        .map(|(x, y)| {
+            let ndc = aokit::projection::pixel_to_ndc(
+                glam::Vec2::new(x as f32, y as f32),
+                glam::Vec2::new(size[0] as f32, size[1] as f32),
+            );
+            // The view ray at depth 1 meets the plane at depth t.
+            let t = offset / normal.dot(projection.view_position_from_linear(ndc, 1.0));
+            if t > 0.0 && t < 200.0 { t } else { 0.0 }
+        })
+        .collect();
+    let covered_count = depth.iter().filter(|&&d| d > 0.0).count();
+    assert!(
+        covered_count > depth.len() / 3,
+        "the plane should fill much of the view"
+    );
+    let texture = common::linear_depth_texture(&gpu, size, &depth);
+    let inputs = aokit::AoInputs::new(&texture, projection);
+    for method in Method::ALL.into_iter().filter(|m| m.marches_slices()) {
+        for slice_march in [SliceMarch::Lean, SliceMarch::General] {
+            let settings = AoSettings {
+                radius: 1.0,
+                slice_march,
+                ..AoSettings::preset(method, Preset::High)
+            };
+            let mut pipeline = aokit::AoPipeline::new(&gpu.device, &gpu.queue, &settings).unwrap();
+            let ao = common::encode_frame(&gpu, &mut pipeline, &inputs, |outputs| {
+                aokit::gpu::read_texture_f32(&gpu.device, &gpu.queue, outputs.raw_ao).unwrap()
+            });
+            let worst = ao
+                .iter()
+                .zip(&depth)
+                .filter(|&(_, &d)| d > 0.0)
+                .fold(1.0f32, |worst, (&a, _)| worst.min(a));
+            assert!(
+                worst >= 0.999,
+                "{} with the {} march: lowest AO {worst} on an open plane seen through \
+                 pixels 2.5 times as wide as tall",
+                method.name(),
+                slice_march.name()
+            );
+        }
+    }
+}
+
 #[test]
 fn the_nearest_depth_read_moves_the_slice_methods_ao_a_little_and_switches_at_runtime() {
     let gpu = gpu();

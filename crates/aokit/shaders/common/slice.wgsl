@@ -151,8 +151,10 @@ struct Slice {
 fn make_slice(s: Surface, phi: f32) -> Slice {
     var slice: Slice;
     slice.omega = vec2<f32>(cos(phi), sin(phi));
-    // The same direction in view space (y up).
-    let direction = vec3<f32>(slice.omega.x, -slice.omega.y, 0.0);
+    // The same direction in view space: where a step along omega on screen moves the view ray.
+    // Pixels need not be square (an odd size halved, a stretched projection): taken this way,
+    // the view ray through every sample lies in the slice plane, on its +omega or -omega half.
+    let direction = vec3<f32>(pixel_to_ray() * slice.omega, 0.0);
     slice.tangent = normalize(direction - dot(direction, s.v) * s.v);
     slice.axis = normalize(cross(slice.tangent, s.v));
     let n_axis = dot(s.n, slice.axis);
@@ -161,6 +163,12 @@ fn make_slice(s: Surface, phi: f32) -> Slice {
     let cos_n = saturate(dot(n_proj, s.v) / max(slice.n_len, 1e-6));
     slice.angle_n = select(-1.0, 1.0, dot(n_proj, slice.tangent) >= 0.0) * fast_acos(cos_n);
     return slice;
+}
+
+// The view ray's change per pixel of screen offset (its xy at depth 1 for perspective, its xy
+// for orthographic), from view_position: y flips, pixel to uv to NDC.
+fn pixel_to_ray() -> vec2<f32> {
+    return vec2<f32>(2.0, -2.0) * view.uv_per_pixel * view.ndc_to_view;
 }
 
 // Distance in pixels of step `step` of `steps` from the pixel, jittered, from one pixel out
@@ -207,7 +215,8 @@ fn side_position(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec2<
 
 // The sample of a step on one side of a slice (side = +1 towards +omega, -1 away): the offset
 // from the shaded point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen
-// with OFFSCREEN_UNOCCLUDED, no surface, or slid past the pixel onto the other half of the slice).
+// with OFFSCREEN_UNOCCLUDED, or no surface). Every placement puts the sample on the view ray
+// through its screen position, in front of the eye, so it lies on its side's half of the slice.
 fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f32> {
     let q = side_position(s, slice, side, distance_px);
     var sample: vec4<f32>;
@@ -226,9 +235,6 @@ fn side_sample(s: Surface, slice: Slice, side: f32, distance_px: f32) -> vec4<f3
         }
     } else {
         sample = slice_sample(q, mip_level(distance_px), s.p, s.n);
-    }
-    if sample.w == 0.0 || side * dot(sample.xyz, slice.tangent) <= 0.0 {
-        return vec4<f32>(0.0);
     }
     return sample;
 }
@@ -281,13 +287,11 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
     var m: SideMarch;
     m.dir = side * slice.omega;
     m.side = side;
-    // d(view xy at depth 1) / d(pixel), from view_position: y flips, pixel to uv to NDC.
-    let pixel_to_ray = vec2<f32>(2.0, -2.0) * view.uv_per_pixel * view.ndc_to_view;
     m.ray = select(s.p.xy / s.depth, s.p.xy, ORTHOGRAPHIC);
-    m.ray_step = pixel_to_ray * m.dir;
+    m.ray_step = pixel_to_ray() * m.dir;
     m.along_n = select(dot(m.ray, s.n.xy), 0.0, ORTHOGRAPHIC) - s.n.z;
     m.along_n_step = select(dot(m.ray_step, s.n.xy), 0.0, ORTHOGRAPHIC);
-    m.pixel_n = pixel_to_ray * s.n.xy;
+    m.pixel_n = pixel_to_ray() * s.n.xy;
     if OFFSCREEN == OFFSCREEN_EXTEND && LEAN {
         let edge = edge_distance(s.center, m.dir);
         if edge < s.radius_px {
@@ -299,13 +303,13 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
 
 // side_sample for the lean march, the same sample without branches: the offset from the shaded
 // point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen with
-// OFFSCREEN_UNOCCLUDED, no surface, or on the other half of the slice). The nearest texel's
+// OFFSCREEN_UNOCCLUDED, or no surface). The nearest texel's
 // point is moved onto the view ray through the sample as slice_sample does; the fetch goes
 // through the clamping sampler, so a sample off screen reads the last texel on screen, which
 // OFFSCREEN_CLAMP places as side_sample does and OFFSCREEN_UNOCCLUDED weighs 0. With
 // OFFSCREEN_EXTEND one off screen lies on the side's edge plane instead (read once in
 // begin_side), selected without a branch: a few multiply-adds and a division.
-fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) -> vec4<f32> {
+fn march_sample(s: Surface, m: SideMarch, distance_px: f32) -> vec4<f32> {
     let q = s.center + m.dir * distance_px;
     let inside = all(q >= vec2<f32>(0.0)) && all(q < view.size);
     var texel: vec2<f32>;
@@ -338,15 +342,14 @@ fn march_sample(s: Surface, m: SideMarch, tangent: vec3<f32>, distance_px: f32) 
         let along = select(vec3<f32>(ray, -1.0), vec3<f32>(0.0, 0.0, -1.0), ORTHOGRAPHIC);
         sample = select(edge_plane_sample(m.edge, near, along, s.p), sample, inside);
     }
-    let valid = sample.w > 0.0 && m.side * dot(sample.xyz, tangent) > 0.0;
-    return vec4<f32>(sample.xyz, select(0.0, 1.0, valid));
+    return sample;
 }
 
 // The sample of a step `distance_px` along a slice's side, as the settings' march places it:
 // march_sample on the side `march` set up, or side_sample. Either way it is the same sample.
 fn slice_method_sample(s: Surface, slice: Slice, march: SideMarch, distance_px: f32) -> vec4<f32> {
     if LEAN {
-        return march_sample(s, march, slice.tangent, distance_px);
+        return march_sample(s, march, distance_px);
     }
     return side_sample(s, slice, march.side, distance_px);
 }

@@ -43,7 +43,7 @@ fn march_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32)
     var horizon_cos = low_cos;
     for (var step = 0u; step < STEPS; step++) {
         let distance_px = step_distance(step, STEPS, jitter, s.radius_px);
-        let sample = march_sample(s, m, slice.tangent, distance_px);
+        let sample = march_sample(s, m, distance_px);
         let d2 = dot(sample.xyz, sample.xyz);
         let inverse_distance = inverseSqrt(d2);
         let distance = d2 * inverse_distance;
@@ -53,7 +53,7 @@ fn march_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32)
                             sample_cos >= horizon_cos);
         // As in search_horizon, a squared distance that underflowed to 0 (depths near 1e-30)
         // makes `raised` NaN: such a sample leaves the horizon as it was.
-        horizon_cos = select(horizon_cos, raised, sample.w > 0.0 && d2 > 0.0);
+        horizon_cos = select(horizon_cos, raised, sample.w > 0.0 & d2 > 0.0);
     }
     return horizon_cos;
 }
