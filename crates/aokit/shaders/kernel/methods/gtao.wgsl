@@ -21,17 +21,7 @@ fn search_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32
         if sample.w == 0.0 || d2 == 0.0 {
             continue;
         }
-        // One inverse square root gives the distance and the cosine (on an H100 GTAO `high`'s
-        // kernel took 0.976 to 0.989 of the time of length() and a division).
-        let inverse_distance = inverseSqrt(d2);
-        let distance = d2 * inverse_distance;
-        // Far samples fade towards the hemisphere's edge, so the radius has no hard rim.
-        let sample_cos = mix(low_cos, dot(sample.xyz, s.v) * inverse_distance,
-                             falloff_weight(s, distance));
-        // Thickness heuristic (GTAO paper): a sample below the horizon pulls it back a little,
-        // as if the occluder that raised it were only about as thick as it is wide.
-        horizon_cos = select(mix(horizon_cos, sample_cos, ao.thickness), sample_cos,
-                             sample_cos >= horizon_cos);
+        horizon_cos = raise_horizon(s, sample.xyz, d2, low_cos, horizon_cos);
     }
     return horizon_cos;
 }
@@ -45,17 +35,27 @@ fn march_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32)
         let distance_px = step_distance(step, STEPS, jitter, s.radius_px);
         let sample = march_sample(s, m, distance_px);
         let d2 = dot(sample.xyz, sample.xyz);
-        let inverse_distance = inverseSqrt(d2);
-        let distance = d2 * inverse_distance;
-        let sample_cos = mix(low_cos, dot(sample.xyz, s.v) * inverse_distance,
-                             falloff_weight(s, distance));
-        let raised = select(mix(horizon_cos, sample_cos, ao.thickness), sample_cos,
-                            sample_cos >= horizon_cos);
         // As in search_horizon, a squared distance that underflowed to 0 (depths near 1e-30)
-        // makes `raised` NaN: such a sample leaves the horizon as it was.
-        horizon_cos = select(horizon_cos, raised, sample.w > 0.0 & d2 > 0.0);
+        // would make the horizon NaN: such a sample leaves it as it was.
+        horizon_cos = select(horizon_cos, raise_horizon(s, sample.xyz, d2, low_cos, horizon_cos),
+                             sample.w > 0.0 & d2 > 0.0);
     }
     return horizon_cos;
+}
+
+// The horizon cosine `horizon_cos` after the sample at `offset` from the shaded point, of
+// squared length d2 > 0.
+fn raise_horizon(s: Surface, offset: vec3<f32>, d2: f32, low_cos: f32, horizon_cos: f32) -> f32 {
+    // One inverse square root gives the distance and the cosine (on an H100 GTAO `high`'s
+    // kernel took 0.976 to 0.989 of the time of length() and a division).
+    let inverse_distance = inverseSqrt(d2);
+    let distance = d2 * inverse_distance;
+    // Far samples fade towards the hemisphere's edge, so the radius has no hard rim.
+    let sample_cos = mix(low_cos, dot(offset, s.v) * inverse_distance, falloff_weight(s, distance));
+    // Thickness heuristic (GTAO paper): a sample below the horizon pulls it back a little, as if
+    // the occluder that raised it were only about as thick as it is wide. A sample above it
+    // becomes the horizon: the blend never passes it, so the larger of the two is the result.
+    return max(sample_cos, mix(horizon_cos, sample_cos, ao.thickness));
 }
 
 // Cosine-weighted mean direction of the visible arc [h_neg, h_pos] of a slice, in the slice's
