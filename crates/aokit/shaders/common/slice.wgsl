@@ -129,9 +129,10 @@ fn edge_plane_sample(plane: EdgePlane, near: vec3<f32>, along: vec3<f32>,
     return select(vec4<f32>(0.0), vec4<f32>(offset, 1.0), valid);
 }
 
-// Step jitter is stratified across a pixel's slices and sides: slice i shifts it by i times the
-// golden ratio's fraction (a low-discrepancy sequence) and the two sides of a slice are half a
-// step apart, so together they cover the radius more evenly than one shared offset would.
+// Step jitter is stratified across a pixel's slices: slice i shifts it by i times the golden
+// ratio's fraction (a low-discrepancy sequence), so together they cover the radius more evenly
+// than one shared offset would. VBAO sets the two sides of a slice half a step apart as well;
+// GTAO steps both to the same distances (gtao.wgsl, search_horizons), at no more error.
 const GOLDEN_FRACTION: f32 = 0.618034;
 
 // One slice of a pixel's hemisphere.

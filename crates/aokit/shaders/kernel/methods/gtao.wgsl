@@ -5,57 +5,47 @@
 // Per pixel: a few slices (half-planes through the view vector V), each with a horizon search on
 // both sides, then the cosine-weighted visible arc between the horizons integrated in closed form.
 
-// Highest horizon cosine on one side of a slice (side = +1 or -1), starting from the normal
-// hemisphere's edge `low_cos`.
-fn search_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32) -> f32 {
-    if LEAN {
-        return march_horizon(s, slice, side, jitter, low_cos);
-    }
+// Highest horizon cosines on the two sides of a slice, the +omega side in x and the -omega
+// side in y, starting from the normal hemisphere's edges `low_cos`. The two sides step out to
+// the same distances, so a step's distance serves both samples: with the jitter half a step
+// apart between the sides (as it was), the error was no lower (GTAO `high`, seven tuning views
+// 0.0749 -> 0.0747 mean RMSE filtered, ten held-out 0.0596 -> 0.0593).
+fn search_horizons(s: Surface, slice: Slice, jitter: f32, low_cos: vec2<f32>) -> vec2<f32> {
+    let ahead = begin_side(s, slice, 1.0);
+    let behind = begin_side(s, slice, -1.0);
+    let steps = step_count();
     var horizon_cos = low_cos;
-    for (var step = 0u; step < ao.steps; step++) {
-        let sample = side_sample(s, slice, side, step_distance(step, ao.steps, jitter, s.radius_px));
-        // A sample lies off the shaded point (side_sample), so the distance is positive, but its
-        // square underflows to 0 at tiny depths (1e-30): the inverse square root is then
-        // infinite and the horizon NaN, which reads as AO 0. Such a sample says nothing.
-        let d2 = dot(sample.xyz, sample.xyz);
-        if sample.w == 0.0 || d2 == 0.0 {
-            continue;
-        }
-        horizon_cos = raise_horizon(s, sample.xyz, d2, low_cos, horizon_cos);
+    for (var step = 0u; step < steps; step++) {
+        let distance_px = step_distance(step, steps, jitter, s.radius_px);
+        horizon_cos = vec2<f32>(
+            raise_horizon_cos(s, slice_method_sample(s, slice, ahead, distance_px), low_cos.x,
+                              horizon_cos.x),
+            raise_horizon_cos(s, slice_method_sample(s, slice, behind, distance_px), low_cos.y,
+                              horizon_cos.y));
     }
     return horizon_cos;
 }
 
-// search_horizon on the lean march: the same samples and the same horizon, with STEPS literal
-// steps and no branch (a sample with nothing to learn leaves the horizon as it was).
-fn march_horizon(s: Surface, slice: Slice, side: f32, jitter: f32, low_cos: f32) -> f32 {
-    let m = begin_side(s, slice, side);
-    var horizon_cos = low_cos;
-    for (var step = 0u; step < STEPS; step++) {
-        let distance_px = step_distance(step, STEPS, jitter, s.radius_px);
-        let sample = march_sample(s, m, distance_px);
-        let d2 = dot(sample.xyz, sample.xyz);
-        // As in search_horizon, a squared distance that underflowed to 0 (depths near 1e-30)
-        // would make the horizon NaN: such a sample leaves it as it was.
-        horizon_cos = select(horizon_cos, raise_horizon(s, sample.xyz, d2, low_cos, horizon_cos),
-                             sample.w > 0.0 & d2 > 0.0);
-    }
-    return horizon_cos;
-}
-
-// The horizon cosine `horizon_cos` after the sample at `offset` from the shaded point, of
-// squared length d2 > 0.
-fn raise_horizon(s: Surface, offset: vec3<f32>, d2: f32, low_cos: f32, horizon_cos: f32) -> f32 {
+// The horizon cosine `horizon_cos` on a side whose hemisphere edge is `low_cos`, after the
+// sample `sample` (its offset from the shaded point; w = 0 for one with nothing to learn, which
+// leaves the horizon as it was, without a branch).
+fn raise_horizon_cos(s: Surface, sample: vec4<f32>, low_cos: f32, horizon_cos: f32) -> f32 {
     // One inverse square root gives the distance and the cosine (on an H100 GTAO `high`'s
     // kernel took 0.976 to 0.989 of the time of length() and a division).
+    let d2 = dot(sample.xyz, sample.xyz);
     let inverse_distance = inverseSqrt(d2);
     let distance = d2 * inverse_distance;
     // Far samples fade towards the hemisphere's edge, so the radius has no hard rim.
-    let sample_cos = mix(low_cos, dot(offset, s.v) * inverse_distance, falloff_weight(s, distance));
+    let sample_cos = mix(low_cos, dot(sample.xyz, s.v) * inverse_distance,
+                         falloff_weight(s, distance));
     // Thickness heuristic (GTAO paper): a sample below the horizon pulls it back a little, as if
     // the occluder that raised it were only about as thick as it is wide. A sample above it
     // becomes the horizon: the blend never passes it, so the larger of the two is the result.
-    return max(sample_cos, mix(horizon_cos, sample_cos, ao.thickness));
+    let raised = max(sample_cos, mix(horizon_cos, sample_cos, ao.thickness));
+    // A sample lies off the shaded point, so its distance is positive, but its square
+    // underflows to 0 at tiny depths (1e-30): the horizon would then be NaN, which reads as AO
+    // 0. Such a sample says nothing.
+    return select(horizon_cos, raised, sample.w > 0.0 & d2 > 0.0);
 }
 
 // Cosine-weighted mean direction of the visible arc [h_neg, h_pos] of a slice, in the slice's
@@ -89,8 +79,9 @@ fn estimate(surface: Surface, noise: vec2<f32>) -> Estimate {
         // +omega side, cos(n - pi/2) = sin(n) on the other.
         let sin_n = sin(n);
         let jitter = fract(noise.y + f32(i) * GOLDEN_FRACTION);
-        let cos_pos = search_horizon(surface, slice, 1.0, jitter, -sin_n);
-        let cos_neg = search_horizon(surface, slice, -1.0, fract(jitter + 0.5), sin_n);
+        let horizon_cos = search_horizons(surface, slice, jitter, vec2<f32>(-sin_n, sin_n));
+        let cos_pos = horizon_cos.x;
+        let cos_neg = horizon_cos.y;
         // Horizon angles, clamped to the normal's hemisphere.
         let h_pos = n + min(fast_acos(cos_pos) - n, HALF_PI);
         let h_neg = n + max(-fast_acos(cos_neg) - n, -HALF_PI);
