@@ -44,8 +44,7 @@ for m in methods:
     cells.append(f"{mean_raw:.4f} -> **{mean_filtered:.4f}** ({100 * (mean_filtered / mean_raw - 1):+.0f}%)")
     print(f"| `{m}` | " + " | ".join(cells) + " |")
 PY
-FILE="$out/table.md" perl -0pi -e '
-    open my $f, "<", $ENV{FILE} or die; local $/; my $body = <$f>;
-    s/(<!-- filtered -->\n).*?(<!-- \/filtered -->)/$1\n$body\n$2/s
-        or die "no <!-- filtered --> markers in docs/quality.md\n"' docs/quality.md
+# shellcheck source=../scripts/splice.sh
+source scripts/splice.sh
+splice filtered "$out/table.md"
 echo "wrote the table between docs/quality.md's <!-- filtered --> markers"

@@ -60,8 +60,7 @@ for name, title in sets.items():
         print(f"| {v} | " + " | ".join(f"{rmse[name][m, v]:.4f}" for m in methods) + " |")
     print("| **mean** | " + " | ".join(f"**{mean[name, m]:.4f}**" for m in methods) + " |")
 PY
-FILE="$out/table.md" perl -0pi -e '
-    open my $f, "<", $ENV{FILE} or die; local $/; my $body = <$f>;
-    s/(<!-- heldout -->\n).*?(<!-- \/heldout -->)/$1\n$body\n$2/s
-        or die "no <!-- heldout --> markers in docs/quality.md\n"' docs/quality.md
+# shellcheck source=../scripts/splice.sh
+source scripts/splice.sh
+splice heldout "$out/table.md"
 echo "wrote the tables between docs/quality.md's <!-- heldout --> markers"

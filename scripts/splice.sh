@@ -1,11 +1,12 @@
-# Sourced by the scripts that write generated blocks into the method pages (bench/quality.sh,
-# scripts/settings-docs.sh).
+# Sourced by the scripts that write generated blocks into the pages (bench/quality.sh,
+# bench/filtered-quality.sh, bench/heldout-quality.sh, scripts/settings-docs.sh).
 #
 # splice MARKER FILE: replace what lies between <!-- MARKER --> and <!-- /MARKER --> in whichever
-# of docs/methods.md and docs/methods/*.md holds the marker with FILE, a blank line either side.
+# of docs/quality.md, docs/methods.md and docs/methods/*.md holds the marker with FILE, a blank
+# line either side.
 splice() {
     local page
-    page=$(grep -l -F -- "<!-- $1 -->" docs/methods.md docs/methods/*.md | head -n 1)
+    page=$(grep -l -F -- "<!-- $1 -->" docs/quality.md docs/methods.md docs/methods/*.md | head -n 1)
     [[ -n $page ]] || { echo "no marker $1" >&2; exit 1; }
     MARKER="$1" FILE="$2" perl -0pi -e '
         open my $f, "<", $ENV{FILE} or die; local $/; my $body = <$f>;
