@@ -11,18 +11,22 @@
 #
 #   cargo build --release -p aokit-cli
 #   target/release/aokit peer compile xegtao=PATH/TO/XeGTAO --out target/peer/xegtao
-#   bash bench/gpu-run.sh OUT [AOKIT] [PEER]
+#   bash bench/gpu-run.sh OUT [AOKIT] [PEER] [OLD]
 #
 # AOKIT defaults to target/release/aokit, PEER to target/peer/xegtao (without it the XeGTAO
-# rows are left out). Every file goes to OUT: device.txt (adapter, driver, date),
-# side-by-side-SCENE-SIZE.json, passes-sponza-atrium-SIZE.json; then
-# `python3 bench/performance_tables.py OUT` prints the tables. Takes about 3 minutes on an
-# H100.
+# rows are left out). OLD, an earlier build (e.g. a release binary of the commit the last GPU
+# run measured, kept as target/old/aokit), adds an A/B of the two builds' GTAO `high`, raw and
+# with the default filter, at the first size (bench/ab.sh, three rounds): how much a change
+# to the kernel measured only on a CPU moves it on the GPU. Every file goes to OUT: device.txt
+# (adapter, driver, date), side-by-side-SCENE-SIZE.json, passes-sponza-atrium-SIZE.json,
+# old-new-SCENE/summary.txt; then `python3 bench/performance_tables.py OUT` prints the tables.
+# Takes about 3 minutes on an H100, 4 with OLD.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=${1:?usage: bash bench/gpu-run.sh OUT [AOKIT] [PEER]}
+out=${1:?usage: bash bench/gpu-run.sh OUT [AOKIT] [PEER] [OLD]}
 aokit=${2:-target/release/aokit}
 peer=${3:-target/peer/xegtao}
+old=${4:-}
 # shellcheck source=bench-common.sh
 source bench/bench-common.sh "$aokit" "$out"
 {
@@ -77,6 +81,17 @@ for scene in "${scenes[@]}"; do
             -- "${configurations[@]}"
     done
 done
+if [ -n "$old" ]; then
+    for scene in "${scenes[@]}"; do
+        set_view "$scene"
+        mkdir -p "$out/old-new-$scene"
+        bash bench/ab.sh -r 3 -o "$out/old-new-$scene" "$old" "$aokit" -- "${view[@]}" \
+            --size "${sizes[0]}" --timing-frames "$frames" --warmup "$warmup" --compare \
+            "$gtao --set spatial.enabled=false" "$gtao --set spatial.enabled=true" \
+            >"$out/old-new-$scene/summary.txt"
+        echo "wrote $out/old-new-$scene/summary.txt" >&2
+    done
+fi
 passes=(
     ""
     "--set spatial.enabled=true --set spatial.kind=bilateral"
