@@ -259,6 +259,13 @@ fn step_count() -> u32 {
 }
 // With LEAN, `ao.step_power` (step_fraction).
 override STEP_POWER: f32 = 1.0;
+// With LEAN, `ao.thickness`: GTAO's thickness blend (gtao.wgsl) is then gone from the loop at
+// 0, the `ultra` preset's value, which leaves the larger of the horizon and the sample.
+override THICKNESS: f32 = 0.0;
+
+fn blend_thickness() -> f32 {
+    return select(ao.thickness, THICKNESS, LEAN);
+}
 // With LEAN, whether the view is orthographic (`view.orthographic`): each kernel then holds
 // the arithmetic of its projection only.
 override ORTHOGRAPHIC: bool = false;

@@ -41,7 +41,7 @@ fn raise_horizon_cos(s: Surface, sample: vec4<f32>, low_cos: f32, horizon_cos: f
     // Thickness heuristic (GTAO paper): a sample below the horizon pulls it back a little, as if
     // the occluder that raised it were only about as thick as it is wide. A sample above it
     // becomes the horizon: the blend never passes it, so the larger of the two is the result.
-    let raised = max(sample_cos, mix(horizon_cos, sample_cos, ao.thickness));
+    let raised = max(sample_cos, mix(horizon_cos, sample_cos, blend_thickness()));
     // A sample lies off the shaded point, so its distance is positive, but its square
     // underflows to 0 at tiny depths (1e-30): the horizon would then be NaN, which reads as AO
     // 0. Such a sample says nothing.

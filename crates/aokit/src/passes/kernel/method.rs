@@ -75,6 +75,7 @@ impl Variant {
                 slices: uniforms.count,
                 steps: uniforms.steps,
                 step_power: settings.step_power.to_bits(),
+                thickness: uniforms.thickness.to_bits(),
                 orthographic: false,
             });
         Self {
@@ -112,6 +113,7 @@ impl Variant {
                 ("SLICES", f64::from(lean.slices)),
                 ("STEPS", f64::from(lean.steps)),
                 ("STEP_POWER", f64::from(f32::from_bits(lean.step_power))),
+                ("THICKNESS", f64::from(f32::from_bits(lean.thickness))),
                 ("ORTHOGRAPHIC", f64::from(u8::from(lean.orthographic))),
             ]);
         }
@@ -119,14 +121,15 @@ impl Variant {
     }
 }
 
-/// What the lean slice march compiles in: slices, steps per side, the step power's bits (a
-/// float is no hash key) and whether the projection is orthographic, which only the frame
-/// knows (`MethodPass::encode`).
+/// What the lean slice march compiles in: slices, steps per side, the step power's and the
+/// thickness's bits (a float is no hash key) and whether the projection is orthographic, which
+/// only the frame knows (`MethodPass::encode`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 struct Lean {
     slices: u32,
     steps: u32,
     step_power: u32,
+    thickness: u32,
     orthographic: bool,
 }
 
