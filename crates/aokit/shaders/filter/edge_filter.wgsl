@@ -41,6 +41,50 @@ fn gather_normals_3x3(corner: vec2<f32>) -> array<u32, 9> {
     return array<u32, 9>(a.w, a.z, b.z, a.x, a.y, b.y, c.x, c.y, d.y);
 }
 
+// What every tap's weight takes from the centre pixel.
+struct Centre {
+    pixel: vec2<i32>,
+    depth: f32,
+    // depth_scale / depth: a relative depth difference in units of depth_sigma.
+    relative_scale: f32,
+    // The spatial factor of a neighbour sharing an edge; a diagonal one's is its square (k^2 =
+    // 2). The same for every pixel, so a tap takes only its depth's (and normal's) exp2.
+    edge_weight: f32,
+    n0: vec3<f32>,
+}
+
+// The neighbour `offset` away (depth `d`, AO `ao`, oct32 normal `packed`): its weighted AO and
+// its weight.
+fn tap(c: Centre, offset: vec2<i32>, d: f32, ao: f32, packed: u32) -> vec2<f32> {
+    let at = c.pixel + offset;
+    // 0 at the centre's depth even where relative_scale overflowed to infinity (a denormal
+    // depth): 0 * infinity would be NaN.
+    let r = select(abs(d - c.depth) * c.relative_scale, 0.0, d == c.depth);
+    let spatial_weight =
+        select(1.0, c.edge_weight, offset.x != 0) * select(1.0, c.edge_weight, offset.y != 0);
+    var log2_w = 0.0;
+    var kept = all(at >= vec2<i32>(0)) && all(at < vec2<i32>(view.size)) && d != NO_SURFACE;
+    if DEPTH_WEIGHT == DEPTH_THRESHOLD {
+        kept = kept && r < 1.0;
+    } else {
+        log2_w -= 0.5 * LOG2_E * r * r;
+    }
+    var w = spatial_weight;
+    if NORMAL_WEIGHT {
+        let facing = max(dot(unpack_oct32(packed), c.n0), 0.0);
+        // A neighbour facing away weighs nothing (log2(0) is left to the implementation).
+        kept = kept && facing > 0.0;
+        let normal = normal_weight(facing);
+        log2_w += normal.log2;
+        w *= normal.factor;
+    }
+    if DEPTH_WEIGHT != DEPTH_THRESHOLD || (NORMAL_WEIGHT && NORMAL_SQUARINGS < 0) {
+        w *= exp2(log2_w);
+    }
+    w = select(0.0, w, kept);
+    return vec2<f32>(w * ao, w);
+}
+
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     if any(id.xy >= vec2<u32>(view.size)) {
@@ -54,50 +98,26 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let aos = gather_3x3(ao_in, vec2<f32>(id.xy));
-    var packed_normals: array<u32, 9>;
+    var normals = array<u32, 9>();
     var n0 = vec3<f32>(0.0);
     if NORMAL_WEIGHT {
-        packed_normals = gather_normals_3x3(vec2<f32>(id.xy));
-        n0 = unpack_oct32(packed_normals[4]);
+        normals = gather_normals_3x3(vec2<f32>(id.xy));
+        n0 = unpack_oct32(normals[4]);
     }
-    let relative_scale = spatial.depth_scale / depth;
-    // The spatial factor of a neighbour sharing an edge, and of a diagonal one (k^2 = 2): the
-    // same for every pixel, so the taps take only their depth's (and normal's) exp2.
-    let edge_weight = exp2(-0.5 * LOG2_E * spatial.spatial_scale * spatial.spatial_scale);
-    let size = vec2<i32>(view.size);
-    var sum = 0.0;
-    var weight_sum = 0.0;
-    for (var k = 0; k < 9; k++) {
-        let offset = vec2<i32>(k % 3 - 1, k / 3 - 1);
-        let at = centre + offset;
-        let d = depths[k];
-        // 0 at the centre's depth even where relative_scale overflowed to infinity (a denormal
-        // depth): 0 * infinity would be NaN.
-        let r = select(abs(d - depth) * relative_scale, 0.0, d == depth);
-        let spatial_weight =
-            select(1.0, edge_weight, offset.x != 0) * select(1.0, edge_weight, offset.y != 0);
-        var log2_w = 0.0;
-        var kept = all(at >= vec2<i32>(0)) && all(at < size) && d != NO_SURFACE;
-        if DEPTH_WEIGHT == DEPTH_THRESHOLD {
-            kept = kept && r < 1.0;
-        } else {
-            log2_w -= 0.5 * LOG2_E * r * r;
-        }
-        var w = spatial_weight;
-        if NORMAL_WEIGHT {
-            let facing = max(dot(unpack_oct32(packed_normals[k]), n0), 0.0);
-            // A neighbour facing away weighs nothing (log2(0) is left to the implementation).
-            kept = kept && facing > 0.0;
-            let normal = normal_weight(facing);
-            log2_w += normal.log2;
-            w *= normal.factor;
-        }
-        if DEPTH_WEIGHT != DEPTH_THRESHOLD || (NORMAL_WEIGHT && NORMAL_SQUARINGS < 0) {
-            w *= exp2(log2_w);
-        }
-        w = select(0.0, w, kept);
-        sum += w * aos[k];
-        weight_sum += w;
-    }
-    textureStore(ao_out, centre, vec4<f32>(sum / weight_sum, 0.0, 0.0, 0.0));
+    let c = Centre(centre, depth, spatial.depth_scale / depth,
+                   exp2(-0.5 * LOG2_E * spatial.spatial_scale * spatial.spatial_scale), n0);
+    // The nine taps written out, row by row from the top left as gather_3x3 returns them, so
+    // that every index into the arrays is a constant: a loop's index is one at run time, which
+    // takes a bounds check a read and keeps the arrays in memory (on lavapipe the pass took
+    // about three times as long as without the checks).
+    let sums = tap(c, vec2<i32>(-1, -1), depths[0], aos[0], normals[0])
+        + tap(c, vec2<i32>(0, -1), depths[1], aos[1], normals[1])
+        + tap(c, vec2<i32>(1, -1), depths[2], aos[2], normals[2])
+        + tap(c, vec2<i32>(-1, 0), depths[3], aos[3], normals[3])
+        + tap(c, vec2<i32>(0, 0), depths[4], aos[4], normals[4])
+        + tap(c, vec2<i32>(1, 0), depths[5], aos[5], normals[5])
+        + tap(c, vec2<i32>(-1, 1), depths[6], aos[6], normals[6])
+        + tap(c, vec2<i32>(0, 1), depths[7], aos[7], normals[7])
+        + tap(c, vec2<i32>(1, 1), depths[8], aos[8], normals[8]);
+    textureStore(ao_out, centre, vec4<f32>(sums.x / sums.y, 0.0, 0.0, 0.0));
 }
