@@ -266,6 +266,7 @@ override THICKNESS: f32 = 0.0;
 fn blend_thickness() -> f32 {
     return select(ao.thickness, THICKNESS, LEAN);
 }
+
 // With LEAN, whether the view is orthographic (`view.orthographic`): each kernel then holds
 // the arithmetic of its projection only.
 override ORTHOGRAPHIC: bool = false;
@@ -311,12 +312,12 @@ fn begin_side(s: Surface, slice: Slice, side: f32) -> SideMarch {
 
 // side_sample for the lean march, the same sample without branches: the offset from the shaded
 // point in xyz, w = 1, or w = 0 where there is nothing to learn (off screen with
-// OFFSCREEN_UNOCCLUDED, or no surface). The nearest texel's
-// point is moved onto the view ray through the sample as slice_sample does; the fetch goes
-// through the clamping sampler, so a sample off screen reads the last texel on screen, which
-// OFFSCREEN_CLAMP places as side_sample does and OFFSCREEN_UNOCCLUDED weighs 0. With
-// OFFSCREEN_EXTEND one off screen lies on the side's edge plane instead (read once in
-// begin_side), selected without a branch: a few multiply-adds and a division.
+// OFFSCREEN_UNOCCLUDED, or no surface). The nearest texel's point is moved onto the view ray
+// through the sample as slice_sample does; the fetch goes through the clamping sampler, so a
+// sample off screen reads the last texel on screen, which OFFSCREEN_CLAMP places as side_sample
+// does and OFFSCREEN_UNOCCLUDED weighs 0. With OFFSCREEN_EXTEND one off screen lies on the
+// side's edge plane instead (read once in begin_side), selected without a branch: a few
+// multiply-adds and a division.
 fn march_sample(s: Surface, m: SideMarch, distance_px: f32) -> vec4<f32> {
     let q = s.center + m.dir * distance_px;
     let inside = all(q >= vec2<f32>(0.0)) && all(q < view.size);

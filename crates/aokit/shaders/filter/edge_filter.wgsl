@@ -109,7 +109,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     // The nine taps written out, row by row from the top left as gather_3x3 returns them, so
     // that every index into the arrays is a constant: a loop's index is one at run time, which
     // takes a bounds check a read and keeps the arrays in memory (on lavapipe the pass took
-    // about three times as long as without the checks).
+    // about three times as long that way).
     let sums = tap(c, vec2<i32>(-1, -1), depths[0], aos[0], normals[0])
         + tap(c, vec2<i32>(0, -1), depths[1], aos[1], normals[1])
         + tap(c, vec2<i32>(1, -1), depths[2], aos[2], normals[2])

@@ -122,8 +122,8 @@ impl Variant {
 }
 
 /// What the lean slice march compiles in: slices, steps per side, the step power's and the
-/// thickness's bits (a float is no hash key) and whether the projection is orthographic, which
-/// only the frame knows (`MethodPass::encode`).
+/// thickness's bits (a float is no hash key; only GTAO's kernel reads the thickness) and
+/// whether the projection is orthographic, which only the frame knows (`MethodPass::encode`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 struct Lean {
     slices: u32,
