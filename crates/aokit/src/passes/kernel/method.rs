@@ -75,7 +75,7 @@ impl Variant {
                 slices: uniforms.count,
                 steps: uniforms.steps,
                 step_power: settings.step_power.to_bits(),
-                thickness: uniforms.thickness.to_bits(),
+                thickness_blend: uniforms.thickness > 0.0,
                 orthographic: false,
             });
         Self {
@@ -113,7 +113,7 @@ impl Variant {
                 ("SLICES", f64::from(lean.slices)),
                 ("STEPS", f64::from(lean.steps)),
                 ("STEP_POWER", f64::from(f32::from_bits(lean.step_power))),
-                ("THICKNESS", f64::from(f32::from_bits(lean.thickness))),
+                ("THICKNESS_BLEND", f64::from(u8::from(lean.thickness_blend))),
                 ("ORTHOGRAPHIC", f64::from(u8::from(lean.orthographic))),
             ]);
         }
@@ -121,17 +121,24 @@ impl Variant {
     }
 }
 
-/// What the lean slice march compiles in: slices, steps per side, the step power's and the
-/// thickness's bits (a float is no hash key; only GTAO's kernel reads the thickness) and
-/// whether the projection is orthographic, which only the frame knows (`MethodPass::encode`).
+/// What the lean slice march compiles in: slices, steps per side, the step power's bits (a
+/// float is no hash key), whether the thickness is above 0 (GTAO's blend; the other kernels
+/// ignore it) and whether the projection is orthographic, which only the frame knows
+/// (`MethodPass::encode`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 struct Lean {
     slices: u32,
     steps: u32,
     step_power: u32,
-    thickness: u32,
+    thickness_blend: bool,
     orthographic: bool,
 }
+
+/// Kernels a [`MethodPass`] keeps compiled: more than a renderer switches between (methods,
+/// noise kinds, the depth chain on and off), and a bound on what a slider or a search through a
+/// value compiled in (the step power) would otherwise keep, a pipeline of every value it
+/// passed through.
+const MAX_KERNELS: usize = 16;
 
 /// Runs the kernel of the current method.
 pub struct MethodPass {
@@ -297,8 +304,13 @@ impl MethodPass {
         ctx.dispatch(kernel, &resources);
     }
 
-    /// Compiles `method`'s kernel for `variant` unless it is already.
+    /// Compiles `method`'s kernel for `variant` unless it is already. A value compiled in (the
+    /// step power) makes a variant of every value a slider or a search passes through, so once
+    /// [`MAX_KERNELS`] are kept the others go before the next is compiled.
     fn kernel(&mut self, device: &wgpu::Device, method: Method, variant: Variant) {
+        if !self.kernels.contains_key(&(method, variant)) && self.kernels.len() >= MAX_KERNELS {
+            self.kernels.clear();
+        }
         self.kernels.entry((method, variant)).or_insert_with(|| {
             ComputeKernel::with_constants(
                 device,
@@ -375,6 +387,38 @@ mod tests {
         }
         settings.method = Method::Ssao;
         assert_eq!(code(&settings), None);
+    }
+
+    #[test]
+    fn the_lean_variant_tells_a_thickness_of_0_from_the_others_only() {
+        let at = |thickness| {
+            let mut settings = AoSettings::preset(Method::Gtao, crate::Preset::High);
+            settings.gtao.thickness = thickness;
+            Variant::of(&settings)
+        };
+        assert_eq!(at(0.1), at(0.7));
+        assert_ne!(at(0.0), at(0.1));
+    }
+
+    #[test]
+    fn a_pass_keeps_at_most_max_kernels_compiled() {
+        let gpu = crate::passes::filter::spatial_filter::tests::gpu();
+        let mut settings = AoSettings::preset(Method::Gtao, crate::Preset::Low);
+        let mut pass = MethodPass::new(&gpu.device, &gpu.queue, &settings);
+        // A search through step powers, one variant each.
+        for k in 0..MAX_KERNELS + 4 {
+            settings.step_power = 1.0 + 0.25 * k as f32;
+            pass.kernel(&gpu.device, Method::Gtao, Variant::of(&settings));
+            assert!(
+                pass.kernels.len() <= MAX_KERNELS,
+                "{} kernels",
+                pass.kernels.len()
+            );
+            assert!(
+                pass.kernels
+                    .contains_key(&(Method::Gtao, Variant::of(&settings)))
+            );
+        }
     }
 
     #[test]
