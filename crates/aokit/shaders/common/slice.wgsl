@@ -259,14 +259,8 @@ fn step_count() -> u32 {
 }
 // With LEAN, `ao.step_power` (step_fraction).
 override STEP_POWER: f32 = 1.0;
-// With LEAN, whether `ao.thickness` is above 0: GTAO's thickness blend (gtao.wgsl) is gone
-// from the loop at 0, the `ultra` preset's value, which leaves the larger of the horizon and
-// the sample.
+// With LEAN, whether `ao.thickness` is above 0 (GTAO's thickness blend, gtao.wgsl).
 override THICKNESS_BLEND: bool = true;
-
-fn blend_thickness() -> f32 {
-    return select(ao.thickness, 0.0, LEAN && !THICKNESS_BLEND);
-}
 
 // With LEAN, whether the view is orthographic (`view.orthographic`): each kernel then holds
 // the arithmetic of its projection only.

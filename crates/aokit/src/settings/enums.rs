@@ -596,7 +596,8 @@ named_enum! {
         /// Each side of a slice set up once: the view ray through a sample is affine in its
         /// distance along the slice, so a sample costs one fetch through the clamping sampler
         /// and a few multiply-adds, with validity a select instead of branches, and the slice
-        /// and step counts, the step power and GTAO's thickness compiled in.
+        /// and step counts, the step power and whether GTAO's thickness is above 0 compiled
+        /// in.
         #[default]
         Lean = "lean",
         /// Every sample placed from scratch (`side_sample` in common/slice.wgsl), with a

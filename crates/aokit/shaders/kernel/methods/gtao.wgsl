@@ -26,6 +26,12 @@ fn search_horizons(s: Surface, slice: Slice, jitter: f32, low_cos: vec2<f32>) ->
     return horizon_cos;
 }
 
+// `ao.thickness`, compiled in as 0 where the lean march knows it is: the blend below then leaves
+// the loop (the `ultra` preset's value), which keeps the larger of the horizon and the sample.
+fn blend_thickness() -> f32 {
+    return select(ao.thickness, 0.0, LEAN && !THICKNESS_BLEND);
+}
+
 // The horizon cosine `horizon_cos` on a side whose hemisphere edge is `low_cos`, after the
 // sample `sample` (its offset from the shaded point; w = 0 for one with nothing to learn, which
 // leaves the horizon as it was, without a branch).

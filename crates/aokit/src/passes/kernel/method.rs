@@ -304,9 +304,8 @@ impl MethodPass {
         ctx.dispatch(kernel, &resources);
     }
 
-    /// Compiles `method`'s kernel for `variant` unless it is already. A value compiled in (the
-    /// step power) makes a variant of every value a slider or a search passes through, so once
-    /// [`MAX_KERNELS`] are kept the others go before the next is compiled.
+    /// Compiles `method`'s kernel for `variant` unless it is already; with [`MAX_KERNELS`] kept,
+    /// the others go first.
     fn kernel(&mut self, device: &wgpu::Device, method: Method, variant: Variant) {
         if !self.kernels.contains_key(&(method, variant)) && self.kernels.len() >= MAX_KERNELS {
             self.kernels.clear();
