@@ -122,6 +122,7 @@ mod tests {
         Image, SIZE, STEP_X, gpu, hash, image, run_filter, standard_deviation,
     };
     use crate::settings::DepthWeight;
+    use glam::Vec3;
 
     #[test]
     fn constants_match_wgsl() {
@@ -190,6 +191,29 @@ mod tests {
         };
         assert!(largest(&squared, &logarithm) < 1e-4);
         assert!(largest(&squared, &without) > 1e-2);
+    }
+
+    #[test]
+    fn a_crease_keeps_its_sides_apart_diagonal_taps_included() {
+        // One depth on both sides of column STEP_X, where the normal turns by 106 degrees: only
+        // the normal weight tells the sides apart, and the diagonal taps take theirs from the
+        // edge neighbours beside them.
+        let mut crease = image(|near, _, _| if near { 0.2 } else { 0.7 });
+        for (i, (depth, normal)) in crease.depth.iter_mut().zip(&mut crease.normals).enumerate() {
+            if *depth != 0.0 {
+                let left = (i as u32 % SIZE[0]) < STEP_X;
+                *depth = 3.0;
+                *normal = Vec3::new(if left { -0.8 } else { 0.8 }, 0.0, 0.6);
+            }
+        }
+        let filtered = filter(&gpu(), &variants()[0], &crease);
+        for (i, &ao) in filtered.iter().enumerate() {
+            let expected = match crease.depth[i] {
+                0.0 => 1.0,
+                _ => crease.ao[i],
+            };
+            assert!((ao - expected).abs() < 1e-5, "pixel {i} reads {ao}");
+        }
     }
 
     #[test]
