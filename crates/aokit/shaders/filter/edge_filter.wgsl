@@ -9,12 +9,11 @@
 //     w = exp(-k^2 / (2 sigma^2)) * exp(-r^2 / (2 depth_sigma^2))     (gaussian)
 //     w = exp(-k^2 / (2 sigma^2)) * (r < depth_sigma)                  (threshold)
 //
-// times f^normal_power when that power is above 0, with the bilateral kind's settings and the
-// centre's weight 1. For the four neighbours sharing an edge f = max(0, n . n0), how far each
-// faces the centre's way; a diagonal neighbour takes the product of the two edge neighbours'
-// beside it (as XeGTAO weighs a diagonal tap by the edges between, Strugar 2021), so that
-// two gathers bring every normal the weights read. Pixels without a surface, and texels
-// outside the image, never contribute; a pixel without a surface keeps AO 1.
+// with the bilateral kind's settings and the centre's weight 1, and the four neighbours sharing
+// an edge times max(0, n . n0)^normal_power when that power is above 0: how far each faces the
+// centre's way. The diagonal neighbours take no normal weight, so two gathers bring every
+// normal the weights read (edge_facings). Pixels without a surface, and texels outside the
+// image, never contribute; a pixel without a surface keeps AO 1.
 
 @group(0) @binding(2) var ao_in: texture_2d<f32>;
 @group(0) @binding(3) var linear_depth: texture_2d<f32>;
@@ -37,10 +36,9 @@ fn gather_3x3(t: texture_2d<f32>, corner: vec2<f32>) -> array<f32, 9> {
 
 // How far the edge neighbours face the centre's way, max(0, n . n0) of the top, left, right and
 // bottom one in x, y, z, w: the oct32 normals of the two gathers at the centre texel's
-// top-left and bottom-right corners, which both hold the centre. Against the diagonals' own
-// normals (four gathers and nine decodes a pixel) the error was the same on the seven tuning
-// views, GTAO `high` 0.0747, and 0.0595 against 0.0593 on the ten held-out ones; on lavapipe the
-// filtered frame took 0.97 of its time.
+// top-left and bottom-right corners, which both hold the centre. Weighing the diagonals by
+// their own normals as well (four gathers and nine decodes a pixel) gave no lower error
+// (docs/denoise.md#edges-kind), and on lavapipe the filtered frame takes 0.97 of that time.
 fn edge_facings(corner: vec2<f32>) -> vec4<f32> {
     let a = textureGather(0, normals, point_clamp, corner * view.inv_size);
     let d = textureGather(0, normals, point_clamp, (corner + vec2<f32>(1.0)) * view.inv_size);
@@ -62,7 +60,7 @@ struct Centre {
 }
 
 // The neighbour `offset` away (depth `d`, AO `ao`, facing the centre's way as far as `facing`
-// says, 1 for the centre): its weighted AO and its weight.
+// says; 1 for the centre and the diagonals): its weighted AO and its weight.
 fn tap(c: Centre, offset: vec2<i32>, d: f32, ao: f32, facing: f32) -> vec2<f32> {
     let at = c.pixel + offset;
     // 0 at the centre's depth even where relative_scale overflowed to infinity (a denormal
@@ -116,14 +114,14 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     // that every index into the arrays is a constant: a loop's index is one at run time, which
     // takes a bounds check a read and keeps the arrays in memory (on lavapipe the pass took
     // about three times as long that way).
-    let sums = tap(c, vec2<i32>(-1, -1), depths[0], aos[0], f.x * f.y)
+    let sums = tap(c, vec2<i32>(-1, -1), depths[0], aos[0], 1.0)
         + tap(c, vec2<i32>(0, -1), depths[1], aos[1], f.x)
-        + tap(c, vec2<i32>(1, -1), depths[2], aos[2], f.x * f.z)
+        + tap(c, vec2<i32>(1, -1), depths[2], aos[2], 1.0)
         + tap(c, vec2<i32>(-1, 0), depths[3], aos[3], f.y)
         + tap(c, vec2<i32>(0, 0), depths[4], aos[4], 1.0)
         + tap(c, vec2<i32>(1, 0), depths[5], aos[5], f.z)
-        + tap(c, vec2<i32>(-1, 1), depths[6], aos[6], f.w * f.y)
+        + tap(c, vec2<i32>(-1, 1), depths[6], aos[6], 1.0)
         + tap(c, vec2<i32>(0, 1), depths[7], aos[7], f.w)
-        + tap(c, vec2<i32>(1, 1), depths[8], aos[8], f.w * f.z);
+        + tap(c, vec2<i32>(1, 1), depths[8], aos[8], 1.0);
     textureStore(ao_out, centre, vec4<f32>(sums.x / sums.y, 0.0, 0.0, 0.0));
 }

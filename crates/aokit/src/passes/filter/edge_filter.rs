@@ -194,10 +194,10 @@ mod tests {
     }
 
     #[test]
-    fn a_crease_keeps_its_sides_apart_diagonal_taps_included() {
-        // One depth on both sides of column STEP_X, where the normal turns by 106 degrees: only
-        // the normal weight tells the sides apart, and the diagonal taps take theirs from the
-        // edge neighbours beside them.
+    fn across_a_crease_the_edge_neighbours_drop_out_and_the_diagonals_weigh_by_depth() {
+        // One depth on both sides of column STEP_X, where the normal turns by 106 degrees: the
+        // normal weight drops the neighbour across the crease that shares an edge; the diagonal
+        // ones take no normal weight (edge_facings), so they count as on a plane.
         let mut crease = image(|near, _, _| if near { 0.2 } else { 0.7 });
         for (i, (depth, normal)) in crease.depth.iter_mut().zip(&mut crease.normals).enumerate() {
             if *depth != 0.0 {
@@ -206,13 +206,30 @@ mod tests {
                 *normal = Vec3::new(if left { -0.8 } else { 0.8 }, 0.0, 0.6);
             }
         }
-        let filtered = filter(&gpu(), &variants()[0], &crease);
-        for (i, &ao) in filtered.iter().enumerate() {
-            let expected = match crease.depth[i] {
-                0.0 => 1.0,
-                _ => crease.ao[i],
-            };
-            assert!((ao - expected).abs() < 1e-5, "pixel {i} reads {ao}");
+        let settings = variants()[0];
+        let filtered = filter(&gpu(), &settings, &crease);
+        // The spatial factor of an edge neighbour; a diagonal one's is its square.
+        let k = (-0.5 / (settings.sigma * settings.sigma)).exp();
+        // Beside the crease: the centre, three edge and two diagonal neighbours on its own
+        // side, two diagonal ones across.
+        let beside = |own: f32, across: f32| {
+            (own * (1.0 + 3.0 * k + 2.0 * k * k) + across * 2.0 * k * k)
+                / (1.0 + 3.0 * k + 4.0 * k * k)
+        };
+        for y in 12..SIZE[1] - 2 {
+            for x in [STEP_X - 2, STEP_X - 1, STEP_X, STEP_X + 1] {
+                let i = (y * SIZE[0] + x) as usize;
+                let expected = match x {
+                    x if x == STEP_X - 1 => beside(0.2, 0.7),
+                    x if x == STEP_X => beside(0.7, 0.2),
+                    _ => crease.ao[i],
+                };
+                assert!(
+                    (filtered[i] - expected).abs() < 1e-4,
+                    "({x}, {y}) reads {} for {expected}",
+                    filtered[i]
+                );
+            }
         }
     }
 
