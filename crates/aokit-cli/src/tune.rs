@@ -315,12 +315,14 @@ fn dimensions(method: Method, back_faces: bool, at: &Candidate, samples: u32) ->
         Method::Gtao => &[0.0, 0.05, 0.1, 0.2, 0.3, 0.5],
         // Measured from the back faces, solids are as thick as they are, and the knob is the
         // least thickness, for poles and fences whose back faces lie closer or were not seen.
-        Method::Vbao if back_faces => &[0.05, 0.1, 0.15, 0.2, 0.3, 0.45, 0.6],
-        // Finer between 0.4 and 0.7, where the views trade: boxes and steps want it thick, the
+        // Finer between 0.45 and 0.6: at `low` GTAO's error bounds `thin` from one side and the
+        // atrium from the other, and only 0.5 lay between (2026-11-28).
+        Method::Vbao if back_faces => &[0.05, 0.1, 0.15, 0.2, 0.3, 0.45, 0.5, 0.55, 0.6],
+        // Finer between 0.4 and 0.8, where the views trade: boxes and steps want it thick, the
         // pillars and fences of `thin` thin, and the bound on each view (TuneArgs::unbounded)
         // leaves a narrow band.
         Method::Vbao => &[
-            0.2, 0.3, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.8, 1.0, 1.3,
+            0.2, 0.3, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 1.0, 1.3,
         ],
         // Unity's slider runs from 1 to 10; below 1 rejects occluders of a plain crease.
         Method::Msvo => &[0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0],

@@ -92,7 +92,7 @@ impl AoSettings {
 /// or were not seen.
 pub(crate) fn back_faces_tuned(preset: Preset) -> Tuned {
     match preset {
-        Preset::Low => tuned([1, 2], 1.0, 0.0, 0.6, 1.4, 1.2),
+        Preset::Low => tuned([1, 2], 1.0, 0.0, 0.5, 1.4, 1.2),
         Preset::Medium => tuned([1, 4], 2.0, 0.0, 0.1, 1.25, 1.2),
         Preset::High => tuned([3, 3], 1.5, 0.0, 0.2, 1.1, 1.35),
         Preset::Ultra => tuned([3, 9], 1.75, 0.0, 0.05, 1.0, 1.1),
@@ -123,7 +123,7 @@ pub(super) const SPEC: MethodSpec = MethodSpec {
     method: Method::Vbao,
     shader: shader::VBAO,
     tuned: |preset| match preset {
-        Preset::Low => tuned([1, 2], 1.0, 0.0, 0.8, 1.4, 1.1),
+        Preset::Low => tuned([1, 2], 1.0, 0.0, 0.75, 1.4, 1.1),
         Preset::Medium => tuned([1, 4], 1.75, 0.0, 0.5, 1.0, 1.2),
         Preset::High => tuned([3, 3], 1.0, 0.0, 0.6, 1.1, 1.1),
         Preset::Ultra => tuned([3, 9], 1.75, 0.0, 0.2, 1.0, 1.1),
