@@ -38,7 +38,8 @@ fn gather_3x3(t: texture_2d<f32>, corner: vec2<f32>) -> array<f32, 9> {
 // bottom one in x, y, z, w: the oct32 normals of the two gathers at the centre texel's
 // top-left and bottom-right corners, which both hold the centre. Weighing the diagonals by
 // their own normals as well (four gathers and nine decodes a pixel) gave no lower error
-// (docs/denoise.md#edges-kind), and on lavapipe the filtered frame takes 0.97 of that time.
+// (docs/denoise.md#edges-kind), and on lavapipe the filtered frame takes 0.96 to 0.98 of that
+// time.
 fn edge_facings(corner: vec2<f32>) -> vec4<f32> {
     let a = textureGather(0, normals, point_clamp, corner * view.inv_size);
     let d = textureGather(0, normals, point_clamp, (corner + vec2<f32>(1.0)) * view.inv_size);
