@@ -9,11 +9,11 @@
 //     w = exp(-k^2 / (2 sigma^2)) * exp(-r^2 / (2 depth_sigma^2))     (gaussian)
 //     w = exp(-k^2 / (2 sigma^2)) * (r < depth_sigma)                  (threshold)
 //
-// with the bilateral kind's settings and the centre's weight 1, and the four neighbours sharing
-// an edge times max(0, n . n0)^normal_power when that power is above 0: how far each faces the
-// centre's way. The diagonal neighbours take no normal weight, so two gathers bring every
-// normal the weights read (edge_facings). Pixels without a surface, and texels outside the
-// image, never contribute; a pixel without a surface keeps AO 1.
+// with the bilateral kind's settings; the centre weighs 1. When normal_power is above 0, the
+// four neighbours sharing an edge also weigh max(0, n . n0)^normal_power, how far each faces the
+// centre's way; the diagonal ones do not, so two gathers bring every normal read (edge_facings).
+// Pixels without a surface, and texels outside the image, never contribute; a pixel without a
+// surface keeps AO 1.
 
 @group(0) @binding(2) var ao_in: texture_2d<f32>;
 @group(0) @binding(3) var linear_depth: texture_2d<f32>;
@@ -36,10 +36,9 @@ fn gather_3x3(t: texture_2d<f32>, corner: vec2<f32>) -> array<f32, 9> {
 
 // How far the edge neighbours face the centre's way, max(0, n . n0) of the top, left, right and
 // bottom one in x, y, z, w: the oct32 normals of the two gathers at the centre texel's
-// top-left and bottom-right corners, which both hold the centre. Weighing the diagonals by
-// their own normals as well (four gathers and nine decodes a pixel) gave no lower error
-// (docs/denoise.md#edges-kind), and on lavapipe the filtered frame takes 0.96 to 0.98 of that
-// time.
+// top-left and bottom-right corners, which both hold the centre. The diagonals' normals as well
+// would take four gathers and nine decodes, for no lower error
+// (docs/notes/performance-investigations.md, "The edge filter's inputs").
 fn edge_facings(corner: vec2<f32>) -> vec4<f32> {
     let a = textureGather(0, normals, point_clamp, corner * view.inv_size);
     let d = textureGather(0, normals, point_clamp, (corner + vec2<f32>(1.0)) * view.inv_size);
