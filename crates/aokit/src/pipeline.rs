@@ -100,6 +100,7 @@ fn crop(
     let working = [
         Target::Ao,
         Target::BentNormals,
+        Target::AoAndDepth,
         Target::WorkingLinearDepth,
         Target::WorkingNormals,
         Target::WorkingMotionVectors,

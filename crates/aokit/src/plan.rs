@@ -53,6 +53,9 @@ pub(crate) enum Target {
     /// The kernel's AO and bent normals, at working size.
     Ao,
     BentNormals,
+    /// The kernel's AO and the working depth packed in one texel, for the edges kind
+    /// ([`SpatialSettings::packed_input`](crate::SpatialSettings::packed_input)).
+    AoAndDepth,
     /// The upsample's AO and bent normals, at the input's size.
     UpsampledAo,
     UpsampledBentNormals,
@@ -84,6 +87,8 @@ pub(crate) enum Kernel {
         bent_normals: bool,
         depth_mip_atlas: bool,
         back_thickness: bool,
+        /// Writes [`Target::AoAndDepth`] too.
+        ao_and_depth: bool,
     },
     /// MSVO's passes, one per level of the chain, merged.
     Msvo { levels: u32 },
@@ -137,13 +142,15 @@ pub(crate) enum Pass {
     },
     /// `ao`, `depth` (and `normals` for the kinds that read them) -> [`Target::SpatialScratch`]
     /// (not for `edges`) -> [`Target::SpatialAo`]; `packed` writes AO and depth together there
-    /// for the temporal filter.
+    /// for the temporal filter. With `ao_and_depth` the edges kind reads the two from
+    /// [`Target::AoAndDepth`] instead.
     Spatial {
         kind: SpatialKind,
         ao: Target,
         depth: Target,
         normals: Target,
         packed: bool,
+        ao_and_depth: bool,
     },
     /// `ao` (and `depth` unless `packed`: then `ao` holds both) and `motion_vectors` ->
     /// [`Target::History`].
@@ -286,7 +293,13 @@ impl FramePlan {
             );
         }
 
-        // Kernel.
+        // Kernel. A per-pixel kernel packs its AO with the depth for an edges kind that
+        // filters its output as it is, at its size.
+        let spatial = settings.spatial.enabled;
+        let packed_input = spatial
+            && settings.spatial.kind == SpatialKind::Edges
+            && settings.spatial.packed_input
+            && !filter_full;
         let kernel = if settings.method == Method::Msvo {
             Kernel::Msvo {
                 levels: settings.msvo.levels,
@@ -305,8 +318,16 @@ impl FramePlan {
                 bent_normals: settings.bent_normals,
                 depth_mip_atlas: depth_mip_atlas.is_some(),
                 back_thickness: settings.reads_back_faces(),
+                ao_and_depth: packed_input,
             }
         };
+        let ao_and_depth = matches!(
+            kernel,
+            Kernel::Method {
+                ao_and_depth: true,
+                ..
+            }
+        );
         step(
             At::Working,
             Pass::Kernel {
@@ -341,7 +362,6 @@ impl FramePlan {
             };
             (At::Working, working_depth, working_normals, motion)
         };
-        let spatial = settings.spatial.enabled;
         let packed = spatial && settings.spatial.kind == SpatialKind::Bilateral && temporal;
         if spatial {
             step(
@@ -352,6 +372,7 @@ impl FramePlan {
                     depth: filter_depth,
                     normals: filter_normals,
                     packed,
+                    ao_and_depth,
                 },
             );
             ao = Target::SpatialAo;
@@ -434,8 +455,15 @@ impl Pass {
             Pass::DepthMipAtlas { .. } => vec![DepthMipAtlas],
             Pass::Kernel { kernel, .. } => match kernel {
                 Kernel::Method {
-                    bent_normals: true, ..
-                } => vec![Ao, BentNormals],
+                    bent_normals,
+                    ao_and_depth,
+                    ..
+                } => {
+                    let mut writes = vec![Ao];
+                    writes.extend(bent_normals.then_some(BentNormals));
+                    writes.extend(ao_and_depth.then_some(AoAndDepth));
+                    writes
+                }
                 _ => vec![Ao],
             },
             Pass::Upsample {

@@ -238,8 +238,10 @@ impl Passes {
                 depth,
                 normals,
                 packed,
+                ao_and_depth,
             } => {
                 let (ao, depth, normals) = (view(ao), view(depth), view(normals));
+                let ao_and_depth = ao_and_depth.then(|| view(Target::AoAndDepth));
                 let (scratch, output) = (view(Target::SpatialScratch), view(Target::SpatialAo));
                 match kind {
                     SpatialKind::Bilateral => {
@@ -251,7 +253,10 @@ impl Passes {
                             .encode(ctx, ao, depth, normals, scratch, output);
                     }
                     SpatialKind::Guided => self.guided.encode(ctx, ao, depth, scratch, output),
-                    SpatialKind::Edges => self.edges.encode(ctx, ao, depth, normals, output),
+                    SpatialKind::Edges => {
+                        self.edges
+                            .encode(ctx, ao, depth, normals, ao_and_depth, output);
+                    }
                 }
             }
             Pass::Temporal {
@@ -325,6 +330,7 @@ impl Passes {
                 bent_normals,
                 depth_mip_atlas,
                 back_thickness,
+                ao_and_depth,
             } => self.method.encode(
                 ctx,
                 method,
@@ -335,6 +341,7 @@ impl Passes {
                 bent_normals.then(|| views.view(Target::BentNormals)),
                 depth_mip_atlas.then(|| views.view(Target::DepthMipAtlas)),
                 back_thickness.then(|| views.view(Target::BackThickness)),
+                ao_and_depth.then(|| views.view(Target::AoAndDepth)),
             ),
         }
     }

@@ -267,14 +267,19 @@ pub const SPATIAL_FILTER_VERTICAL: [ShaderSource; 2] = per_pair_format!(
     ]
 );
 
-/// The spatial filter's `edges` kind: one 3x3 edge-aware pass, AO, linear depth and normals in,
-/// AO out.
+/// The AO and linear depth packed in one `R32Uint` texel, which the per-pixel kernels write for
+/// the edges kind to read ([`SpatialSettings::packed_input`](crate::SpatialSettings::packed_input)).
+const AO_AND_DEPTH: &str = include_str!("../shaders/common/ao_and_depth.wgsl");
+
+/// The spatial filter's `edges` kind: one 3x3 edge-aware pass, AO, linear depth (or the two
+/// packed) and normals in, AO out.
 pub const EDGE_FILTER: ShaderSource = ShaderSource {
     name: "edge_filter",
     parts: &[
         VIEW,
         ENCODING,
         BILATERAL_WEIGHTS,
+        AO_AND_DEPTH,
         include_str!("../shaders/filter/edge_filter.wgsl"),
     ],
 };
@@ -394,7 +399,8 @@ pub const UPSAMPLE: [ShaderSource; 4] = per_depth_input!(
 );
 
 /// A program on the AO kernels' interface ([`AO`] and what it needs), then `snippets`, then
-/// its own file. The per-pixel method kernels take [`AO_ENTRY`] as their first snippet; the
+/// its own file. The per-pixel method kernels take [`AO_ENTRY`] and what it writes with as their
+/// first snippets; the
 /// multi-pass methods bring entry points of their own.
 macro_rules! ao_program {
     ($dir:literal, $name:literal $(, $snippet:expr)*) => {
@@ -413,21 +419,37 @@ macro_rules! ao_program {
 }
 
 /// Crytek's sphere-sampling SSAO.
-pub const SSAO_CRYTEK: ShaderSource = ao_program!("kernel/methods", "ssao_crytek", AO_ENTRY);
+pub const SSAO_CRYTEK: ShaderSource =
+    ao_program!("kernel/methods", "ssao_crytek", AO_ENTRY, AO_AND_DEPTH);
 /// Normal-oriented hemisphere SSAO.
-pub const SSAO: ShaderSource = ao_program!("kernel/methods", "ssao", AO_ENTRY);
+pub const SSAO: ShaderSource = ao_program!("kernel/methods", "ssao", AO_ENTRY, AO_AND_DEPTH);
 /// Horizon-based AO.
-pub const HBAO: ShaderSource = ao_program!("kernel/methods", "hbao", AO_ENTRY, SLICE, HORIZON);
+pub const HBAO: ShaderSource = ao_program!(
+    "kernel/methods",
+    "hbao",
+    AO_ENTRY,
+    AO_AND_DEPTH,
+    SLICE,
+    HORIZON
+);
 /// HBAO+'s normal-based estimator.
-pub const HBAO_PLUS: ShaderSource = ao_program!("kernel/methods", "hbao_plus", AO_ENTRY, SLICE);
+pub const HBAO_PLUS: ShaderSource =
+    ao_program!("kernel/methods", "hbao_plus", AO_ENTRY, AO_AND_DEPTH, SLICE);
 /// Ground-truth based AO.
-pub const GTAO: ShaderSource = ao_program!("kernel/methods", "gtao", AO_ENTRY, SLICE);
+pub const GTAO: ShaderSource = ao_program!("kernel/methods", "gtao", AO_ENTRY, AO_AND_DEPTH, SLICE);
 /// Visibility bitmask AO.
-pub const VBAO: ShaderSource = ao_program!("kernel/methods", "vbao", AO_ENTRY, SLICE);
+pub const VBAO: ShaderSource = ao_program!("kernel/methods", "vbao", AO_ENTRY, AO_AND_DEPTH, SLICE);
 /// Scalable Ambient Obscurance.
-pub const SAO: ShaderSource = ao_program!("kernel/methods", "sao", AO_ENTRY, SUBSAMPLE_CHAIN);
+pub const SAO: ShaderSource = ao_program!(
+    "kernel/methods",
+    "sao",
+    AO_ENTRY,
+    AO_AND_DEPTH,
+    SUBSAMPLE_CHAIN
+);
 /// Unreal Engine 4's legacy SSAO: mirrored sample pairs scored by the angle between them.
-pub const UE4_SSAO: ShaderSource = ao_program!("kernel/methods", "ue4_ssao", AO_ENTRY);
+pub const UE4_SSAO: ShaderSource =
+    ao_program!("kernel/methods", "ue4_ssao", AO_ENTRY, AO_AND_DEPTH);
 
 /// Where the texels of the subsampled depth MIP chain that `sao` and `msvo` read come from.
 pub(crate) const SUBSAMPLE_CHAIN: &str = include_str!("../shaders/common/subsample_chain.wgsl");

@@ -6,7 +6,7 @@ use crate::passes::input::back_faces::THICKNESS_FORMAT;
 use crate::passes::input::linear_depth::LINEAR_DEPTH_FORMAT;
 use crate::passes::input::normals_from_depth::NORMALS_FORMAT;
 use crate::passes::kernel::depth_mips::DepthMipsPass;
-use crate::passes::kernel::method::{AO_FORMAT, BENT_NORMALS_FORMAT};
+use crate::passes::kernel::method::{AO_AND_DEPTH_FORMAT, AO_FORMAT, BENT_NORMALS_FORMAT};
 use crate::plan::{FramePlan, Pass, Target};
 
 /// A texture and the view the passes bind.
@@ -20,6 +20,8 @@ pub(crate) struct Layout {
     /// The kernel's size: `size` at full resolution.
     working: [u32; 2],
     bent_normals: bool,
+    /// Whether the kernel packs its AO with the depth for the edges kind.
+    ao_and_depth: bool,
     /// Size of the spatial filter's textures, when it is on.
     spatial: Option<[u32; 2]>,
     /// Whether the spatial filter hands the temporal filter its AO and depth packed in one
@@ -46,6 +48,7 @@ impl Layout {
             size: plan.size,
             working: plan.working,
             bent_normals: plan.bent_normals.is_some(),
+            ao_and_depth: plan.writes(Target::AoAndDepth),
             spatial: plan.spatial_size,
             spatial_packed: plan
                 .steps
@@ -97,6 +100,8 @@ pub(crate) struct Targets {
     pub ao: TextureAndView,
     /// The kernel's bent normals, at working size.
     bent_normals: Option<TextureAndView>,
+    /// The kernel's AO and depth packed, at working size.
+    ao_and_depth: Option<TextureAndView>,
     /// The spatial filter's textures, when it is on.
     spatial: Option<SpatialTargets>,
     /// The AO with the exclusion mask applied, at the input's size.
@@ -164,6 +169,9 @@ impl Targets {
             }),
             ao: make("aokit ao", working, AO_FORMAT),
             bent_normals: bent.then(|| make("aokit bent normals", working, BENT_NORMALS_FORMAT)),
+            ao_and_depth: layout
+                .ao_and_depth
+                .then(|| make("aokit ao and depth", working, AO_AND_DEPTH_FORMAT)),
             spatial: layout.spatial.map(|size| SpatialTargets {
                 scratch: make(
                     "aokit spatial filter ao and depth",
@@ -215,6 +223,7 @@ impl Targets {
             Target::DepthMipAtlas => self.depth_mip_atlas.as_ref(),
             Target::Ao => Some(&self.ao),
             Target::BentNormals => self.bent_normals.as_ref(),
+            Target::AoAndDepth => self.ao_and_depth.as_ref(),
             Target::UpsampledAo => working.map(|w| &w.upsampled_ao),
             Target::UpsampledBentNormals => working.and_then(|w| w.upsampled_bent_normals.as_ref()),
             Target::SpatialScratch => spatial.map(|s| &s.scratch),

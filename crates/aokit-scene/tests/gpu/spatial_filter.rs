@@ -320,3 +320,53 @@ fn the_guided_filter_scores_against_the_reference_like_the_bilateral_one() {
         "mean edge RMSE: guided {guided:?}, bilateral {bilateral:?}, none {raw:?}"
     );
 }
+
+/// The edges kind reading the AO and depth a per-pixel kernel packs into one texel
+/// (`spatial.packed_input`) filters as it does reading the two textures, to the packing's
+/// rounding (the AO to 1/1023, the depth to 1.3e-4 of itself): on each built-in scene, at full
+/// and half resolution, with a guard band (the packed texture cut to the inner frame) and for
+/// SAO, whose kernel reads its depth from its MIP chain.
+#[test]
+fn the_packed_input_filters_as_the_two_textures_do() {
+    let gpu = gpu();
+    let cases = [
+        (aokit::Method::Gtao, aokit::Resolution::Full, 0),
+        (aokit::Method::Gtao, aokit::Resolution::Half, 0),
+        (aokit::Method::Gtao, aokit::Resolution::Full, 16),
+        (aokit::Method::Sao, aokit::Resolution::Full, 0),
+    ];
+    for builtin in [Builtin::Room, Builtin::Stairs, Builtin::Thin] {
+        let scene = builtin.build();
+        let camera = &scene.cameras[0];
+        for (method, resolution, band) in cases {
+            let packed = AoSettings {
+                resolution,
+                ..common::scene_settings(&scene, method, aokit::Preset::High)
+            };
+            assert!(packed.spatial.packed_input && packed.spatial.kind == SpatialKind::Edges);
+            let mut separate = packed;
+            separate.spatial.packed_input = false;
+            let mut renderer = Renderer::new(&gpu, &scene, &separate).unwrap();
+            renderer.guard_band = band;
+            let expected = renderer.render(&gpu, camera, SIZE, 3).unwrap();
+            renderer.set_settings(&gpu, &packed).unwrap();
+            let filtered = renderer.render(&gpu, camera, SIZE, 3).unwrap();
+            let case = format!("{} / {method:?} / {resolution:?} / band {band}", scene.name);
+            let mut largest = 0.0f32;
+            for (i, (&a, &b)) in filtered.ao.iter().zip(&expected.ao).enumerate() {
+                assert!(
+                    a.is_finite() && (a - b).abs() < 2e-3,
+                    "{case}: pixel {i}: {a}, {b}"
+                );
+                if expected.linear_depth[i] == 0.0 {
+                    assert_eq!(a, 1.0, "{case}: sky at pixel {i}");
+                }
+                largest = largest.max((a - b).abs());
+            }
+            assert!(
+                rmse(&filtered.ao, &expected.ao, |_| true) < 5e-4,
+                "{case}: largest difference {largest}"
+            );
+        }
+    }
+}

@@ -286,13 +286,15 @@ fn shape_ao(visibility: f32, depth: f32) -> f32 {
     return mix(1.0, shaped, saturate(depth * ao.fade_mul + ao.fade_add));
 }
 
-fn store_ao(s: Surface, visibility: f32, bent: vec3<f32>) {
+// Stores the shaped AO (and the bent normal) and returns the AO stored.
+fn store_ao(s: Surface, visibility: f32, bent: vec3<f32>) -> f32 {
     let value = shape_ao(visibility, s.depth);
     textureStore(ao_out, s.pixel, vec4<f32>(value, 0.0, 0.0, 0.0));
     if BENT_NORMALS {
         let b = select(s.n, normalize(bent), dot(bent, bent) > 1e-12);
         textureStore(bent_out, s.pixel, vec4<f32>(b, value));
     }
+    return value;
 }
 
 // AO 1 and the normal as bent normal, for pixels with nothing to sample.

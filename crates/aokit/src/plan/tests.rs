@@ -289,7 +289,8 @@ fn filters_run_at_working_resolution_before_the_upsample() {
             ao: Target::Ao,
             depth: Target::WorkingLinearDepth,
             normals: Target::WorkingNormals,
-            packed: true
+            packed: true,
+            ao_and_depth: false
         }
     );
     assert_eq!(
@@ -338,7 +339,8 @@ fn filter_resolution_full_moves_the_filters_after_the_upsample() {
             ao: Target::UpsampledAo,
             depth: Target::LinearDepth,
             normals: Target::InputNormals,
-            packed: false
+            packed: false,
+            ao_and_depth: false
         }
     );
     // The input's motion vectors, so the downsample writes none.
@@ -396,6 +398,60 @@ fn each_spatial_kind_alone_writes_the_ao_unpacked() {
         step(&guided, "temporal").pass,
         Pass::Temporal { packed: false, .. }
     ));
+}
+
+/// Whether `plan`'s kernel packs its AO with the depth, and whether its spatial filter reads
+/// them so.
+fn packs(plan: &FramePlan) -> (bool, bool) {
+    let kernel = plan.writes(Target::AoAndDepth);
+    let filter = plan.steps.iter().any(|step| {
+        matches!(
+            step.pass,
+            Pass::Spatial {
+                ao_and_depth: true,
+                ..
+            }
+        )
+    });
+    (kernel, filter)
+}
+
+#[test]
+fn the_edges_kind_reads_the_ao_and_depth_a_per_pixel_kernel_packs() {
+    let edges = spatial(SpatialKind::Edges, raw());
+    // At full and half resolution, with the temporal filter after it too.
+    for settings in [edges, half(edges), temporal(half(edges))] {
+        let plan = plan(settings);
+        assert_eq!(packs(&plan), (true, true), "{:?}", names(&plan));
+        // The kernel's AO is still written: it is the frame's raw AO.
+        assert!(step(&plan, "method").pass.writes().contains(&Target::Ao));
+    }
+    let mut off = edges;
+    off.spatial.packed_input = false;
+    let mut after_upsample = half(edges);
+    after_upsample.filter_resolution = FilterResolution::Full;
+    let unpacked = [
+        off,
+        after_upsample,
+        spatial(SpatialKind::Bilateral, raw()),
+        spatial(SpatialKind::Guided, raw()),
+        AoSettings {
+            method: Method::Msvo,
+            ..edges
+        },
+        {
+            let mut separable = AoSettings {
+                method: Method::Hbao,
+                ..edges
+            };
+            separable.hbao.variant = HbaoVariant::Separable;
+            separable
+        },
+    ];
+    for settings in unpacked {
+        let plan = plan(settings);
+        assert_eq!(packs(&plan), (false, false), "{:?}", names(&plan));
+    }
 }
 
 #[test]

@@ -112,6 +112,12 @@ pub struct SpatialSettings {
     /// Exponent of the normal weight `max(0, n . n0)^normal_power`; 0 turns the normal weight
     /// off (and its normal loads with it).
     pub normal_power: f32,
+    /// The edges kind reads the AO and the linear depth from one texture into which the
+    /// method's kernel packs them (a 32-bit texel: the AO to 1/1023, the depth to 1.3e-4 of
+    /// itself): four gathers a pixel where the two textures take eight. The kernel writes its
+    /// AO as well, unchanged. Applies where the filter runs on a per-pixel kernel's output at
+    /// its resolution (not with MSVO, the separable HBAO or `filter_resolution = full`).
+    pub packed_input: bool,
     /// Window radius of the guided filter in pixels: it fits AO against depth in
     /// windows of `(2 guided_radius + 1)^2` pixels, and each pixel averages the fits of the
     /// windows that hold it, so its AO mixes pixels up to `2 guided_radius` away.
@@ -203,6 +209,9 @@ impl Default for SpatialSettings {
             // Halves a neighbour's weight at 17 degrees: most of the gain of 64, milder on
             // normals with fine detail.
             normal_power: 16.0,
+            // The same error (the packing's rounding changes GTAO `high`'s RMSE by under
+            // 1e-4) in fewer reads (docs/denoise.md#edges-kind).
+            packed_input: true,
             // The bilateral kind's error (within 0.0002 at `high`) in 0.70 to 0.80 of its time
             // on an H200, in one pass (docs/denoise.md#edges-kind).
             kind: SpatialKind::Edges,

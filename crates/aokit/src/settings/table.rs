@@ -285,6 +285,13 @@ const AFTER_METHODS: &[SettingSpec] = &[
         "exponent of the normal weight `max(0, n . n0)^normal_power`; 0 turns it off"
     ),
     setting!(
+        spatial.packed_input,
+        bool,
+        "the edges kind reads the AO and depth that the method's kernel packs into one texel \
+         (four gathers a pixel instead of eight; AO to 1/1023), where it filters a per-pixel \
+         kernel's output at its resolution"
+    ),
+    setting!(
         spatial.guided_radius,
         integers(1, MAX_SPATIAL_RADIUS, 1),
         "guided filter window radius in pixels: AO is fitted against depth in windows of `(2 * \

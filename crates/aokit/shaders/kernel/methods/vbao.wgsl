@@ -24,7 +24,7 @@ const FLAG_BACK_FACES: u32 = 8u;
 // With FLAG_BACK_FACES, each working texel's measured occluder thickness (back_faces.wgsl):
 // MAX_DEPTH where the occluder is solid, 0 where nothing was measured. A 1x1 stand-in
 // otherwise, never read.
-@group(0) @binding(9) var back_thickness: texture_2d<f32>;
+@group(0) @binding(10) var back_thickness: texture_2d<f32>;
 
 // Antiderivative of cos(t - n) |sin t| that is 0 at t = 0: arc_integral signed by the side.
 fn arc_measure(t: f32, n: f32) -> f32 {

@@ -4,8 +4,8 @@
 use std::collections::HashMap;
 
 use super::Weights;
-use crate::gpu::create_uniform_buffer;
-use crate::passes::kernel::method::AO_FORMAT;
+use crate::gpu::{create_uniform_buffer, stand_in_view};
+use crate::passes::kernel::method::{AO_AND_DEPTH_FORMAT, AO_FORMAT};
 use crate::passes::{ComputeKernel, PassContext, bind};
 use crate::settings::{SpatialKind, SpatialSettings};
 use crate::shader;
@@ -13,29 +13,33 @@ use crate::uniforms::SpatialUniforms;
 
 /// The bindings of `shader::EDGE_FILTER`: view uniforms, filter settings, the AO, the linear
 /// depth, the normals, the filtered AO written, the point-clamp sampler its gathers read
-/// through.
-pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 7] {
+/// through, the AO and depth packed.
+pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 8] {
     let float = wgpu::TextureSampleType::Float { filterable: false };
+    let uint = wgpu::TextureSampleType::Uint;
     [
         bind::uniform(0),
         bind::uniform(1),
         bind::texture(2, float),
         bind::texture(3, float),
-        bind::texture(4, wgpu::TextureSampleType::Uint),
+        bind::texture(4, uint),
         bind::storage_texture(5, AO_FORMAT),
         bind::sampler(6, wgpu::SamplerBindingType::NonFiltering),
+        bind::texture(7, uint),
     ]
 }
 
 /// The filter's kernels and its settings buffer.
 pub struct EdgeFilterPass {
-    /// Per weights' variant (the shader's overrides), compiled the first time settings of the
-    /// edges kind ask for it.
-    kernels: HashMap<Weights, ComputeKernel>,
+    /// Per weights' variant (the shader's overrides) and whether it reads the AO and depth
+    /// packed, compiled the first time a frame asks for it.
+    kernels: HashMap<(Weights, bool), ComputeKernel>,
     /// The variant of the settings last given, when they select the edges kind.
     current: Option<Weights>,
     uniforms: wgpu::Buffer,
     point_clamp: wgpu::Sampler,
+    /// Bound in place of the packed AO and depth when the pass reads the two textures.
+    packed_placeholder: wgpu::TextureView,
 }
 
 impl EdgeFilterPass {
@@ -49,6 +53,12 @@ impl EdgeFilterPass {
             point_clamp: crate::gpu::create_point_clamp_sampler(
                 device,
                 "aokit edge filter point clamp",
+            ),
+            packed_placeholder: stand_in_view(
+                device,
+                "aokit edge filter packed placeholder",
+                AO_AND_DEPTH_FORMAT,
+                wgpu::TextureUsages::TEXTURE_BINDING,
             ),
         };
         pass.set_settings(device, queue, settings);
@@ -66,14 +76,7 @@ impl EdgeFilterPass {
         let enabled = settings.enabled && settings.kind == SpatialKind::Edges;
         self.current = enabled.then(|| Weights::of(settings));
         if let Some(weights) = self.current {
-            self.kernels.entry(weights).or_insert_with(|| {
-                ComputeKernel::with_constants(
-                    device,
-                    &shader::EDGE_FILTER,
-                    &layout(),
-                    &weights.constants(),
-                )
-            });
+            self.kernel(device, weights, settings.packed_input);
         }
         queue.write_buffer(
             &self.uniforms,
@@ -82,26 +85,44 @@ impl EdgeFilterPass {
         );
     }
 
+    /// Compiles the variant of `weights` that reads the AO and depth packed or not, unless it
+    /// is already.
+    fn kernel(&mut self, device: &wgpu::Device, weights: Weights, packed: bool) {
+        self.kernels.entry((weights, packed)).or_insert_with(|| {
+            let packed = ("PACKED_INPUT", f64::from(u8::from(packed)));
+            ComputeKernel::with_constants(
+                device,
+                &shader::EDGE_FILTER,
+                &layout(),
+                &[&weights.constants()[..], &[packed]].concat(),
+            )
+        });
+    }
+
     /// Records the pass: `ao` filtered across its 3x3 neighbourhoods of `linear_depth` and
-    /// oct32 `normals` into `output` (`R32Float`, as the AO kernels write).
+    /// oct32 `normals` into `output` (`R32Float`, as the AO kernels write). Given
+    /// `ao_and_depth`, the two as a per-pixel kernel packs them into one texel
+    /// ([`SpatialSettings::packed_input`]), the AO and depth are read from it instead.
     ///
     /// # Panics
     /// When the settings last given do not select the edges kind.
     pub fn encode(
-        &self,
+        &mut self,
         ctx: &mut PassContext<'_>,
         ao: &wgpu::TextureView,
         linear_depth: &wgpu::TextureView,
         normals: &wgpu::TextureView,
+        ao_and_depth: Option<&wgpu::TextureView>,
         output: &wgpu::TextureView,
     ) {
-        let kernel = self
+        let weights = self
             .current
-            .map(|variant| &self.kernels[&variant])
             .expect("the edge filter runs only with settings that select it");
+        let packed = ao_and_depth.is_some();
+        self.kernel(ctx.device, weights, packed);
         let view = wgpu::BindingResource::TextureView;
         ctx.dispatch(
-            kernel,
+            &self.kernels[&(weights, packed)],
             &[
                 self.uniforms.as_entire_binding(),
                 view(ao),
@@ -109,6 +130,7 @@ impl EdgeFilterPass {
                 view(normals),
                 view(output),
                 wgpu::BindingResource::Sampler(&self.point_clamp),
+                view(ao_and_depth.unwrap_or(&self.packed_placeholder)),
             ],
         );
     }
@@ -140,9 +162,9 @@ mod tests {
     }
 
     fn filter(gpu: &GpuContext, settings: &SpatialSettings, image: &Image) -> Vec<f32> {
-        let pass = EdgeFilterPass::new(&gpu.device, &gpu.queue, settings);
+        let mut pass = EdgeFilterPass::new(&gpu.device, &gpu.queue, settings);
         run_filter(gpu, image, |ctx, t| {
-            pass.encode(ctx, &t.ao, &t.depth, &t.normals, &t.output);
+            pass.encode(ctx, &t.ao, &t.depth, &t.normals, None, &t.output);
         })
     }
 

@@ -18,6 +18,10 @@ use crate::uniforms::AoUniforms;
 
 /// Format of the AO the kernels write: 1 = unoccluded.
 pub const AO_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+/// Format of the AO and linear depth the per-pixel kernels pack into one texel for the
+/// spatial filter's edges kind ([`AoSettings::spatial`]'s `packed_input`;
+/// `shaders/common/ao_and_depth.wgsl` has the layout of the bits).
+pub const AO_AND_DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
 /// Format of the bent normals: view-space xyz, AO in w. Half floats hold a unit vector to
 /// about 0.05 degrees, finer than any AO estimate.
 pub const BENT_NORMALS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
@@ -54,6 +58,9 @@ struct Variant {
     offscreen_samples: Option<OffscreenSamples>,
     lean: Option<Lean>,
     bent_normals: bool,
+    /// Whether it writes the AO and depth packed as well (common/ao_entry.wgsl), which only
+    /// the frame knows (`MethodPass::encode`).
+    packed_ao_and_depth: bool,
     /// The noise kind's and its temporal offset's codes (common/noise.wgsl).
     noise: [u32; 2],
 }
@@ -84,6 +91,7 @@ impl Variant {
             offscreen_samples,
             lean,
             bent_normals: settings.bent_normals,
+            packed_ao_and_depth: false,
             noise: [
                 noise::kind_code(settings.noise.kind),
                 noise::temporal_code(settings.noise.temporal),
@@ -97,6 +105,10 @@ impl Variant {
         let mut constants = vec![
             ("DEPTH_MIPS", f64::from(self.depth_mips_read as u32)),
             ("BENT_NORMALS", f64::from(u8::from(self.bent_normals))),
+            (
+                "PACKED_AO_AND_DEPTH",
+                f64::from(u8::from(self.packed_ao_and_depth)),
+            ),
             ("NOISE_KIND", f64::from(noise_kind)),
             ("NOISE_TEMPORAL", f64::from(noise_temporal)),
         ];
@@ -150,6 +162,8 @@ pub struct MethodPass {
     point_clamp: wgpu::Sampler,
     /// Bound in place of the bent normals when they are off: the kernels never write it.
     bent_placeholder: wgpu::TextureView,
+    /// Bound in place of the packed AO and depth when no filter reads them.
+    packed_placeholder: wgpu::TextureView,
     /// Noise tiles uploaded so far, by kind and side, so that switching back costs nothing.
     noise_tiles: HashMap<(NoiseKind, u32), wgpu::TextureView>,
     /// The tile of the current noise kind; `None` for the kinds computed in the shader.
@@ -177,12 +191,14 @@ pub(crate) fn layout() -> [wgpu::BindGroupLayoutEntry; 9] {
     ]
 }
 
-/// [`layout`] and what `method`'s kernel declares besides: VBAO's back-face thickness at 9.
+/// [`layout`] and what `method`'s per-pixel kernel declares besides: the packed AO and depth
+/// (`common/ao_entry.wgsl`) at 9, VBAO's back-face thickness at 10.
 pub(crate) fn method_layout(method: Method) -> Vec<wgpu::BindGroupLayoutEntry> {
     let mut entries = layout().to_vec();
+    entries.push(bind::storage_texture(9, AO_AND_DEPTH_FORMAT));
     if method == Method::Vbao {
         entries.push(bind::texture(
-            9,
+            10,
             wgpu::TextureSampleType::Float { filterable: false },
         ));
     }
@@ -203,6 +219,11 @@ impl MethodPass {
             bent_placeholder: placeholder(
                 "aokit bent normals placeholder",
                 BENT_NORMALS_FORMAT,
+                wgpu::TextureUsages::STORAGE_BINDING,
+            ),
+            packed_placeholder: placeholder(
+                "aokit packed ao and depth placeholder",
+                AO_AND_DEPTH_FORMAT,
                 wgpu::TextureUsages::STORAGE_BINDING,
             ),
             noise_tiles: HashMap::new(),
@@ -267,6 +288,8 @@ impl MethodPass {
     /// (`DepthMipsPass::create_atlas`), which must then be given. With
     /// [`VbaoSettings::back_faces`](crate::VbaoSettings::back_faces) on, VBAO reads its
     /// occluders' thickness from `thickness` (`BackFacesPass`), which must then be given.
+    /// Given `ao_and_depth` ([`AO_AND_DEPTH_FORMAT`]), the kernel writes its AO and the linear
+    /// depth packed there as well, for the edges kind of the spatial filter to read.
     #[allow(clippy::too_many_arguments)]
     pub fn encode(
         &mut self,
@@ -279,6 +302,7 @@ impl MethodPass {
         bent_normals: Option<&wgpu::TextureView>,
         depth_mips: Option<&wgpu::TextureView>,
         thickness: Option<&wgpu::TextureView>,
+        ao_and_depth: Option<&wgpu::TextureView>,
     ) {
         let variant = Variant {
             depth_mips_read: match depth_mips {
@@ -289,6 +313,7 @@ impl MethodPass {
                 orthographic,
                 ..lean
             }),
+            packed_ao_and_depth: ao_and_depth.is_some(),
             ..self.variant
         };
         self.kernel(ctx.device, method, variant);
@@ -296,6 +321,9 @@ impl MethodPass {
         let mut resources = self
             .bindings(linear_depth, normals, ao, bent_normals, depth_mips)
             .to_vec();
+        resources.push(wgpu::BindingResource::TextureView(
+            ao_and_depth.unwrap_or(&self.packed_placeholder),
+        ));
         if method == Method::Vbao {
             resources.push(wgpu::BindingResource::TextureView(
                 thickness.unwrap_or(&self.thickness_placeholder),
