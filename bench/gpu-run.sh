@@ -44,6 +44,9 @@ configurations=(
     "$gtao --set slice_march=general --set spatial.enabled=true --set spatial.kind=bilateral"
     "$gtao --set spatial.enabled=true --set spatial.kind=bilateral"
     "$gtao --set spatial.enabled=true --set spatial.kind=edges"
+    # The edges kind reading the AO and the depth from their two textures, as before the
+    # kernel packed them into one (the default, the row above).
+    "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.packed_input=false"
     "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=0"
     # The normal weight by a log2 and an exp2, as before the power of two became squarings.
     "$gtao --set spatial.enabled=true --set spatial.kind=edges --set spatial.normal_power=16.0001"
