@@ -399,9 +399,8 @@ pub const UPSAMPLE: [ShaderSource; 4] = per_depth_input!(
 );
 
 /// A program on the AO kernels' interface ([`AO`] and what it needs), then `snippets`, then
-/// its own file. The per-pixel method kernels take [`AO_ENTRY`] and what it writes with as their
-/// first snippets; the
-/// multi-pass methods bring entry points of their own.
+/// its own file. The multi-pass methods bring entry points of their own; the per-pixel ones
+/// are [`method_program`]s.
 macro_rules! ao_program {
     ($dir:literal, $name:literal $(, $snippet:expr)*) => {
         ShaderSource {
@@ -418,38 +417,30 @@ macro_rules! ao_program {
     };
 }
 
+/// A per-pixel method kernel: [`ao_program`] with [`AO_ENTRY`] and the packed AO and depth it
+/// can write, then `snippets` and `kernel/methods/<name>.wgsl`, which supplies `estimate`.
+macro_rules! method_program {
+    ($name:literal $(, $snippet:expr)*) => {
+        ao_program!("kernel/methods", $name, AO_ENTRY, AO_AND_DEPTH $(, $snippet)*)
+    };
+}
+
 /// Crytek's sphere-sampling SSAO.
-pub const SSAO_CRYTEK: ShaderSource =
-    ao_program!("kernel/methods", "ssao_crytek", AO_ENTRY, AO_AND_DEPTH);
+pub const SSAO_CRYTEK: ShaderSource = method_program!("ssao_crytek");
 /// Normal-oriented hemisphere SSAO.
-pub const SSAO: ShaderSource = ao_program!("kernel/methods", "ssao", AO_ENTRY, AO_AND_DEPTH);
+pub const SSAO: ShaderSource = method_program!("ssao");
 /// Horizon-based AO.
-pub const HBAO: ShaderSource = ao_program!(
-    "kernel/methods",
-    "hbao",
-    AO_ENTRY,
-    AO_AND_DEPTH,
-    SLICE,
-    HORIZON
-);
+pub const HBAO: ShaderSource = method_program!("hbao", SLICE, HORIZON);
 /// HBAO+'s normal-based estimator.
-pub const HBAO_PLUS: ShaderSource =
-    ao_program!("kernel/methods", "hbao_plus", AO_ENTRY, AO_AND_DEPTH, SLICE);
+pub const HBAO_PLUS: ShaderSource = method_program!("hbao_plus", SLICE);
 /// Ground-truth based AO.
-pub const GTAO: ShaderSource = ao_program!("kernel/methods", "gtao", AO_ENTRY, AO_AND_DEPTH, SLICE);
+pub const GTAO: ShaderSource = method_program!("gtao", SLICE);
 /// Visibility bitmask AO.
-pub const VBAO: ShaderSource = ao_program!("kernel/methods", "vbao", AO_ENTRY, AO_AND_DEPTH, SLICE);
+pub const VBAO: ShaderSource = method_program!("vbao", SLICE);
 /// Scalable Ambient Obscurance.
-pub const SAO: ShaderSource = ao_program!(
-    "kernel/methods",
-    "sao",
-    AO_ENTRY,
-    AO_AND_DEPTH,
-    SUBSAMPLE_CHAIN
-);
+pub const SAO: ShaderSource = method_program!("sao", SUBSAMPLE_CHAIN);
 /// Unreal Engine 4's legacy SSAO: mirrored sample pairs scored by the angle between them.
-pub const UE4_SSAO: ShaderSource =
-    ao_program!("kernel/methods", "ue4_ssao", AO_ENTRY, AO_AND_DEPTH);
+pub const UE4_SSAO: ShaderSource = method_program!("ue4_ssao");
 
 /// Where the texels of the subsampled depth MIP chain that `sao` and `msvo` read come from.
 pub(crate) const SUBSAMPLE_CHAIN: &str = include_str!("../shaders/common/subsample_chain.wgsl");
